@@ -1,0 +1,142 @@
+#include "SandboxLevel.h"
+
+#include "hitbox/Collision.h"
+#include "hitbox/DebugRenderer.h"
+#include "hitbox/Input.h"
+
+#include <SFML/Graphics/CircleShape.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+
+namespace
+{
+const sf::Vector2f cursorSize{90.f, 90.f};
+const sf::Color obstacleColor{70, 90, 140};
+const sf::Color touchedColor{170, 70, 80};
+} // namespace
+
+SandboxLevel::SandboxLevel()
+{
+    addObstacle({200.f, 180.f}, {160.f, 100.f}, false);
+    addObstacle({520.f, 150.f}, {120.f, 120.f}, true);
+    addObstacle({860.f, 200.f}, {220.f, 60.f}, false);
+    addObstacle({250.f, 460.f}, {90.f, 90.f}, true);
+    addObstacle({600.f, 470.f}, {60.f, 180.f}, false);
+    addObstacle({950.f, 460.f}, {160.f, 160.f}, true);
+
+    cursor.setSize(cursorSize);
+    cursor.setOrigin(cursorSize / 2.f);
+    cursor.setFillColor(sf::Color(240, 200, 80, 160));
+}
+
+void SandboxLevel::addObstacle(sf::Vector2f position, sf::Vector2f size, bool isCircle)
+{
+    Obstacle obstacle;
+    obstacle.shape.setSize(size);
+    obstacle.shape.setOrigin(size / 2.f);
+    obstacle.shape.setPosition(position);
+    obstacle.isCircle = isCircle;
+    obstacles.push_back(obstacle);
+}
+
+void SandboxLevel::handleInput(const Input& input, float)
+{
+    if (input.getMousePosition() != lastMouseReading)
+        mouse = input.getMousePosition();
+    lastMouseReading = input.getMousePosition();
+    if (input.isPressed(sf::Keyboard::Space) || input.isLeftMousePressed())
+        cursorIsCircle = !cursorIsCircle;
+}
+
+hitbox::Contact SandboxLevel::testCursorAgainst(Obstacle& obstacle)
+{
+    GameObject* target = &obstacle.shape;
+    if (cursorIsCircle && obstacle.isCircle)
+        return Collision::getBoundingCircleContact(&cursor, target);
+    if (cursorIsCircle)
+        return Collision::getCircleBoxContact(&cursor, target);
+    if (obstacle.isCircle)
+    {
+        // Box against circle: test it the other way round and flip the normal.
+        hitbox::Contact contact = Collision::getCircleBoxContact(target, &cursor);
+        contact.normal = -contact.normal;
+        return contact;
+    }
+    return Collision::getBoundingBoxContact(&cursor, target);
+}
+
+void SandboxLevel::update(float)
+{
+    cursor.setPosition(mouse);
+    for (Obstacle& obstacle : obstacles)
+    {
+        obstacle.contact = testCursorAgainst(obstacle);
+        obstacle.touching = obstacle.contact.hit;
+    }
+}
+
+void SandboxLevel::render(sf::RenderTarget& target) const
+{
+    for (const Obstacle& obstacle : obstacles)
+    {
+        const sf::Color fill = obstacle.touching ? touchedColor : obstacleColor;
+        if (obstacle.isCircle)
+        {
+            const hitbox::Circle circle = obstacle.shape.getBoundingCircle();
+            sf::CircleShape drawn(circle.radius, 48);
+            drawn.setOrigin(circle.radius, circle.radius);
+            drawn.setPosition(circle.center);
+            drawn.setFillColor(fill);
+            target.draw(drawn);
+        }
+        else
+        {
+            sf::RectangleShape drawn = obstacle.shape;
+            drawn.setFillColor(fill);
+            target.draw(drawn);
+        }
+    }
+    if (cursorIsCircle)
+    {
+        const hitbox::Circle circle = cursor.getBoundingCircle();
+        sf::CircleShape drawn(circle.radius, 48);
+        drawn.setOrigin(circle.radius, circle.radius);
+        drawn.setPosition(circle.center);
+        drawn.setFillColor(cursor.getFillColor());
+        target.draw(drawn);
+    }
+    else
+        target.draw(cursor);
+}
+
+void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
+{
+    bool cursorTouching = false;
+    for (const Obstacle& obstacle : obstacles)
+    {
+        if (obstacle.isCircle)
+            debug.objectCircle(obstacle.shape, obstacle.touching);
+        else
+            debug.objectBox(obstacle.shape, obstacle.touching);
+        // The normal says which way the cursor shape would be pushed out.
+        debug.contact(obstacle.contact);
+        cursorTouching = cursorTouching || obstacle.touching;
+    }
+    if (cursorIsCircle)
+        debug.objectCircle(cursor, cursorTouching);
+    else
+        debug.objectBox(cursor, cursorTouching);
+}
+
+std::string SandboxLevel::getHelpText() const
+{
+    return "Mouse move   Click/Space box or circle";
+}
+
+std::string SandboxLevel::describeState() const
+{
+    int touching = 0;
+    for (const Obstacle& obstacle : obstacles)
+        touching += obstacle.touching ? 1 : 0;
+    return std::string("cursor ") + (cursorIsCircle ? "circle" : "box") + " touching " +
+           std::to_string(touching) + " of " + std::to_string(obstacles.size()) + " shapes";
+}

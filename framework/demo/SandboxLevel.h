@@ -1,0 +1,42 @@
+// SandboxLevel.h - the framework demo: move a box or a circle with the mouse over a few
+// shapes and watch the tests answer (debug outlines turn red, contact normals appear).
+#pragma once
+
+#include "hitbox/GameObject.h"
+#include "hitbox/Level.h"
+#include "hitbox/geometry/Shapes.h"
+
+#include <vector>
+
+class SandboxLevel : public hitbox::Level
+{
+public:
+    SandboxLevel();
+
+    void handleInput(const Input& input, float dt) override;
+    void update(float dt) override;
+    void render(sf::RenderTarget& target) const override;
+    void renderDebug(hitbox::DebugRenderer& debug) const override;
+    std::string getHelpText() const override;
+    std::string describeState() const override;
+
+private:
+    struct Obstacle
+    {
+        GameObject shape;
+        bool isCircle = false;
+        bool touching = false;
+        hitbox::Contact contact; // how the cursor shape touches it
+    };
+
+    void addObstacle(sf::Vector2f position, sf::Vector2f size, bool isCircle);
+    hitbox::Contact testCursorAgainst(Obstacle& obstacle);
+
+    std::vector<Obstacle> obstacles;
+    GameObject cursor;
+    bool cursorIsCircle = false;
+    // Where the cursor shape starts (over two shapes, so a --screenshot shows contacts);
+    // it follows the mouse once the mouse moves.
+    sf::Vector2f mouse{560.f, 250.f};
+    sf::Vector2f lastMouseReading;
+};

@@ -1,0 +1,15 @@
+// Sandbox - the Hitbox framework demo.
+// Teaches: what the collision tests answer, seen live. Move a box (or a circle) over boxes
+// and circles; press F1 to see collision outlines turn red and the contact normals.
+// Keys: mouse moves the shape, click or Space switches box/circle, plus the shared keys.
+#include "SandboxLevel.h"
+
+#include "hitbox/App.h"
+
+#include <memory>
+
+int main(int argc, char* argv[])
+{
+    return hitbox::run(argc, argv, {"Hitbox sandbox"},
+                       [](const hitbox::Options&) { return std::make_unique<SandboxLevel>(); });
+}

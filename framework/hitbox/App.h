@@ -1,0 +1,74 @@
+// App.h - run a Level in a window, headless, or for one screenshot.
+//
+// Every Hitbox program's main() is one call:
+//     int main(int argc, char* argv[])
+//     {
+//         return hitbox::run(argc, argv, {"Lab 2 - Bouncing balls"},
+//                            [](const hitbox::Options&) { return std::make_unique<BallsLevel>(); });
+//     }
+// and so every program understands the same command line:
+//     --headless          no window: simulate only, then print one line of final state
+//     --frames N          simulate N fixed steps (headless default 600, i.e. 5 seconds)
+//     --seconds S         the same, in simulated seconds
+//     --screenshot F.png  simulate --frames steps (default 0), draw one frame into F.png
+//     --debug             start with the debug boxes shown
+//     --seed N            seed for anything random (default 1)
+// and the same keys in the window:
+//     F1 debug boxes   P pause   N one step while paused   F12 screenshot   Esc quit
+#pragma once
+
+#include "hitbox/Level.h"
+
+#include <SFML/Graphics/Rect.hpp>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hitbox
+{
+
+// Simulation steps per second. Every program and every test uses the same step.
+constexpr float stepsPerSecond = 120.f;
+constexpr float stepSeconds = 1.f / stepsPerSecond;
+
+struct ProgramInfo
+{
+    std::string title;                     // the window title, e.g. "Pong"
+    std::vector<std::string> extraOptions = {}; // options this program reads, each with a value
+};
+
+struct Options
+{
+    bool headless = false;
+    long long frames = -1; // -1: not given
+    std::string screenshotPath;
+    bool debugBoxes = false;
+    unsigned seed = 1;
+    std::map<std::string, std::string> extra; // the ProgramInfo::extraOptions that were given
+
+    // The value of an extra option, or `fallback` when it was not given.
+    std::string get(const std::string& name, const std::string& fallback) const;
+};
+
+using LevelFactory = std::function<std::unique_ptr<Level>(const Options&)>;
+
+// Reads the command line. Throws std::invalid_argument with a one-line message.
+Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info);
+
+// Runs the program; returns main()'s exit code (0 fine, 1 error, 2 bad usage / no display).
+int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel);
+
+// Runs `frames` fixed steps with no input and no window. Used by --headless and tests.
+void simulate(Level& level, long long frames);
+
+// The part of a window, as fractions of its size (a view's viewport), that shows a world
+// of `worldSize` as large as possible without stretching: bars fill the rest (letterbox).
+sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
+
+// True when a window can be opened (on Linux: DISPLAY or WAYLAND_DISPLAY is set).
+bool hasDisplay();
+
+} // namespace hitbox

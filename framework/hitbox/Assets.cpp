@@ -1,0 +1,87 @@
+#include "hitbox/Assets.h"
+
+#include <SFML/System/Err.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#if defined(__linux__)
+#include <climits>
+#include <unistd.h>
+#endif
+
+namespace hitbox
+{
+namespace
+{
+
+bool fileExists(const std::string& path)
+{
+    return std::ifstream(path).good();
+}
+
+std::string programFolder()
+{
+#if defined(__linux__)
+    char buffer[PATH_MAX] = {};
+    const ssize_t length = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
+    if (length > 0)
+    {
+        const std::string path(buffer, static_cast<std::size_t>(length));
+        return path.substr(0, path.find_last_of('/'));
+    }
+#endif
+    return ".";
+}
+
+std::vector<std::string> assetFolders()
+{
+    std::vector<std::string> folders;
+    if (const char* fromEnvironment = std::getenv("HITBOX_ASSETS"))
+        folders.emplace_back(fromEnvironment);
+#ifdef HITBOX_SOURCE_ASSETS_DIR
+    folders.emplace_back(HITBOX_SOURCE_ASSETS_DIR);
+#endif
+    folders.push_back(programFolder() + "/assets");
+    folders.push_back(programFolder() + "/../assets");
+    folders.emplace_back("assets");
+    return folders;
+}
+
+} // namespace
+
+std::string findAsset(const std::string& relativePath)
+{
+    std::string looked;
+    for (const std::string& folder : assetFolders())
+    {
+        const std::string candidate = folder + "/" + relativePath;
+        if (fileExists(candidate))
+            return candidate;
+        looked += (looked.empty() ? "" : ", ") + folder;
+    }
+    throw AssetError("Hitbox: missing asset 'assets/" + relativePath + "' (looked in " + looked +
+                     "). Fix: restore it with 'git checkout -- assets', or set HITBOX_ASSETS "
+                     "to the folder that holds it.");
+}
+
+sf::Font loadFont(const std::string& relativePath)
+{
+    const std::string path = findAsset(relativePath);
+    sf::Font font;
+    // SFML prints its own multi-line complaint; keep it and say one clear line instead.
+    std::ostringstream sfmlMessage;
+    std::streambuf* previous = sf::err().rdbuf(sfmlMessage.rdbuf());
+    const bool loaded = font.loadFromFile(path);
+    sf::err().rdbuf(previous);
+    if (!loaded)
+        throw AssetError("Hitbox: the font '" + path +
+                         "' is damaged or not a font. Fix: restore it with 'git checkout -- "
+                         "assets/" +
+                         relativePath + "'.");
+    return font;
+}
+
+} // namespace hitbox

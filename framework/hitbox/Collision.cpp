@@ -1,0 +1,69 @@
+#include "hitbox/Collision.h"
+
+#include "hitbox/GameObject.h"
+#include "hitbox/geometry/Overlap.h"
+
+namespace
+{
+
+bool canCollide(const GameObject* object)
+{
+    return object != nullptr && object->isAlive() && object->isCollider();
+}
+
+bool canCollide(const GameObject* first, const GameObject* second)
+{
+    return first != second && canCollide(first) && canCollide(second);
+}
+
+} // namespace
+
+bool Collision::checkBoundingCircle(GameObject* first, GameObject* second)
+{
+    return canCollide(first, second) &&
+           hitbox::circleVsCircle(first->getBoundingCircle(), second->getBoundingCircle());
+}
+
+bool Collision::checkBoundingBox(GameObject* first, GameObject* second)
+{
+    return canCollide(first, second) &&
+           hitbox::boxVsBox(first->getCollisionBox(), second->getCollisionBox());
+}
+
+bool Collision::checkBoundingBox(GameObject* object, sf::Vector2f point)
+{
+    return canCollide(object) && hitbox::pointInBox(point, object->getCollisionBox());
+}
+
+bool Collision::checkBoundingBox(GameObject* object, sf::Vector2i point)
+{
+    return checkBoundingBox(object, sf::Vector2f(point));
+}
+
+bool Collision::checkCircleBox(GameObject* circleObject, GameObject* boxObject)
+{
+    return canCollide(circleObject, boxObject) &&
+           hitbox::circleVsBox(circleObject->getBoundingCircle(), boxObject->getCollisionBox());
+}
+
+hitbox::Contact Collision::getBoundingCircleContact(GameObject* first, GameObject* second)
+{
+    if (!canCollide(first, second))
+        return {};
+    return hitbox::circleVsCircleContact(first->getBoundingCircle(), second->getBoundingCircle());
+}
+
+hitbox::Contact Collision::getBoundingBoxContact(GameObject* first, GameObject* second)
+{
+    if (!canCollide(first, second))
+        return {};
+    return hitbox::boxVsBoxContact(first->getCollisionBox(), second->getCollisionBox());
+}
+
+hitbox::Contact Collision::getCircleBoxContact(GameObject* circleObject, GameObject* boxObject)
+{
+    if (!canCollide(circleObject, boxObject))
+        return {};
+    return hitbox::circleVsBoxContact(circleObject->getBoundingCircle(),
+                                      boxObject->getCollisionBox());
+}

@@ -1,0 +1,41 @@
+// Collision.h - the friendly facade: collision tests between GameObjects.
+//
+// Every function here reads the objects' world-space collision box or bounding circle and
+// calls the plain-value tests in geometry/Overlap.h, so the edge rule is the same:
+// touching is not colliding. The lecture's calls work as they are:
+//     if (Collision::checkBoundingCircle(&ball1, &ball2)) { ... }
+//
+// Defined answers for objects that cannot collide: a null pointer, an object that is not a
+// collider, a dead object, or an object tested against itself gives false (and a Contact
+// with hit == false).
+#pragma once
+
+#include "hitbox/geometry/Shapes.h"
+
+#include <SFML/System/Vector2.hpp>
+
+class GameObject;
+
+class Collision
+{
+public:
+    Collision() = delete; // a static class: call Collision::checkBoundingBox(...) directly
+
+    // Bounding circles (no square root). The circles come from each object's
+    // getBoundingCircle(): by default the circle inside its collision box.
+    static bool checkBoundingCircle(GameObject* first, GameObject* second);
+    // Axis-aligned collision boxes.
+    static bool checkBoundingBox(GameObject* first, GameObject* second);
+    // Is a point inside the object's collision box? The point is in world coordinates:
+    // Hitbox's Input gives the mouse in world coordinates, so this is right after a resize.
+    static bool checkBoundingBox(GameObject* object, sf::Vector2f point);
+    static bool checkBoundingBox(GameObject* object, sf::Vector2i point);
+    // The first object's bounding circle against the second object's collision box.
+    static bool checkCircleBox(GameObject* circleObject, GameObject* boxObject);
+
+    // The same tests, telling how they collide: the normal points out of `second` towards
+    // `first`; moving `first` by normal * depth separates them.
+    static hitbox::Contact getBoundingCircleContact(GameObject* first, GameObject* second);
+    static hitbox::Contact getBoundingBoxContact(GameObject* first, GameObject* second);
+    static hitbox::Contact getCircleBoxContact(GameObject* circleObject, GameObject* boxObject);
+};

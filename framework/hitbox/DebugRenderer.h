@@ -1,0 +1,54 @@
+// DebugRenderer.h - outlines of collision shapes, velocity arrows and contact normals.
+//
+// Levels describe what to draw in renderDebug(); the renderer collects every line into one
+// vertex array and draws it with a single draw call. Building the lines needs no window,
+// so tests can check what would be drawn.
+#pragma once
+
+#include "hitbox/geometry/Shapes.h"
+
+#include <SFML/Graphics/Color.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
+
+class GameObject;
+namespace sf
+{
+class RenderTarget;
+}
+
+namespace hitbox
+{
+
+class DebugRenderer
+{
+public:
+    // The colours every program uses, so students learn them once.
+    static const sf::Color freeColor;     // a collider touching nothing
+    static const sf::Color touchingColor; // a collider touching something this step
+    static const sf::Color velocityColor; // velocity arrows
+    static const sf::Color normalColor;   // contact normals
+    static const sf::Color hintColor;     // anything else: rays, swept areas, grids
+
+    void line(sf::Vector2f from, sf::Vector2f to, sf::Color color);
+    void arrow(sf::Vector2f from, sf::Vector2f to, sf::Color color);
+    void box(const sf::FloatRect& box, sf::Color color);
+    void circle(const Circle& circle, sf::Color color);
+    void cross(sf::Vector2f point, float size, sf::Color color);
+
+    // An object's world collision box (or bounding circle) and its velocity arrow, which
+    // shows where the object will be in a quarter of a second.
+    void objectBox(const GameObject& object, bool touching);
+    void objectCircle(const GameObject& object, bool touching);
+    // A contact point and its normal, 24 pixels long.
+    void contact(const Contact& contact);
+
+    // Draw everything collected, in one call, then keep it (call clear() to start again).
+    void draw(sf::RenderTarget& target) const;
+    void clear();
+    const sf::VertexArray& getVertices() const;
+
+private:
+    sf::VertexArray vertices{sf::Lines};
+};
+
+} // namespace hitbox

@@ -1,0 +1,131 @@
+#include "hitbox/GameObject.h"
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+const float notSet = std::numeric_limits<float>::quiet_NaN();
+}
+
+GameObject::GameObject() : collisionBox(notSet, notSet, notSet, notSet) {}
+
+void GameObject::handleInput(float) {}
+
+void GameObject::update(float) {}
+
+void GameObject::collisionResponse(GameObject*) {}
+
+void GameObject::setVelocity(sf::Vector2f newVelocity)
+{
+    velocity = newVelocity;
+}
+
+void GameObject::setVelocity(float x, float y)
+{
+    velocity = {x, y};
+}
+
+sf::Vector2f GameObject::getVelocity() const
+{
+    return velocity;
+}
+
+bool GameObject::isAlive() const
+{
+    return alive;
+}
+
+void GameObject::setAlive(bool isAliveNow)
+{
+    alive = isAliveNow;
+}
+
+bool GameObject::isCollider() const
+{
+    return collider;
+}
+
+void GameObject::setCollider(bool isColliderNow)
+{
+    collider = isColliderNow;
+}
+
+void GameObject::setCollisionBox(float left, float top, float width, float height)
+{
+    collisionBox = {left, top, width, height};
+}
+
+void GameObject::setCollisionBox(const sf::FloatRect& box)
+{
+    collisionBox = box;
+}
+
+void GameObject::clearCollisionBox()
+{
+    collisionBox = {notSet, notSet, notSet, notSet};
+}
+
+sf::FloatRect GameObject::getLocalCollisionBox() const
+{
+    // A subclass may assign `collisionBox` directly, as old lab code does: any number in it
+    // counts as "set".
+    if (!std::isnan(collisionBox.left) || !std::isnan(collisionBox.width))
+        return collisionBox;
+    const sf::Vector2f origin = getOrigin();
+    return {-origin.x, -origin.y, getSize().x, getSize().y};
+}
+
+sf::FloatRect GameObject::getCollisionBox() const
+{
+    // The box is measured from the origin point; the shape's own coordinates start at its
+    // top-left corner, so shift by the origin before applying the object's transform.
+    sf::FloatRect box = hitbox::normalised(getLocalCollisionBox());
+    box.left += getOrigin().x;
+    box.top += getOrigin().y;
+    return getTransform().transformRect(box);
+}
+
+hitbox::Circle GameObject::getBoundingCircle() const
+{
+    const sf::Vector2f scale = getScale();
+    const float smallerScale = std::fmin(std::fabs(scale.x), std::fabs(scale.y));
+    sf::Vector2f localCenter;
+    float localRadius = 0.f;
+    if (hasOwnCircle)
+    {
+        localCenter = circleCenter;
+        localRadius = circleRadius;
+    }
+    else
+    {
+        // The inscribed circle: the fix for the old framework, which took the radius from
+        // the shape's width and the centre from its top-left corner.
+        const sf::FloatRect box = hitbox::normalised(getLocalCollisionBox());
+        localCenter = hitbox::centerOf(box);
+        localRadius = std::fmin(box.width, box.height) / 2.f;
+    }
+    return {getTransform().transformPoint(localCenter + getOrigin()), localRadius * smallerScale};
+}
+
+void GameObject::setBoundingCircle(sf::Vector2f centerFromOrigin, float radius)
+{
+    hasOwnCircle = true;
+    circleCenter = centerFromOrigin;
+    circleRadius = radius;
+}
+
+void GameObject::clearBoundingCircle()
+{
+    hasOwnCircle = false;
+}
+
+void GameObject::setInput(Input* newInput)
+{
+    input = newInput;
+}
+
+void GameObject::setWindow(sf::RenderWindow* newWindow)
+{
+    window = newWindow;
+}

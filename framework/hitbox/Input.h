@@ -1,0 +1,83 @@
+// Input.h - what the keyboard and mouse are doing, as plain state a test can set.
+//
+// The window's events feed it (hitbox::App does that for you); a test sets keys and the
+// mouse directly, so every rule can be tested without a window. The API is the course's
+// old Framework/Input.h plus "released this frame" and the mouse wheel.
+//
+// "This frame" means until update() is called: hitbox::App calls it after the first
+// simulation step that saw the press, so a press is seen by exactly one step.
+#pragma once
+
+#include <SFML/System/Vector2.hpp>
+#include <SFML/Window/Keyboard.hpp>
+
+#include <array>
+
+class Input
+{
+public:
+    enum MouseState
+    {
+        UP,
+        DOWN,
+        PRESSED // went down this frame
+    };
+
+    // Keys are sf::Keyboard key codes (sf::Keyboard::W converts to int). Codes outside
+    // the keyboard's range, such as sf::Keyboard::Unknown (-1), are ignored.
+    void setKeyDown(int key);
+    void setKeyUp(int key);
+    bool isKeyDown(int key) const;
+    bool isPressed(int key) const;  // went down this frame
+    bool isReleased(int key) const; // went up this frame
+
+    // The mouse position. In Hitbox programs it is in world coordinates (already mapped
+    // through the view, so it stays right after a resize); the int versions round it.
+    void setMouseX(int x);
+    void setMouseY(int y);
+    void setMousePosition(int x, int y);
+    void setMousePosition(sf::Vector2f position);
+    int getMouseX() const;
+    int getMouseY() const;
+    sf::Vector2f getMousePosition() const;
+
+    void setMouseLDown(bool down);
+    bool isMouseLDown() const;
+    void setMouseRDown(bool down);
+    bool isMouseRDown() const;
+    void setLeftMouse(MouseState state);
+    bool isLeftMouseDown() const;    // DOWN or PRESSED
+    bool isLeftMousePressed() const; // PRESSED: went down this frame
+    bool isLeftMouseReleased() const;
+    void setRightMouse(MouseState state);
+    bool isRightMouseDown() const;
+    bool isRightMousePressed() const;
+    bool isRightMouseReleased() const;
+
+    // Wheel movement this frame: positive is away from the user.
+    void addMouseWheel(float delta);
+    float getMouseWheel() const;
+
+    // Let go of every key and button (the window lost focus: their "up" events will never
+    // arrive, so without this a held key would stay down forever).
+    void releaseAll();
+
+    // End of frame: forget presses, releases and wheel movement; keep what is held down.
+    void update();
+
+private:
+    struct Button
+    {
+        MouseState state = UP;
+        bool released = false;
+    };
+    static void press(Button& button, bool down);
+
+    std::array<bool, sf::Keyboard::KeyCount> keysDown{};
+    std::array<bool, sf::Keyboard::KeyCount> keysPressed{};
+    std::array<bool, sf::Keyboard::KeyCount> keysReleased{};
+    sf::Vector2f mousePosition;
+    Button leftButton;
+    Button rightButton;
+    float mouseWheel = 0.f;
+};

@@ -1,0 +1,51 @@
+// Level.h - the base class of every Hitbox program: a simulation you can also draw.
+//
+// hitbox::App runs a Level: it calls handleInput and update at a fixed step (120 times a
+// second, whatever the frame rate), and render once per frame. Keep the rules in update
+// and make render only read state: then tests can run the level with no window at all.
+//
+// (The course's old framework called its level base "BaseLevel"; that class still exists
+// for old lab code, see BaseLevel.h. This one lives in namespace hitbox so a course lab's
+// own `class Level` never clashes with it.)
+#pragma once
+
+#include <SFML/System/Vector2.hpp>
+
+#include <string>
+
+class Input;
+namespace sf
+{
+class RenderTarget;
+}
+
+namespace hitbox
+{
+class DebugRenderer;
+
+class Level
+{
+public:
+    virtual ~Level() = default;
+
+    // One fixed step: read the keyboard and the mouse (mouse in world coordinates).
+    virtual void handleInput(const Input& input, float dt);
+    // One fixed step: move things, test collisions, respond. dt is in seconds.
+    virtual void update(float dt) = 0;
+    // Draw the scene into `target`, in world coordinates. Reads state, changes nothing.
+    virtual void render(sf::RenderTarget& target) const = 0;
+    // Draw collision shapes, velocities and contacts (F1 shows them).
+    virtual void renderDebug(DebugRenderer& debug) const;
+
+    // The game area in world pixels; the window shows exactly this area, letterboxed.
+    virtual sf::Vector2f getWorldSize() const;
+    // This program's keys for the on-screen help line, e.g. "W/S move  Space serve".
+    virtual std::string getHelpText() const;
+    // One line describing the state, printed at the end of a --headless run.
+    virtual std::string describeState() const;
+    // Escape was pressed. Return true if the level used it (e.g. back to a menu);
+    // false lets the program quit.
+    virtual bool handleEscape();
+};
+
+} // namespace hitbox

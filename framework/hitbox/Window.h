@@ -1,0 +1,16 @@
+// Window.h - the windowed half of hitbox::App: the frame loop, the keys every program
+// shares, the help line and screenshots. Only App.cpp calls these.
+#pragma once
+
+#include "hitbox/App.h"
+
+namespace hitbox
+{
+
+// Opens a letterboxed, resizable window and runs `level` in it until it is closed.
+int runWindow(Level& level, const Options& options, const ProgramInfo& info);
+
+// Simulates options.frames steps (default 0), draws one frame into options.screenshotPath.
+int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info);
+
+} // namespace hitbox

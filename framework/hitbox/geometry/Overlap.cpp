@@ -1,0 +1,197 @@
+#include "hitbox/geometry/Overlap.h"
+
+#include <cmath>
+
+namespace hitbox
+{
+namespace
+{
+
+float lengthSquared(sf::Vector2f vector)
+{
+    return vector.x * vector.x + vector.y * vector.y;
+}
+
+bool isUsable(const Circle& circle)
+{
+    return isFinite(circle) && circle.radius >= 0.f;
+}
+
+// The point of the box nearest to `point` (the point itself when it is inside).
+sf::Vector2f closestPointInBox(sf::Vector2f point, const sf::FloatRect& box)
+{
+    return {std::fmin(std::fmax(point.x, box.left), rightOf(box)),
+            std::fmin(std::fmax(point.y, box.top), bottomOf(box))};
+}
+
+} // namespace
+
+bool pointInBox(sf::Vector2f point, const sf::FloatRect& box)
+{
+    if (!isFinite(point) || !isFinite(box))
+        return false;
+    const sf::FloatRect b = normalised(box);
+    // Strict: a point on an edge is outside (the edge rule in Overlap.h).
+    return b.left < point.x && point.x < rightOf(b) && b.top < point.y && point.y < bottomOf(b);
+}
+
+bool pointInCircle(sf::Vector2f point, const Circle& circle)
+{
+    return circleVsCircle(Circle{point, 0.f}, circle);
+}
+
+// [slide:aabb-overlap]
+bool boxVsBox(const sf::FloatRect& first, const sf::FloatRect& second)
+{
+    if (!isFinite(first) || !isFinite(second))
+        return false;
+    const sf::FloatRect a = normalised(first);
+    const sf::FloatRect b = normalised(second);
+    // Two boxes overlap when their x ranges overlap AND their y ranges overlap.
+    // Strict "<": boxes that only touch do not collide.
+    return a.left < rightOf(b) && b.left < rightOf(a) && a.top < bottomOf(b) &&
+           b.top < bottomOf(a);
+}
+// [/slide]
+
+// [slide:circle-overlap]
+bool circleVsCircle(const Circle& a, const Circle& b)
+{
+    if (!isUsable(a) || !isUsable(b))
+        return false;
+    // Compare squared distances: same answer as comparing distances, no square root.
+    const sf::Vector2f between = a.center - b.center;
+    const float radiusSum = a.radius + b.radius;
+    return lengthSquared(between) < radiusSum * radiusSum;
+}
+// [/slide]
+
+bool circleVsBox(const Circle& circle, const sf::FloatRect& box)
+{
+    if (!isUsable(circle) || !isFinite(box))
+        return false;
+    const sf::FloatRect b = normalised(box);
+    if (pointInBox(circle.center, b))
+        return true;
+    const sf::Vector2f fromBox = circle.center - closestPointInBox(circle.center, b);
+    return lengthSquared(fromBox) < circle.radius * circle.radius;
+}
+
+Contact pointInBoxContact(sf::Vector2f point, const sf::FloatRect& box)
+{
+    return circleVsBoxContact(Circle{point, 0.f}, box);
+}
+
+Contact pointInCircleContact(sf::Vector2f point, const Circle& circle)
+{
+    return circleVsCircleContact(Circle{point, 0.f}, circle);
+}
+
+// [slide:aabb-contact]
+Contact boxVsBoxContact(const sf::FloatRect& first, const sf::FloatRect& second)
+{
+    Contact contact;
+    if (!boxVsBox(first, second))
+        return contact;
+    const sf::FloatRect a = normalised(first);
+    const sf::FloatRect b = normalised(second);
+
+    // How far A must move each way to stop overlapping B; the shortest wins.
+    const float pushLeft = rightOf(a) - b.left;
+    const float pushRight = rightOf(b) - a.left;
+    const float pushUp = bottomOf(a) - b.top;
+    const float pushDown = bottomOf(b) - a.top;
+    const float pushX = std::fmin(pushLeft, pushRight);
+    const float pushY = std::fmin(pushUp, pushDown);
+
+    // The middle of the shared region, used for the contact point.
+    const float sharedMidX = (std::fmax(a.left, b.left) + std::fmin(rightOf(a), rightOf(b))) / 2.f;
+    const float sharedMidY = (std::fmax(a.top, b.top) + std::fmin(bottomOf(a), bottomOf(b))) / 2.f;
+
+    contact.hit = true;
+    if (pushX <= pushY) // ties go to the x axis
+    {
+        const bool left = pushLeft <= pushRight;
+        contact.normal = {left ? -1.f : 1.f, 0.f};
+        contact.depth = pushX;
+        contact.point = {left ? b.left : rightOf(b), sharedMidY};
+    }
+    else
+    {
+        const bool up = pushUp <= pushDown;
+        contact.normal = {0.f, up ? -1.f : 1.f};
+        contact.depth = pushY;
+        contact.point = {sharedMidX, up ? b.top : bottomOf(b)};
+    }
+    return contact;
+}
+// [/slide]
+
+Contact circleVsCircleContact(const Circle& a, const Circle& b)
+{
+    Contact contact;
+    if (!circleVsCircle(a, b))
+        return contact;
+    const sf::Vector2f between = a.center - b.center;
+    const float distance = std::sqrt(lengthSquared(between));
+    // Same centre: no direction is better than another; push A towards -x (documented).
+    contact.normal = distance > 0.f ? between / distance : sf::Vector2f(-1.f, 0.f);
+    contact.depth = a.radius + b.radius - distance;
+    contact.point = b.center + contact.normal * b.radius;
+    contact.hit = true;
+    return contact;
+}
+
+Contact circleVsBoxContact(const Circle& circle, const sf::FloatRect& box)
+{
+    Contact contact;
+    if (!circleVsBox(circle, box))
+        return contact;
+    const sf::FloatRect b = normalised(box);
+    const sf::Vector2f closest = closestPointInBox(circle.center, b);
+    const sf::Vector2f fromBox = circle.center - closest;
+    const float distanceSquared = lengthSquared(fromBox);
+    contact.hit = true;
+
+    if (distanceSquared > 0.f)
+    {
+        // Centre outside the box: push along the line from the nearest box point.
+        const float distance = std::sqrt(distanceSquared);
+        contact.normal = fromBox / distance;
+        contact.depth = circle.radius - distance;
+        contact.point = closest;
+        return contact;
+    }
+
+    // Centre inside the box (or on its edge): leave through the nearest edge.
+    // Ties are broken in the order left, right, top, bottom.
+    const float toLeft = circle.center.x - b.left;
+    const float toRight = rightOf(b) - circle.center.x;
+    const float toTop = circle.center.y - b.top;
+    const float toBottom = bottomOf(b) - circle.center.y;
+    const float nearest = std::fmin(std::fmin(toLeft, toRight), std::fmin(toTop, toBottom));
+    if (nearest == toLeft)
+    {
+        contact.normal = {-1.f, 0.f};
+        contact.point = {b.left, circle.center.y};
+    }
+    else if (nearest == toRight)
+    {
+        contact.normal = {1.f, 0.f};
+        contact.point = {rightOf(b), circle.center.y};
+    }
+    else if (nearest == toTop)
+    {
+        contact.normal = {0.f, -1.f};
+        contact.point = {circle.center.x, b.top};
+    }
+    else
+    {
+        contact.normal = {0.f, 1.f};
+        contact.point = {circle.center.x, bottomOf(b)};
+    }
+    contact.depth = circle.radius + nearest;
+    return contact;
+}
+
+} // namespace hitbox

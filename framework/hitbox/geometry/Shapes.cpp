@@ -1,0 +1,55 @@
+#include "hitbox/geometry/Shapes.h"
+
+#include <cmath>
+
+namespace hitbox
+{
+
+sf::FloatRect normalised(const sf::FloatRect& box)
+{
+    sf::FloatRect result = box;
+    if (result.width < 0.f)
+    {
+        result.left += result.width;
+        result.width = -result.width;
+    }
+    if (result.height < 0.f)
+    {
+        result.top += result.height;
+        result.height = -result.height;
+    }
+    return result;
+}
+
+sf::Vector2f centerOf(const sf::FloatRect& box)
+{
+    return {box.left + box.width / 2.f, box.top + box.height / 2.f};
+}
+
+float rightOf(const sf::FloatRect& box)
+{
+    return box.left + box.width;
+}
+
+float bottomOf(const sf::FloatRect& box)
+{
+    return box.top + box.height;
+}
+
+bool isFinite(sf::Vector2f point)
+{
+    return std::isfinite(point.x) && std::isfinite(point.y);
+}
+
+bool isFinite(const sf::FloatRect& box)
+{
+    return std::isfinite(box.left) && std::isfinite(box.top) && std::isfinite(box.width) &&
+           std::isfinite(box.height);
+}
+
+bool isFinite(const Circle& circle)
+{
+    return isFinite(circle.center) && std::isfinite(circle.radius);
+}
+
+} // namespace hitbox

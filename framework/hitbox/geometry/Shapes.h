@@ -1,0 +1,47 @@
+// Shapes.h - the plain value types every collision test works on.
+//
+// Units are pixels (world units) and seconds. Boxes are sf::FloatRect (left, top, width,
+// height), vectors are sf::Vector2f: the types SFML students already know. Nothing here
+// draws or needs a window.
+#pragma once
+
+#include <SFML/Graphics/Rect.hpp>
+#include <SFML/System/Vector2.hpp>
+
+namespace hitbox
+{
+
+// A circle: centre in world pixels, radius in pixels. A negative radius is not a circle and
+// never collides; a zero radius is a point.
+struct Circle
+{
+    sf::Vector2f center;
+    float radius = 0.f;
+};
+
+// What a test found. The convention is the same for every contact test in Hitbox:
+// `normal` is a unit vector pointing out of the second shape (B) towards the first (A), so
+// moving A by `normal * depth` separates the two (the minimum translation vector).
+struct Contact
+{
+    bool hit = false;     // true only when the shapes share area (see Overlap.h's edge rules)
+    sf::Vector2f normal;  // unit length when hit, (0, 0) otherwise
+    float depth = 0.f;    // penetration depth in pixels, > 0 when hit
+    sf::Vector2f point;   // a point where they touch, on B's surface
+
+    explicit operator bool() const { return hit; }
+};
+
+// Box helpers. A box with a negative width or height spans from left + width to left
+// (the way sf::Rect::intersects reads it); normalised() turns it into the usual form.
+sf::FloatRect normalised(const sf::FloatRect& box);
+sf::Vector2f centerOf(const sf::FloatRect& box);
+float rightOf(const sf::FloatRect& box);
+float bottomOf(const sf::FloatRect& box);
+
+// True when every coordinate is a finite number (no NaN, no infinity).
+bool isFinite(sf::Vector2f point);
+bool isFinite(const sf::FloatRect& box);
+bool isFinite(const Circle& circle);
+
+} // namespace hitbox
