@@ -14,8 +14,8 @@ TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
 {
     hitbox::DebugRenderer debug;
     debug.box({0.f, 0.f, 10.f, 10.f}, hitbox::DebugRenderer::freeColor);
-    ASSERT_EQ(debug.getVertices().getVertexCount(), 8u);
-    EXPECT_EQ(debug.getVertices().getPrimitiveType(), sf::Lines);
+    ASSERT_EQ(debug.getVertices().getVertexCount(), 4u * 6u); // two triangles a line
+    EXPECT_EQ(debug.getVertices().getPrimitiveType(), sf::Triangles);
     EXPECT_EQ(debug.getVertices()[0].color, hitbox::DebugRenderer::freeColor);
 }
 
@@ -28,10 +28,13 @@ TEST(DebugRenderer, TouchingObjectsUseTheTouchingColourAndShowVelocity)
     debug.objectBox(object, true);
     const sf::VertexArray& lines = debug.getVertices();
     EXPECT_EQ(lines[0].color, hitbox::DebugRenderer::touchingColor);
-    // After the 4 box edges: the velocity arrow's shaft, from the centre, a quarter second.
-    EXPECT_EQ(lines[8].position, sf::Vector2f(5.f, 5.f));
-    EXPECT_EQ(lines[9].position, sf::Vector2f(30.f, 5.f));
-    EXPECT_EQ(lines[8].color, hitbox::DebugRenderer::velocityColor);
+    // After the 4 box edges: the velocity arrow's shaft, from the centre, a quarter second
+    // long; it is a 2-pixel quad around the line from (5, 5) to (30, 5).
+    const sf::Vertex& shaftStart = lines[24];
+    const sf::Vertex& shaftEnd = lines[26];
+    EXPECT_EQ(shaftStart.position, sf::Vector2f(5.f, 4.f));
+    EXPECT_EQ(shaftEnd.position, sf::Vector2f(30.f, 6.f));
+    EXPECT_EQ(shaftStart.color, hitbox::DebugRenderer::velocityColor);
 }
 
 TEST(DebugRenderer, ContactsDrawOnlyWhenHit)
