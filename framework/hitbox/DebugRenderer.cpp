@@ -29,13 +29,11 @@ void DebugRenderer::line(sf::Vector2f from, sf::Vector2f to, sf::Color color)
     // outlines stay visible on a lecture-hall projector.
     const sf::Vector2f along = to - from;
     const float length = std::sqrt(along.x * along.x + along.y * along.y);
-    const sf::Vector2f side =
-        length > 0.f ? sf::Vector2f(-along.y, along.x) * (lineWidth / 2.f / length)
-                     : sf::Vector2f(lineWidth / 2.f, 0.f);
-    const sf::Vertex corners[4] = {{from - side, color},
-                                   {from + side, color},
-                                   {to + side, color},
-                                   {to - side, color}};
+    const sf::Vector2f side = length > 0.f
+                                  ? sf::Vector2f(-along.y, along.x) * (lineWidth / 2.f / length)
+                                  : sf::Vector2f(lineWidth / 2.f, 0.f);
+    const sf::Vertex corners[4] = {
+        {from - side, color}, {from + side, color}, {to + side, color}, {to - side, color}};
     for (int index : {0, 1, 2, 0, 2, 3})
         vertices.append(corners[index]);
 }
