@@ -4,7 +4,8 @@
 //     int main(int argc, char* argv[])
 //     {
 //         return hitbox::run(argc, argv, {"Lab 2 - Bouncing balls"},
-//                            [](const hitbox::Options&) { return std::make_unique<BallsLevel>(); });
+//                            [](const hitbox::Options&) { return std::make_unique<BallsLevel>();
+//                            });
 //     }
 // and so every program understands the same command line:
 //     --headless          no window: simulate only, then print one line of final state
@@ -36,7 +37,7 @@ constexpr float stepSeconds = 1.f / stepsPerSecond;
 
 struct ProgramInfo
 {
-    std::string title;                     // the window title, e.g. "Pong"
+    std::string title;                          // the window title, e.g. "Pong"
     std::vector<std::string> extraOptions = {}; // options this program reads, each with a value
 };
 

@@ -19,13 +19,23 @@ namespace
 {
 const float arrowSeconds = 0.25f; // velocity arrows show a quarter of a second of motion
 const float normalLength = 24.f;
+const float lineWidth = 2.f; // pixels
 const float pi = 3.14159265f;
 } // namespace
 
 void DebugRenderer::line(sf::Vector2f from, sf::Vector2f to, sf::Color color)
 {
-    vertices.append(sf::Vertex(from, color));
-    vertices.append(sf::Vertex(to, color));
+    // Each line is a thin quad (two triangles) rather than a 1-pixel sf::Lines segment, so
+    // outlines stay visible on a lecture-hall projector.
+    const sf::Vector2f along = to - from;
+    const float length = std::sqrt(along.x * along.x + along.y * along.y);
+    const sf::Vector2f side = length > 0.f
+                                  ? sf::Vector2f(-along.y, along.x) * (lineWidth / 2.f / length)
+                                  : sf::Vector2f(lineWidth / 2.f, 0.f);
+    const sf::Vertex corners[4] = {
+        {from - side, color}, {from + side, color}, {to + side, color}, {to - side, color}};
+    for (int index : {0, 1, 2, 0, 2, 3})
+        vertices.append(corners[index]);
 }
 
 void DebugRenderer::arrow(sf::Vector2f from, sf::Vector2f to, sf::Color color)

@@ -1,8 +1,8 @@
 // DebugRenderer.h - outlines of collision shapes, velocity arrows and contact normals.
 //
-// Levels describe what to draw in renderDebug(); the renderer collects every line into one
-// vertex array and draws it with a single draw call. Building the lines needs no window,
-// so tests can check what would be drawn.
+// Levels describe what to draw in renderDebug(); the renderer collects every line (a 2-pixel
+// wide quad) into one vertex array and draws it with a single draw call. Building the lines needs
+// no window, so tests can check what would be drawn.
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"
@@ -48,7 +48,7 @@ public:
     const sf::VertexArray& getVertices() const;
 
 private:
-    sf::VertexArray vertices{sf::Lines};
+    sf::VertexArray vertices{sf::Triangles};
 };
 
 } // namespace hitbox

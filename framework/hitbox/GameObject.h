@@ -77,7 +77,7 @@ protected:
     sf::RenderWindow* window = nullptr;
 
 private:
-    bool hasOwnCircle = false;  // false: the circle inscribed in the collision box
-    sf::Vector2f circleCenter;  // relative to the origin point
+    bool hasOwnCircle = false; // false: the circle inscribed in the collision box
+    sf::Vector2f circleCenter; // relative to the origin point
     float circleRadius = 0.f;
 };

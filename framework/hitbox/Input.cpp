@@ -114,6 +114,9 @@ bool Input::isMouseRDown() const
 
 void Input::setLeftMouse(MouseState state)
 {
+    // Old lab code reports a release as setLeftMouse(UP): count it as one.
+    if (state == UP && leftButton.state != UP)
+        leftButton.released = true;
     leftButton.state = state;
 }
 
@@ -134,6 +137,9 @@ bool Input::isLeftMouseReleased() const
 
 void Input::setRightMouse(MouseState state)
 {
+    // Old lab code reports a release as setRightMouse(UP): count it as one.
+    if (state == UP && rightButton.state != UP)
+        rightButton.released = true;
     rightButton.state = state;
 }
 

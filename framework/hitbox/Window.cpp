@@ -140,8 +140,7 @@ int runWindow(Level& level, const Options& options, const ProgramInfo& info)
     const sf::Font font = loadFont();
     const sf::Vector2f world = level.getWorldSize();
     sf::RenderWindow window(
-        sf::VideoMode(static_cast<unsigned>(world.x), static_cast<unsigned>(world.y)),
-        info.title);
+        sf::VideoMode(static_cast<unsigned>(world.x), static_cast<unsigned>(world.y)), info.title);
     window.setFramerateLimit(120);
 
     Input input;
@@ -188,8 +187,8 @@ int runWindow(Level& level, const Options& options, const ProgramInfo& info)
                     if (writePng(capture.copyToImage(), path))
                         std::cout << "Saved " << path << std::endl;
                     else
-                        std::cerr << "Could not write " << path
-                                  << ": is the folder writable?" << std::endl;
+                        std::cerr << "Could not write " << path << ": is the folder writable?"
+                                  << std::endl;
                 }
                 else if (key == sf::Keyboard::Escape && !level.handleEscape())
                     window.close();

@@ -49,8 +49,7 @@ bool boxVsBox(const sf::FloatRect& first, const sf::FloatRect& second)
     const sf::FloatRect b = normalised(second);
     // Two boxes overlap when their x ranges overlap AND their y ranges overlap.
     // Strict "<": boxes that only touch do not collide.
-    return a.left < rightOf(b) && b.left < rightOf(a) && a.top < bottomOf(b) &&
-           b.top < bottomOf(a);
+    return a.left < rightOf(b) && b.left < rightOf(a) && a.top < bottomOf(b) && b.top < bottomOf(a);
 }
 // [/slide]
 

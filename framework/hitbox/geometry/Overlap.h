@@ -1,15 +1,17 @@
 // Overlap.h - is a shape inside another? Points, boxes and circles that are not moving.
 //
 // THE EDGE RULE (the same in every test in Hitbox):
-//   Two shapes collide only when they share area: the penetration depth must be > 0.
-//   Touching edges, touching corners and a point exactly on an edge do NOT collide.
+//   Two shapes collide only when one reaches strictly inside the other: the penetration
+//   depth (the shortest move that separates them) must be > 0. Touching edges, touching
+//   corners and a point exactly on an edge do NOT collide.
 // Why: a response that pushes two objects apart leaves them exactly touching. If touching
 // counted, they would "collide" again next frame and bounce back and forth (the sticking
 // bug). It also matches sf::Rect::intersects, so SFML code and Hitbox agree.
 //
 // Degenerate input, each with a defined answer (tests in tests/geometry/):
 //   - NaN or infinite coordinates: never collide (`false`, Contact with hit == false).
-//   - Zero-size box: a point or a line; it collides when it lies strictly inside the other.
+//   - Zero-size box: a point or a line; it collides when it lies strictly inside the other
+//     (sf::Rect::intersects differs here: it never reports a zero-size box).
 //   - Negative box size: the box spans from left + width to left, as in SFML.
 //   - Zero radius: a point. Negative radius: not a circle, never collides.
 //

@@ -24,10 +24,10 @@ struct Circle
 // moving A by `normal * depth` separates the two (the minimum translation vector).
 struct Contact
 {
-    bool hit = false;     // true only when the shapes share area (see Overlap.h's edge rules)
-    sf::Vector2f normal;  // unit length when hit, (0, 0) otherwise
-    float depth = 0.f;    // penetration depth in pixels, > 0 when hit
-    sf::Vector2f point;   // a point where they touch, on B's surface
+    bool hit = false;    // true only when the shapes share area (see Overlap.h's edge rules)
+    sf::Vector2f normal; // unit length when hit, (0, 0) otherwise
+    float depth = 0.f;   // penetration depth in pixels, > 0 when hit
+    sf::Vector2f point;  // a point where they touch, on B's surface
 
     explicit operator bool() const { return hit; }
 };

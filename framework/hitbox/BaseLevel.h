@@ -1,0 +1,36 @@
+// BaseLevel.h - the course's old level base class, kept so old lab code builds unchanged.
+//
+// A course lab's Level derives from it, sets `window` and `input` in its constructor, and
+// is driven by the lab's own Main.cpp with a variable dt:
+//     level.handleInput(dt); level.update(dt); level.render();
+// New Hitbox programs derive from hitbox::Level instead (Level.h): a fixed step, a render
+// that only reads state, and tests that need no window.
+#pragma once
+
+#include "hitbox/Input.h"
+
+#include <SFML/Graphics/Color.hpp>
+#include <SFML/Graphics/RenderWindow.hpp>
+
+class BaseLevel
+{
+public:
+    virtual ~BaseLevel() = default;
+
+    virtual void handleInput(float dt) = 0;
+    virtual void update(float dt) = 0;
+    virtual void render() = 0;
+
+    // The colour beginDraw() clears the window to: the old framework's light blue.
+    static const sf::Color backgroundColor;
+
+protected:
+    // Start a frame: clear the window. Then draw, then endDraw() shows the frame.
+    // Both do nothing while `window` is null.
+    void beginDraw();
+    void endDraw();
+
+    // Set by the derived level's constructor (Level(sf::RenderWindow* hwnd, Input* in)).
+    sf::RenderWindow* window = nullptr;
+    Input* input = nullptr;
+};

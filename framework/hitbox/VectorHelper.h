@@ -1,0 +1,9 @@
+// VectorHelper.h - the later weeks' name for the Vector helpers (normalise, magnitude, dot).
+//
+// The course renamed Vector to VectorHelper part way through; old lab code uses either
+// name, so this is the same class under the second name.
+#pragma once
+
+#include "hitbox/Vector.h"
+
+using VectorHelper = Vector;

@@ -1,0 +1,98 @@
+// Collision: the static facade the lecture uses, on GameObjects.
+#include "support/Printers.h"
+
+#include "hitbox/Collision.h"
+#include "hitbox/GameObject.h"
+
+#include <gtest/gtest.h>
+
+namespace
+{
+
+GameObject makeSquare(float x, float y, float size)
+{
+    GameObject square;
+    square.setSize({size, size});
+    square.setPosition(x, y);
+    return square;
+}
+
+} // namespace
+
+TEST(Collision, LectureBouncingBallsCallWorks)
+{
+    GameObject ball1 = makeSquare(0.f, 0.f, 50.f);
+    GameObject ball2 = makeSquare(40.f, 0.f, 50.f);
+    EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
+    ball2.setPosition(50.f, 0.f); // circles exactly touching
+    EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
+    ball1.collisionResponse(NULL); // the lecture's call: the default response does nothing
+}
+
+TEST(Collision, CircleComesFromTheCentreNotTheCorner)
+{
+    // With a centred origin, the lecture's formula put the circle a radius away from the
+    // ball. Two balls whose drawn circles overlap must collide.
+    GameObject ball1 = makeSquare(100.f, 100.f, 40.f);
+    GameObject ball2 = makeSquare(135.f, 100.f, 40.f);
+    ball1.setOrigin(20.f, 20.f);
+    ball2.setOrigin(20.f, 20.f);
+    EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
+    ball2.setPosition(141.f, 100.f);
+    EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
+}
+
+TEST(Collision, BoundingBoxTouchingIsNotACollision)
+{
+    GameObject square1 = makeSquare(0.f, 200.f, 50.f);
+    GameObject square2 = makeSquare(50.f, 200.f, 50.f);
+    EXPECT_FALSE(Collision::checkBoundingBox(&square1, &square2));
+    square2.move(-0.5f, 0.f);
+    EXPECT_TRUE(Collision::checkBoundingBox(&square1, &square2));
+}
+
+TEST(Collision, PointInBoxWithIntAndFloatPoints)
+{
+    GameObject square = makeSquare(100.f, 100.f, 50.f);
+    EXPECT_TRUE(Collision::checkBoundingBox(&square, sf::Vector2i(120, 120)));
+    EXPECT_TRUE(Collision::checkBoundingBox(&square, sf::Vector2f(100.5f, 149.5f)));
+    EXPECT_FALSE(Collision::checkBoundingBox(&square, sf::Vector2i(150, 120)));
+}
+
+TEST(Collision, NullDeadNonColliderAndSelfNeverCollide)
+{
+    GameObject a = makeSquare(0.f, 0.f, 50.f);
+    GameObject b = makeSquare(10.f, 10.f, 50.f);
+    EXPECT_FALSE(Collision::checkBoundingBox(nullptr, &b));
+    EXPECT_FALSE(Collision::checkBoundingBox(&a, nullptr));
+    EXPECT_FALSE(Collision::checkBoundingCircle(nullptr, nullptr));
+    EXPECT_FALSE(
+        Collision::checkBoundingBox(static_cast<GameObject*>(nullptr), sf::Vector2i(1, 1)));
+    EXPECT_FALSE(Collision::checkBoundingBox(&a, &a));
+    EXPECT_FALSE(Collision::getBoundingBoxContact(nullptr, &b).hit);
+
+    b.setCollider(false);
+    EXPECT_FALSE(Collision::checkBoundingBox(&a, &b));
+    EXPECT_FALSE(Collision::checkCircleBox(&a, &b));
+    b.setCollider(true);
+    b.setAlive(false);
+    EXPECT_FALSE(Collision::checkBoundingCircle(&a, &b));
+    EXPECT_FALSE(Collision::checkBoundingBox(&b, sf::Vector2f(20.f, 20.f)));
+    b.setAlive(true);
+    EXPECT_TRUE(Collision::checkBoundingBox(&a, &b));
+}
+
+TEST(Collision, ContactVersionsAgreeWithTheYesNoTests)
+{
+    GameObject a = makeSquare(0.f, 0.f, 50.f);
+    GameObject b = makeSquare(45.f, 10.f, 50.f);
+    const hitbox::Contact boxes = Collision::getBoundingBoxContact(&a, &b);
+    ASSERT_TRUE(boxes.hit);
+    EXPECT_EQ(boxes.normal, sf::Vector2f(-1.f, 0.f)); // push a left, out of b
+    EXPECT_FLOAT_EQ(boxes.depth, 5.f);
+
+    const hitbox::Contact circles = Collision::getBoundingCircleContact(&a, &b);
+    EXPECT_EQ(circles.hit, Collision::checkBoundingCircle(&a, &b));
+    const hitbox::Contact circleBox = Collision::getCircleBoxContact(&a, &b);
+    EXPECT_EQ(circleBox.hit, Collision::checkCircleBox(&a, &b));
+}

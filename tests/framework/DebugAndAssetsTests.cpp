@@ -1,0 +1,88 @@
+// The debug renderer builds its lines without a window; assets are found or named.
+#include "support/Printers.h"
+
+#include "hitbox/Assets.h"
+#include "hitbox/DebugRenderer.h"
+#include "hitbox/GameObject.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
+{
+    hitbox::DebugRenderer debug;
+    debug.box({0.f, 0.f, 10.f, 10.f}, hitbox::DebugRenderer::freeColor);
+    ASSERT_EQ(debug.getVertices().getVertexCount(), 4u * 6u); // two triangles a line
+    EXPECT_EQ(debug.getVertices().getPrimitiveType(), sf::Triangles);
+    EXPECT_EQ(debug.getVertices()[0].color, hitbox::DebugRenderer::freeColor);
+}
+
+TEST(DebugRenderer, TouchingObjectsUseTheTouchingColourAndShowVelocity)
+{
+    GameObject object;
+    object.setSize({10.f, 10.f});
+    object.setVelocity(100.f, 0.f);
+    hitbox::DebugRenderer debug;
+    debug.objectBox(object, true);
+    const sf::VertexArray& lines = debug.getVertices();
+    EXPECT_EQ(lines[0].color, hitbox::DebugRenderer::touchingColor);
+    // After the 4 box edges: the velocity arrow's shaft, from the centre, a quarter second
+    // long; it is a 2-pixel quad around the line from (5, 5) to (30, 5).
+    const sf::Vertex& shaftStart = lines[24];
+    const sf::Vertex& shaftEnd = lines[26];
+    EXPECT_EQ(shaftStart.position, sf::Vector2f(5.f, 4.f));
+    EXPECT_EQ(shaftEnd.position, sf::Vector2f(30.f, 6.f));
+    EXPECT_EQ(shaftStart.color, hitbox::DebugRenderer::velocityColor);
+}
+
+TEST(DebugRenderer, ContactsDrawOnlyWhenHit)
+{
+    hitbox::DebugRenderer debug;
+    debug.contact(hitbox::Contact{});
+    EXPECT_EQ(debug.getVertices().getVertexCount(), 0u);
+    debug.contact(hitbox::Contact{true, {0.f, -1.f}, 2.f, {5.f, 5.f}});
+    EXPECT_GT(debug.getVertices().getVertexCount(), 0u);
+    debug.clear();
+    EXPECT_EQ(debug.getVertices().getVertexCount(), 0u);
+}
+
+TEST(Assets, TheFontIsFoundFromAnyFolder)
+{
+    EXPECT_NO_THROW(hitbox::findAsset("fonts/DejaVuSans.ttf"));
+    EXPECT_NO_THROW(hitbox::loadFont());
+}
+
+TEST(Assets, AMissingAssetNamesThePathAndTheFix)
+{
+    try
+    {
+        hitbox::findAsset("fonts/NoSuchFont.ttf");
+        FAIL() << "expected an AssetError";
+    }
+    catch (const hitbox::AssetError& error)
+    {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("assets/fonts/NoSuchFont.ttf"), std::string::npos) << message;
+        EXPECT_NE(message.find("Fix:"), std::string::npos) << message;
+    }
+}
+
+TEST(Assets, ADamagedFontIsReportedNotCrashed)
+{
+    const std::string folder = ::testing::TempDir() + "hitbox-bad-assets";
+    ASSERT_EQ(std::system(("mkdir -p '" + folder + "/fonts'").c_str()), 0);
+    std::ofstream(folder + "/fonts/Broken.ttf") << "this is not a font";
+    setenv("HITBOX_ASSETS", folder.c_str(), 1);
+    try
+    {
+        hitbox::loadFont("fonts/Broken.ttf");
+        FAIL() << "expected an AssetError";
+    }
+    catch (const hitbox::AssetError& error)
+    {
+        EXPECT_NE(std::string(error.what()).find("Broken.ttf"), std::string::npos);
+    }
+    unsetenv("HITBOX_ASSETS");
+}

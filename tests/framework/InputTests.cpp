@@ -1,0 +1,108 @@
+// Input: down / pressed this frame / released this frame, the mouse, and bad key codes.
+#include "support/Printers.h"
+
+#include "hitbox/Input.h"
+
+#include <gtest/gtest.h>
+
+TEST(Input, PressIsSeenForOneFrameDownUntilReleased)
+{
+    Input input;
+    input.setKeyDown(sf::Keyboard::W);
+    EXPECT_TRUE(input.isKeyDown(sf::Keyboard::W));
+    EXPECT_TRUE(input.isPressed(sf::Keyboard::W));
+    input.update();
+    EXPECT_TRUE(input.isKeyDown(sf::Keyboard::W));
+    EXPECT_FALSE(input.isPressed(sf::Keyboard::W));
+    input.setKeyUp(sf::Keyboard::W);
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::W));
+    EXPECT_TRUE(input.isReleased(sf::Keyboard::W));
+    input.update();
+    EXPECT_FALSE(input.isReleased(sf::Keyboard::W));
+}
+
+TEST(Input, KeyRepeatIsNotANewPress)
+{
+    Input input;
+    input.setKeyDown(sf::Keyboard::Space);
+    input.update();
+    input.setKeyDown(sf::Keyboard::Space); // the operating system's auto-repeat
+    EXPECT_FALSE(input.isPressed(sf::Keyboard::Space));
+}
+
+TEST(Input, PressAndReleaseInOneFrameIsStillAPress)
+{
+    Input input;
+    input.setKeyDown(sf::Keyboard::A);
+    input.setKeyUp(sf::Keyboard::A);
+    EXPECT_TRUE(input.isPressed(sf::Keyboard::A));
+    EXPECT_TRUE(input.isReleased(sf::Keyboard::A));
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::A));
+}
+
+TEST(Input, UnknownAndOutOfRangeKeysAreIgnored)
+{
+    Input input;
+    input.setKeyDown(sf::Keyboard::Unknown); // -1: the old framework wrote outside its array
+    input.setKeyDown(100000);
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Unknown));
+    EXPECT_FALSE(input.isKeyDown(100000));
+    EXPECT_FALSE(input.isPressed(-5));
+}
+
+TEST(Input, MousePositionFloatAndInt)
+{
+    Input input;
+    input.setMousePosition(sf::Vector2f(10.6f, 20.2f));
+    EXPECT_EQ(input.getMousePosition(), sf::Vector2f(10.6f, 20.2f));
+    EXPECT_EQ(input.getMouseX(), 11);
+    EXPECT_EQ(input.getMouseY(), 20);
+    input.setMouseX(5);
+    input.setMouseY(6);
+    EXPECT_EQ(input.getMousePosition(), sf::Vector2f(5.f, 6.f));
+    input.setMousePosition(7, 8);
+    EXPECT_EQ(input.getMouseX(), 7);
+}
+
+TEST(Input, MouseButtonsOldAndNewStyle)
+{
+    Input input;
+    input.setMouseLDown(true);
+    EXPECT_TRUE(input.isMouseLDown());
+    EXPECT_TRUE(input.isLeftMouseDown());
+    EXPECT_TRUE(input.isLeftMousePressed());
+    input.update();
+    EXPECT_TRUE(input.isLeftMouseDown());
+    EXPECT_FALSE(input.isLeftMousePressed());
+    input.setMouseLDown(false);
+    EXPECT_TRUE(input.isLeftMouseReleased());
+    EXPECT_FALSE(input.isMouseLDown());
+
+    input.setRightMouse(Input::PRESSED);
+    EXPECT_TRUE(input.isRightMousePressed());
+    EXPECT_TRUE(input.isMouseRDown());
+    input.update();
+    EXPECT_TRUE(input.isRightMouseDown());
+    EXPECT_FALSE(input.isRightMousePressed());
+}
+
+TEST(Input, ReleaseAllLetsGoOfHeldKeys)
+{
+    // Focus lost while a key is held: its "up" event never comes.
+    Input input;
+    input.setKeyDown(sf::Keyboard::Up);
+    input.setMouseLDown(true);
+    input.releaseAll();
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Up));
+    EXPECT_FALSE(input.isMouseLDown());
+}
+
+TEST(Input, WheelIsPerFrame)
+{
+    Input input;
+    input.addMouseWheel(1.f);
+    input.addMouseWheel(2.f);
+    EXPECT_FLOAT_EQ(input.getMouseWheel(), 3.f);
+    input.update();
+    EXPECT_FLOAT_EQ(input.getMouseWheel(), 0.f);
+}

@@ -1,0 +1,156 @@
+// The application loop's pieces that need no window: the fixed step, letterboxing, the
+// command line, headless simulation.
+#include "support/Printers.h"
+
+#include "hitbox/App.h"
+#include "hitbox/FixedStep.h"
+#include "hitbox/Input.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace
+{
+
+// A ball falling under gravity, bouncing on a floor: enough to show any frame-rate effect.
+class FallingBallLevel : public hitbox::Level
+{
+public:
+    void update(float dt) override
+    {
+        velocity += 980.f * dt;
+        height += velocity * dt;
+        if (height > 500.f)
+        {
+            height = 500.f;
+            velocity = -velocity * 0.8f;
+        }
+        ++steps;
+    }
+    void render(sf::RenderTarget&) const override {}
+    float height = 0.f;
+    float velocity = 0.f;
+    int steps = 0;
+};
+
+FallingBallLevel runAtFrameRate(const std::vector<float>& frameTimes)
+{
+    FallingBallLevel level;
+    hitbox::FixedStep fixedStep(hitbox::stepSeconds);
+    for (float frame : frameTimes)
+    {
+        const int steps = fixedStep.advance(frame);
+        for (int i = 0; i < steps; ++i)
+            level.update(hitbox::stepSeconds);
+    }
+    return level;
+}
+
+} // namespace
+
+TEST(FixedStep, SameResultWhateverTheFrameRate)
+{
+    // Three seconds at 30 fps, at 144 fps, and at an uneven rate.
+    const FallingBallLevel slow = runAtFrameRate(std::vector<float>(90, 1.f / 30.f));
+    const FallingBallLevel fast = runAtFrameRate(std::vector<float>(432, 1.f / 144.f));
+    std::vector<float> uneven;
+    for (int i = 0; i < 200; ++i)
+        uneven.push_back(i % 2 == 0 ? 0.005f : 0.025f);
+    const FallingBallLevel jittery = runAtFrameRate(uneven);
+
+    EXPECT_EQ(slow.steps, 360);
+    EXPECT_NEAR(fast.steps, 360, 1);
+    EXPECT_NEAR(jittery.steps, 360, 1);
+    // Same number of identical steps means the same state, exactly.
+    const FallingBallLevel reference = runAtFrameRate(std::vector<float>(360, 1.f / 120.f));
+    EXPECT_EQ(slow.height, reference.height);
+    EXPECT_EQ(slow.velocity, reference.velocity);
+}
+
+TEST(FixedStep, AStallIsCappedAndStepsStayShort)
+{
+    hitbox::FixedStep fixedStep(1.f / 120.f, 0.25f);
+    // A 10-second breakpoint: at most a quarter of a second is simulated, in 1/120 s steps.
+    EXPECT_EQ(fixedStep.advance(10.f), 30);
+    EXPECT_EQ(fixedStep.advance(1.f / 120.f), 1);
+}
+
+TEST(FixedStep, ShortFramesSaveUpTime)
+{
+    hitbox::FixedStep fixedStep(0.01f);
+    EXPECT_EQ(fixedStep.advance(0.004f), 0);
+    EXPECT_EQ(fixedStep.advance(0.004f), 0);
+    EXPECT_EQ(fixedStep.advance(0.004f), 1);
+    EXPECT_NEAR(fixedStep.getLeftoverFraction(), 0.2f, 1e-3f);
+}
+
+TEST(FixedStep, NegativeAndNanFramesCountAsZero)
+{
+    hitbox::FixedStep fixedStep(0.01f);
+    EXPECT_EQ(fixedStep.advance(-1.f), 0);
+    EXPECT_EQ(fixedStep.advance(std::numeric_limits<float>::quiet_NaN()), 0);
+    EXPECT_EQ(fixedStep.advance(0.01f), 1);
+}
+
+TEST(Letterbox, WideWindowGetsBarsLeftAndRight)
+{
+    const sf::FloatRect viewport = hitbox::letterboxViewport({2400, 675}, {1200.f, 675.f});
+    EXPECT_FLOAT_EQ(viewport.width, 0.5f);
+    EXPECT_FLOAT_EQ(viewport.left, 0.25f);
+    EXPECT_FLOAT_EQ(viewport.height, 1.f);
+}
+
+TEST(Letterbox, TallWindowGetsBarsAboveAndBelow)
+{
+    const sf::FloatRect viewport = hitbox::letterboxViewport({1200, 1350}, {1200.f, 675.f});
+    EXPECT_FLOAT_EQ(viewport.height, 0.5f);
+    EXPECT_FLOAT_EQ(viewport.top, 0.25f);
+}
+
+TEST(Letterbox, SameAspectFillsTheWindowAndZeroSizeIsSafe)
+{
+    EXPECT_EQ(hitbox::letterboxViewport({600, 337}, {1200.f, 674.f}), sf::FloatRect(0, 0, 1, 1));
+    EXPECT_EQ(hitbox::letterboxViewport({0, 0}, {1200.f, 675.f}), sf::FloatRect(0, 0, 1, 1));
+}
+
+namespace
+{
+hitbox::Options parse(std::vector<const char*> arguments,
+                      const std::vector<std::string>& extraOptions = {})
+{
+    arguments.insert(arguments.begin(), "program");
+    return hitbox::parseOptions(static_cast<int>(arguments.size()), arguments.data(),
+                                {"Test", extraOptions});
+}
+} // namespace
+
+TEST(CommandLine, SharedOptions)
+{
+    const hitbox::Options options = parse({"--headless", "--frames", "42", "--seed", "7"});
+    EXPECT_TRUE(options.headless);
+    EXPECT_EQ(options.frames, 42);
+    EXPECT_EQ(options.seed, 7u);
+    EXPECT_EQ(parse({"--seconds", "3"}).frames, 360);
+    EXPECT_EQ(parse({"--screenshot", "a.png", "--debug"}).screenshotPath, "a.png");
+}
+
+TEST(CommandLine, ProgramOptionsAndBadInputGetClearErrors)
+{
+    EXPECT_EQ(parse({"--mode", "two"}, {"--mode"}).get("--mode", "one"), "two");
+    EXPECT_EQ(parse({}, {"--mode"}).get("--mode", "one"), "one");
+    EXPECT_THROW(parse({"--mode", "two"}), std::invalid_argument);
+    EXPECT_THROW(parse({"--frames"}), std::invalid_argument);
+    EXPECT_THROW(parse({"--frames", "ten"}), std::invalid_argument);
+    EXPECT_THROW(parse({"--frames", "-3"}), std::invalid_argument);
+    EXPECT_THROW(parse({"--headless", "--screenshot", "x.png"}), std::invalid_argument);
+}
+
+TEST(Simulate, RunsExactlyTheFramesAskedWithNoInput)
+{
+    FallingBallLevel level;
+    hitbox::simulate(level, 240);
+    EXPECT_EQ(level.steps, 240);
+    EXPECT_GT(level.height, 0.f);
+}
