@@ -108,6 +108,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
         target.draw(cursor);
 }
 
+// [slide:debug-render]
 void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     bool cursorTouching = false;
@@ -126,6 +127,7 @@ void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
     else
         debug.objectBox(cursor, cursorTouching);
 }
+// [/slide]
 
 std::string SandboxLevel::getHelpText() const
 {

@@ -18,6 +18,7 @@ bool canCollide(const GameObject* first, const GameObject* second)
 
 } // namespace
 
+// [slide:collision-facade]
 bool Collision::checkBoundingCircle(GameObject* first, GameObject* second)
 {
     return canCollide(first, second) &&
@@ -29,6 +30,7 @@ bool Collision::checkBoundingBox(GameObject* first, GameObject* second)
     return canCollide(first, second) &&
            hitbox::boxVsBox(first->getCollisionBox(), second->getCollisionBox());
 }
+// [/slide]
 
 bool Collision::checkBoundingBox(GameObject* object, sf::Vector2f point)
 {

@@ -76,6 +76,7 @@ sf::FloatRect GameObject::getLocalCollisionBox() const
     return {-origin.x, -origin.y, getSize().x, getSize().y};
 }
 
+// [slide:collision-box-world]
 sf::FloatRect GameObject::getCollisionBox() const
 {
     // The box is measured from the origin point; the shape's own coordinates start at its
@@ -85,7 +86,9 @@ sf::FloatRect GameObject::getCollisionBox() const
     box.top += getOrigin().y;
     return getTransform().transformRect(box);
 }
+// [/slide]
 
+// [slide:bounding-circle-radius]
 hitbox::Circle GameObject::getBoundingCircle() const
 {
     const sf::Vector2f scale = getScale();
@@ -107,6 +110,7 @@ hitbox::Circle GameObject::getBoundingCircle() const
     }
     return {getTransform().transformPoint(localCenter + getOrigin()), localRadius * smallerScale};
 }
+// [/slide]
 
 void GameObject::setBoundingCircle(sf::Vector2f centerFromOrigin, float radius)
 {

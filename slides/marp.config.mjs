@@ -1,0 +1,12 @@
+// Marp CLI settings shared by build.sh and check.sh.
+export default {
+  // Decks may use a little HTML (two-column layouts, the benchmark placeholder).
+  html: true,
+  themeSet: ['./theme/hitbox.css'],
+  options: {
+    // MathJax renders formulas as inline SVG: the HTML works offline (KaTeX needs a CDN).
+    math: 'mathjax',
+    // Twemoji would load pictures from the network: keep every character as text.
+    emoji: { shortcode: false, unicode: false },
+  },
+};

@@ -1,0 +1,186 @@
+#!/usr/bin/env node
+// include-regions.mjs - turns the deck sources into the decks Marp converts.
+//
+// Why: code on a slide must be exactly what the framework and the labs contain, so a deck
+// never quotes code by hand. It names a region instead, and this script copies it in:
+//
+//     <!-- include: framework/hitbox/geometry/Overlap.cpp#aabb-overlap -->
+//     <!-- include: #pong-serve -->            (path left out: any source file may hold it)
+//     <!-- include: #aabb-contact lines 1-16 -->  (part of a long region, for two slides)
+//
+// A region is marked in a source file by a line `// [slide:NAME]` and a line `// [/slide]`.
+// The include line becomes a fenced code block of the region: marker lines left out, the
+// common indentation removed. A missing file or region is an error naming the deck and line:
+//     src/01-bounding-volumes.md:42: region aabb-overlap not found in framework/x.cpp
+//
+// Usage:
+//     node include-regions.mjs --root REPO --src DIR --out DIR [--allow-missing] [--list]
+// --allow-missing  drafts only: a missing region becomes a visible placeholder (exit 0)
+// --list           print every region the decks use ("deck:line NAME FILE") and check them
+import fs from 'node:fs';
+import path from 'node:path';
+
+const includeLine = /^\s*<!--\s*include:\s*([^#\s]*)#([A-Za-z0-9_.-]+)(?:\s+lines\s+(\d+)-(\d+))?\s*-->\s*$/;
+const regionStart = /^\s*\/\/\s*\[slide:([A-Za-z0-9_.-]+)\]\s*$/;
+const regionEnd = /^\s*\/\/\s*\[\/slide\]\s*$/;
+// Where regions may live: the project's sources, never generated or installed files.
+const skippedFolders = new Set(['.git', 'node_modules', 'slides', 'out', 'dist']);
+const sourceExtensions = new Set(['.cpp', '.h', '.hpp', '.cc', '.inl', '.cmake']);
+// Code that does not fit a slide at lecture-hall size (see README "Writing a deck").
+const maxLinesPerSlide = 16;
+
+function parseArguments(argv) {
+  const options = { allowMissing: false, list: false };
+  for (let i = 0; i < argv.length; i++) {
+    const arg = argv[i];
+    if (arg === '--root') options.root = argv[++i];
+    else if (arg === '--src') options.src = argv[++i];
+    else if (arg === '--out') options.out = argv[++i];
+    else if (arg === '--allow-missing') options.allowMissing = true;
+    else if (arg === '--list') options.list = true;
+    else throw new Error(`unknown argument ${arg}`);
+  }
+  if (!options.root || !options.src || (!options.out && !options.list))
+    throw new Error('usage: include-regions.mjs --root REPO --src DIR --out DIR [--allow-missing] [--list]');
+  return options;
+}
+
+function sourceFiles(root, folder = '') {
+  const found = [];
+  for (const entry of fs.readdirSync(path.join(root, folder), { withFileTypes: true })) {
+    const relative = folder ? `${folder}/${entry.name}` : entry.name;
+    if (entry.isDirectory()) {
+      // build*, handout*: generated trees (see .gitignore).
+      if (skippedFolders.has(entry.name) || /^(build|handout)/.test(entry.name)) continue;
+      found.push(...sourceFiles(root, relative));
+    } else if (sourceExtensions.has(path.extname(entry.name)) || entry.name === 'CMakeLists.txt') {
+      found.push(relative);
+    }
+  }
+  return found;
+}
+
+// Every region of one file: name -> {lines, startLine}. Errors for broken markers.
+function regionsOf(root, file) {
+  const regions = new Map();
+  const lines = fs.readFileSync(path.join(root, file), 'utf8').split(/\r?\n/);
+  let open = null;
+  lines.forEach((line, index) => {
+    const start = line.match(regionStart);
+    if (start) {
+      if (open) throw new Error(`${file}:${index + 1}: region ${start[1]} starts inside region ${open.name}`);
+      if (regions.has(start[1])) throw new Error(`${file}:${index + 1}: region ${start[1]} defined twice`);
+      open = { name: start[1], startLine: index + 1, lines: [] };
+    } else if (regionEnd.test(line)) {
+      if (!open) throw new Error(`${file}:${index + 1}: [/slide] without a [slide:NAME] before it`);
+      regions.set(open.name, open);
+      open = null;
+    } else if (open) {
+      open.lines.push(line);
+    }
+  });
+  if (open) throw new Error(`${file}:${open.startLine}: region ${open.name} has no [/slide]`);
+  return regions;
+}
+
+function dedent(lines) {
+  const indents = lines.filter((l) => l.trim() !== '').map((l) => l.match(/^[ \t]*/)[0].length);
+  const common = indents.length ? Math.min(...indents) : 0;
+  const result = lines.map((l) => l.slice(common).replace(/\s+$/, ''));
+  while (result.length && result[0] === '') result.shift();
+  while (result.length && result[result.length - 1] === '') result.pop();
+  return result;
+}
+
+function languageOf(file) {
+  if (file.endsWith('.cmake') || file.endsWith('CMakeLists.txt')) return 'cmake';
+  return 'cpp';
+}
+
+class RegionIndex {
+  constructor(root) {
+    this.root = root;
+    this.byFile = new Map();
+    this.allFiles = null;
+  }
+  regionsIn(file) {
+    if (!this.byFile.has(file)) this.byFile.set(file, regionsOf(this.root, file));
+    return this.byFile.get(file);
+  }
+  // {file, region} or {error}
+  find(file, name) {
+    if (file) {
+      if (!fs.existsSync(path.join(this.root, file))) return { error: `region ${name} not found in ${file} (no such file)` };
+      const region = this.regionsIn(file).get(name);
+      return region ? { file, region } : { error: `region ${name} not found in ${file}` };
+    }
+    if (!this.allFiles) this.allFiles = sourceFiles(this.root);
+    const matches = this.allFiles.filter((f) => this.regionsIn(f).has(name));
+    if (matches.length === 0) return { error: `region ${name} not found in the project's sources` };
+    if (matches.length > 1) return { error: `region ${name} is defined in ${matches.join(' and ')}: name the file` };
+    return { file: matches[0], region: this.regionsIn(matches[0]).get(name) };
+  }
+}
+
+function processDeck(deckPath, deckLabel, index, options, problems, listing) {
+  const lines = fs.readFileSync(deckPath, 'utf8').split(/\r?\n/);
+  const output = [];
+  lines.forEach((line, i) => {
+    const match = line.match(includeLine);
+    if (!match) {
+      output.push(line);
+      return;
+    }
+    const [, file, name, from, to] = match;
+    const where = `${deckLabel}:${i + 1}`;
+    const found = index.find(file, name);
+    if (found.error) {
+      problems.push(`${where}: ${found.error}`);
+      output.push('```text', `MISSING CODE: region ${name}`, `(${found.error})`, '```');
+      return;
+    }
+    let code = dedent(found.region.lines);
+    if (from) {
+      const first = Number(from);
+      const last = Number(to);
+      if (first < 1 || last < first || last > code.length) {
+        problems.push(`${where}: lines ${from}-${to} outside region ${name} (${code.length} lines)`);
+        return;
+      }
+      code = dedent(code.slice(first - 1, last));
+    }
+    if (code.length > maxLinesPerSlide)
+      console.warn(`${where}: warning: region ${name} shows ${code.length} lines (more than ${maxLinesPerSlide} fit a slide)`);
+    listing.push(`${where} ${name} ${found.file}:${found.region.startLine}`);
+    output.push('```' + languageOf(found.file), ...code, '```');
+  });
+  if (options.out) fs.writeFileSync(path.join(options.out, path.basename(deckPath)), output.join('\n'));
+}
+
+function main() {
+  const options = parseArguments(process.argv.slice(2));
+  const index = new RegionIndex(options.root);
+  const decks = fs.readdirSync(options.src).filter((f) => f.endsWith('.md')).sort();
+  if (options.out) fs.mkdirSync(options.out, { recursive: true });
+  const problems = [];
+  const listing = [];
+  for (const deck of decks) {
+    const deckPath = path.join(options.src, deck);
+    processDeck(deckPath, path.relative(process.cwd(), deckPath), index, options, problems, listing);
+  }
+  if (options.list) console.log(listing.join('\n'));
+  for (const problem of problems) console.error(problem);
+  if (problems.length && !options.allowMissing) {
+    console.error(`include-regions: ${problems.length} region(s) missing`);
+    process.exit(1);
+  }
+  console.error(`include-regions: ${decks.length} deck(s), ${listing.length} region(s) included` +
+    (problems.length ? `, ${problems.length} missing (placeholders)` : ''));
+}
+
+try {
+  main();
+} catch (error) {
+  console.error(`include-regions: ${error.message}`);
+  process.exit(1);
+}
