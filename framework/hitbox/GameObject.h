@@ -29,9 +29,11 @@ public:
     // Override these in your own objects. They do nothing by default.
     virtual void handleInput(float dt);
     virtual void update(float dt);
+    // [slide:collision-response-hook]
     // Called when this object hits `other`. `other` is nullptr when it hit the world
     // (a wall, the edge of the screen) rather than another object.
     virtual void collisionResponse(GameObject* other);
+    // [/slide]
 
     void setVelocity(sf::Vector2f newVelocity);
     void setVelocity(float x, float y);

@@ -1,0 +1,123 @@
+#!/usr/bin/env node
+// check-decks.mjs - the lecture-quality checks that a build alone does not make.
+//
+//     node check-decks.mjs --decks build/decks --dist dist --concepts concepts.txt --src src
+//
+// - every slide has speaker notes (an HTML comment that is not a Marp directive);
+// - no slide shows more than 16 lines of code (more is unreadable at lecture-hall size);
+// - every image a deck links to exists beside it;
+// - every deck in src/ became an HTML file, and no HTML file loads anything from the
+//   network (the decks must work offline in a lecture hall);
+// - every concept in concepts.txt ("name | regular expression") is on at least one slide
+//   (speaker notes do not count: the students must see it).
+import fs from 'node:fs';
+import path from 'node:path';
+
+const maxCodeLines = 16;
+const directive = /^\s*_?[A-Za-z-]+\s*:/; // <!-- _class: lead -->, <!-- paginate: false -->
+
+function parseArguments(argv) {
+  const options = {};
+  for (let i = 0; i < argv.length; i += 2) options[argv[i].replace(/^--/, '')] = argv[i + 1];
+  for (const needed of ['decks', 'dist', 'concepts', 'src'])
+    if (!options[needed]) throw new Error(`missing --${needed}`);
+  return options;
+}
+
+// Slides of one deck: [{number, text}] without the front matter.
+function slidesOf(markdown) {
+  const lines = markdown.split(/\r?\n/);
+  let start = 0;
+  if (lines[0] === '---') start = lines.indexOf('---', 1) + 1;
+  const slides = [];
+  let current = [];
+  let inFence = false;
+  for (const line of lines.slice(start)) {
+    if (/^\s*```/.test(line)) inFence = !inFence;
+    if (!inFence && line === '---') {
+      slides.push(current.join('\n'));
+      current = [];
+    } else {
+      current.push(line);
+    }
+  }
+  slides.push(current.join('\n'));
+  return slides.map((text, index) => ({ number: index + 1, text })).filter((s) => s.text.trim() !== '');
+}
+
+function codeLineCount(text) {
+  let count = 0;
+  let inFence = false;
+  for (const line of text.split('\n')) {
+    if (/^\s*```/.test(line)) inFence = !inFence;
+    else if (inFence) count++;
+  }
+  return count;
+}
+
+function hasNotes(text) {
+  const comments = [...text.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]);
+  return comments.some((c) => !directive.test(c) && c.trim() !== '');
+}
+
+function visibleText(text) {
+  return text.replace(/<!--[\s\S]*?-->/g, ' ');
+}
+
+function main() {
+  const options = parseArguments(process.argv.slice(2));
+  const problems = [];
+  const decks = fs.readdirSync(options.decks).filter((f) => f.endsWith('.md')).sort();
+  const everything = [];
+
+  for (const deck of decks) {
+    const markdown = fs.readFileSync(path.join(options.decks, deck), 'utf8');
+    for (const slide of slidesOf(markdown)) {
+      const where = `${deck} slide ${slide.number}`;
+      if (!hasNotes(slide.text)) problems.push(`${where}: no speaker notes (an HTML comment)`);
+      const code = codeLineCount(slide.text);
+      if (code > maxCodeLines) problems.push(`${where}: ${code} lines of code (at most ${maxCodeLines} fit)`);
+      for (const image of slide.text.matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g)) {
+        if (/^https?:/.test(image[1])) problems.push(`${where}: image ${image[1]} is on the network`);
+        else if (!fs.existsSync(path.join(options.decks, image[1])))
+          problems.push(`${where}: image ${image[1]} does not exist`);
+      }
+      everything.push(visibleText(slide.text));
+    }
+  }
+
+  for (const source of fs.readdirSync(options.src).filter((f) => f.endsWith('.md'))) {
+    const html = path.join(options.dist, source.replace(/\.md$/, '.html'));
+    if (!fs.existsSync(html)) {
+      problems.push(`${source}: no ${html}`);
+      continue;
+    }
+    const page = fs.readFileSync(html, 'utf8');
+    const remote = page.match(/(?:src|href)\s*=\s*["']https?:[^"']*|url\(\s*["']?https?:[^)]*|@import\s+["']https?:[^"']*/);
+    if (remote) problems.push(`${html}: loads from the network: ${remote[0]}`);
+  }
+
+  const allText = everything.join('\n');
+  let conceptCount = 0;
+  for (const line of fs.readFileSync(options.concepts, 'utf8').split(/\r?\n/)) {
+    if (line.trim() === '' || line.startsWith('#')) continue;
+    const [name, pattern] = line.split('|').map((part) => part.trim());
+    conceptCount++;
+    if (!new RegExp(pattern, 'i').test(allText)) problems.push(`concept not on any slide: ${name} (/${pattern}/i)`);
+  }
+
+  for (const problem of problems) console.error(problem);
+  if (problems.length) {
+    console.error(`check-decks: ${problems.length} problem(s)`);
+    process.exit(1);
+  }
+  console.log(`check-decks: ${decks.length} deck(s), ${everything.length} slides with notes, ` +
+    `${conceptCount} concepts found, offline HTML`);
+}
+
+try {
+  main();
+} catch (error) {
+  console.error(`check-decks: ${error.message}`);
+  process.exit(1);
+}
