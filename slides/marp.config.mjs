@@ -8,5 +8,8 @@ export default {
     math: 'mathjax',
     // Twemoji would load pictures from the network: keep every character as text.
     emoji: { shortcode: false, unicode: false },
+    // A line break in the Markdown source is a space, as in any Markdown: sentences can be
+    // wrapped in the source without breaking the line on the slide.
+    markdown: { breaks: false },
   },
 };
