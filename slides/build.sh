@@ -98,4 +98,18 @@ if $pdf && [[ -x "$chrome" ]]; then
 elif $pdf; then
     echo "== PDF skipped: no Chromium (apt-get install chromium, or set CHROME_PATH)"
 fi
-echo "slides: open slides/dist/index.html or a deck in slides/dist/"
+# An index page: one link per deck (and its PDF when there is one).
+{
+    echo '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>Hitbox lectures</title>'
+    echo '<style>body{font-family:sans-serif;font-size:22px;margin:40px}li{margin:8px 0}</style></head>'
+    echo '<body><h1>Hitbox: collision detection lectures</h1><ol>'
+    for deck in "$here"/src/*.md; do
+        name="$(basename "$deck" .md)"
+        title="$(sed -n 's/^title: *"\{0,1\}\([^"]*\)"\{0,1\}$/\1/p' "$deck" | head -n 1)"
+        pdf_link=""
+        [[ -f "$here/dist/$name.pdf" ]] && pdf_link=" (<a href=\"$name.pdf\">PDF</a>)"
+        echo "<li><a href=\"$name.html\">${title:-$name}</a>$pdf_link</li>"
+    done
+    echo '</ol><p>Press P in a deck for the presenter view with speaker notes.</p></body></html>'
+} >"$here/dist/index.html"
+echo "slides: open slides/dist/index.html"

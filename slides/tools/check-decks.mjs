@@ -8,13 +8,15 @@
 // - every image a deck links to exists beside it;
 // - every deck in src/ became an HTML file, and no HTML file loads anything from the
 //   network (the decks must work offline in a lecture hall);
-// - every concept in concepts.txt ("name | regular expression") is on at least one slide
+// - every concept in concepts.txt ("name => regular expression") is on at least one slide
 //   (speaker notes do not count: the students must see it).
 import fs from 'node:fs';
 import path from 'node:path';
 
 const maxCodeLines = 16;
-const directive = /^\s*_?[A-Za-z-]+\s*:/; // <!-- _class: lead -->, <!-- paginate: false -->
+// Marp's directives (<!-- _class: lead -->, <!-- paginate: false -->); any other comment is
+// a speaker note, even one that starts with "Next:".
+const directive = /^\s*_?(class|paginate|header|footer|theme|style|size|math|headingDivider|backgroundColor|backgroundImage|backgroundPosition|backgroundRepeat|backgroundSize|color|marp|title|description|author|image|keywords|url|transition|lang)\s*:/;
 
 function parseArguments(argv) {
   const options = {};
@@ -101,7 +103,10 @@ function main() {
   let conceptCount = 0;
   for (const line of fs.readFileSync(options.concepts, 'utf8').split(/\r?\n/)) {
     if (line.trim() === '' || line.startsWith('#')) continue;
-    const [name, pattern] = line.split('|').map((part) => part.trim());
+    const separator = line.indexOf('=>');
+    if (separator < 0) throw new Error(`concepts.txt: no "=>" in: ${line}`);
+    const name = line.slice(0, separator).trim();
+    const pattern = line.slice(separator + 2).trim();
     conceptCount++;
     if (!new RegExp(pattern, 'i').test(allText)) problems.push(`concept not on any slide: ${name} (/${pattern}/i)`);
   }
