@@ -10,7 +10,9 @@
 //
 // A region is marked in a source file by a line `// [slide:NAME]` and a line `// [/slide]`.
 // The include line becomes a fenced code block of the region: marker lines left out, the
-// common indentation removed. A missing file or region is an error naming the deck and line:
+// common indentation removed. In lab solutions, the task markers and the starter code
+// (`// BEGIN TASK n`, `// STARTER TASK n` ... `// END TASK n`) are left out too: a slide
+// shows the solution's code only. A missing file or region is an error naming the deck and line:
 //     src/01-bounding-volumes.md:42: region aabb-overlap not found in framework/x.cpp
 //
 // Usage:
@@ -23,6 +25,9 @@ import path from 'node:path';
 const includeLine = /^\s*<!--\s*include:\s*([^#\s]*)#([A-Za-z0-9_.-]+)(?:\s+lines\s+(\d+)-(\d+))?\s*-->\s*$/;
 const regionStart = /^\s*\/\/\s*\[slide:([A-Za-z0-9_.-]+)\]\s*$/;
 const regionEnd = /^\s*\/\/\s*\[\/slide\]\s*$/;
+const taskBegin = /^\s*\/\/\s*BEGIN TASK\b/;
+const taskStarter = /^\s*\/\/\s*STARTER TASK\b/;
+const taskEnd = /^\s*\/\/\s*END TASK\b/;
 // Where regions may live: the project's sources, never generated or installed files.
 const skippedFolders = new Set(['.git', 'node_modules', 'slides', 'out', 'dist']);
 const sourceExtensions = new Set(['.cpp', '.h', '.hpp', '.cc', '.inl', '.cmake']);
@@ -83,6 +88,18 @@ function regionsOf(root, file) {
   return regions;
 }
 
+// The solution's lines of a lab region: task markers and starter code dropped.
+function withoutTaskMarkers(lines) {
+  const kept = [];
+  let inStarter = false;
+  for (const line of lines) {
+    if (taskStarter.test(line)) inStarter = true;
+    else if (taskEnd.test(line)) inStarter = false;
+    else if (!inStarter && !taskBegin.test(line)) kept.push(line);
+  }
+  return kept;
+}
+
 function dedent(lines) {
   const indents = lines.filter((l) => l.trim() !== '').map((l) => l.match(/^[ \t]*/)[0].length);
   const common = indents.length ? Math.min(...indents) : 0;
@@ -139,7 +156,7 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       output.push('```text', `MISSING CODE: region ${name}`, `(${found.error})`, '```');
       return;
     }
-    let code = dedent(found.region.lines);
+    let code = dedent(withoutTaskMarkers(found.region.lines));
     if (from) {
       const first = Number(from);
       const last = Number(to);
