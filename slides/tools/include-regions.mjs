@@ -33,6 +33,9 @@ const skippedFolders = new Set(['.git', 'node_modules', 'slides', 'out', 'dist']
 const sourceExtensions = new Set(['.cpp', '.h', '.hpp', '.cc', '.inl', '.cmake']);
 // Code that does not fit a slide at lecture-hall size (see README "Writing a deck").
 const maxLinesPerSlide = 16;
+// Longer lines than this do not fit the theme's 24px code: such an excerpt gets the slide
+// class `wide-code` (20px, about 98 characters a line) instead of wrapping every line.
+const narrowCodeColumns = 78;
 
 function parseArguments(argv) {
   const options = { allowMissing: false, list: false };
@@ -169,6 +172,7 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
     if (code.length > maxLinesPerSlide)
       console.warn(`${where}: warning: region ${name} shows ${code.length} lines (more than ${maxLinesPerSlide} fit a slide)`);
     listing.push(`${where} ${name} ${found.file}:${found.region.startLine}`);
+    if (Math.max(...code.map((l) => l.length)) > narrowCodeColumns) output.push('<!-- _class: wide-code -->');
     output.push('```' + languageOf(found.file), ...code, '```');
   });
   if (options.out) fs.writeFileSync(path.join(options.out, path.basename(deckPath)), output.join('\n'));
