@@ -24,7 +24,7 @@ for arg in "$@"; do
     --draft) draft=true ;;
     --no-pdf) pdf=false ;;
     -*) echo "usage: $0 [BUILD_DIR] [--draft] [--no-pdf]" >&2; exit 2 ;;
-    *) build_dir="$arg" ;;
+    *) build_dir="$(cd "$arg" 2>/dev/null && pwd || echo "$arg")" ;; # relative to the caller
     esac
 done
 
