@@ -14,7 +14,7 @@
 
 namespace
 {
-const sf::Color ballColors[] = {{230, 90, 70},  {70, 150, 230}, {240, 200, 60}, {90, 200, 120},
+const sf::Color ballColors[] = {{230, 90, 70},   {70, 150, 230}, {240, 200, 60}, {90, 200, 120},
                                 {200, 110, 220}, {240, 150, 70}, {80, 210, 210}, {220, 220, 220}};
 constexpr int maxBalls = 60;
 } // namespace
@@ -48,8 +48,8 @@ void BallsLevel::addRandomBall()
         for (const Ball& ball : balls)
         {
             const sf::Vector2f between = ball.getPosition() - center;
-            free = free && between.x * between.x + between.y * between.y >
-                               4.f * ballRadius * ballRadius;
+            free = free &&
+                   between.x * between.x + between.y * between.y > 4.f * ballRadius * ballRadius;
         }
         if (free)
         {
@@ -103,9 +103,8 @@ void BallsLevel::render(sf::RenderTarget& target) const
         // Mix towards white just after a hit, so every hit is seen.
         const sf::Color color = ball.getFillColor();
         const float white = ball.getFlash() * 0.7f;
-        const auto mix = [white](sf::Uint8 channel) {
-            return static_cast<sf::Uint8>(channel + (255 - channel) * white);
-        };
+        const auto mix = [white](sf::Uint8 channel)
+        { return static_cast<sf::Uint8>(channel + (255 - channel) * white); };
         drawn.setFillColor(sf::Color(mix(color.r), mix(color.g), mix(color.b)));
         target.draw(drawn);
     }

@@ -24,16 +24,16 @@ int ballCountFrom(const hitbox::Options& options)
     }
     catch (const std::exception&)
     {
-        throw std::invalid_argument("--balls needs a whole number, e.g. --balls 12 (not '" +
-                                    text + "')");
+        throw std::invalid_argument("--balls needs a whole number, e.g. --balls 12 (not '" + text +
+                                    "')");
     }
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
-    return hitbox::run(argc, argv, {"Lab 2 - Bouncing balls", {"--balls"}},
-                       [](const hitbox::Options& options) {
-                           return std::make_unique<BallsLevel>(ballCountFrom(options), options.seed);
-                       });
+    return hitbox::run(
+        argc, argv, {"Lab 2 - Bouncing balls", {"--balls"}},
+        [](const hitbox::Options& options)
+        { return std::make_unique<BallsLevel>(ballCountFrom(options), options.seed); });
 }

@@ -86,7 +86,8 @@ TEST(Task1BounceOffTheWalls, BallComesBackFromEachWallAtTheSameSpeed)
         BallsLevel level = emptyLevel();
         level.addBall(middle, direction * ballSpeed);
         // Long enough to reach the wall it flies at, not the one across from it.
-        const sf::Vector2f toWall = level.getWorldSize() / 2.f - sf::Vector2f(ballRadius, ballRadius);
+        const sf::Vector2f toWall =
+            level.getWorldSize() / 2.f - sf::Vector2f(ballRadius, ballRadius);
         run(level, std::abs(dot(toWall, direction)) / ballSpeed + 0.5f);
         const sf::Vector2f velocity = level.getBall(0).getVelocity();
         EXPECT_VEC_NEAR(velocity, -direction * ballSpeed, 0.01f)
@@ -166,7 +167,8 @@ TEST(Task3BounceApartLikeBilliardBalls, HeadOnBallsReverseAfterContactAndNeverOv
     ASSERT_TRUE(met) << "the balls should meet within two seconds";
     EXPECT_LE(worstOverlap, overlapTolerance) << "after a step the balls may not overlap";
     EXPECT_FLOAT_EQ(level.getBall(0).getVelocity().x, -ballSpeed) << "the left ball goes back left";
-    EXPECT_FLOAT_EQ(level.getBall(1).getVelocity().x, ballSpeed) << "the right ball goes back right";
+    EXPECT_FLOAT_EQ(level.getBall(1).getVelocity().x, ballSpeed)
+        << "the right ball goes back right";
 }
 
 TEST(Task3BounceApartLikeBilliardBalls, MovingBallHittingABallAtRestStopsAndPassesItsSpeedOn)
