@@ -22,7 +22,7 @@ public:
 
     Lane getLane() const;
     float getSpeed() const;
-    bool isFlying() const;  // neither stopped by the wall nor off the range yet
+    bool isFlying() const; // neither stopped by the wall nor off the range yet
     bool hitTheWall() const;
     void stopInTheWall(); // the test found the wall: it stays where it is
     void flewAway();      // left the range: a miss

@@ -66,8 +66,8 @@ PaperLevel::PaperLevel() : nextSpeed(firstSpeed), font(hitbox::loadFont())
 
 void PaperLevel::fire(float speed)
 {
-    discreteBullet = std::make_unique<Bullet>(Lane::Discrete, sf::Vector2f{gunX, discreteLaneY},
-                                              speed);
+    discreteBullet =
+        std::make_unique<Bullet>(Lane::Discrete, sf::Vector2f{gunX, discreteLaneY}, speed);
     sweptBullet = std::make_unique<Bullet>(Lane::Swept, sf::Vector2f{gunX, sweptLaneY}, speed);
     ++shotsFired;
 }
@@ -182,7 +182,8 @@ void PaperLevel::update(float dt)
     if (sweptBullet)
         updateBullet(*sweptBullet, dt);
 
-    const bool shotDone = !discreteBullet || (!discreteBullet->isFlying() && !sweptBullet->isFlying());
+    const bool shotDone =
+        !discreteBullet || (!discreteBullet->isFlying() && !sweptBullet->isFlying());
     if (!autoFire || !shotDone)
         return;
     secondsUntilNextShot -= dt;
@@ -289,8 +290,7 @@ void PaperLevel::render(sf::RenderTarget& target) const
         char perStep[32];
         std::snprintf(perStep, sizeof(perStep), "%.1f", bullet->getSpeed() * hitbox::stepSeconds);
         shot += "   -   shot " + std::to_string(shotsFired) + ": " +
-                withSpaces(std::lround(bullet->getSpeed())) + " px/s = " + perStep +
-                " px per step";
+                withSpaces(std::lround(bullet->getSpeed())) + " px/s = " + perStep + " px per step";
     }
     target.draw(makeText(font, shot, 24, sf::Color::White, {20.f, 16.f}));
     target.draw(makeText(font, "wall: 4 px   bullet: 12 px   faint boxes: where each step ended",
@@ -309,8 +309,9 @@ void PaperLevel::renderDebug(hitbox::DebugRenderer& debug) const
         // long enough to tunnel.
         debug.box(bullet->getLastSweptArea(),
                   bullet->couldTunnel() ? warningColor : hitbox::DebugRenderer::hintColor);
-        debug.box(bullet->getCollisionBox(), bullet->hitTheWall() ? hitbox::DebugRenderer::touchingColor
-                                                                  : hitbox::DebugRenderer::freeColor);
+        debug.box(bullet->getCollisionBox(), bullet->hitTheWall()
+                                                 ? hitbox::DebugRenderer::touchingColor
+                                                 : hitbox::DebugRenderer::freeColor);
     }
 }
 
@@ -321,8 +322,8 @@ std::string PaperLevel::getHelpText() const
 
 std::string PaperLevel::describeState() const
 {
-    return std::to_string(shotsFired) + " shots | discrete: " +
-           std::to_string(discreteScore.hits) + " hits " + std::to_string(discreteScore.misses) +
+    return std::to_string(shotsFired) + " shots | discrete: " + std::to_string(discreteScore.hits) +
+           " hits " + std::to_string(discreteScore.misses) +
            " misses | swept: " + std::to_string(sweptScore.hits) + " hits " +
            std::to_string(sweptScore.misses) + " misses";
 }
