@@ -1,0 +1,83 @@
+#include "Sat.h"
+
+#include "hitbox/geometry/VectorMath.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace
+{
+// The unit normals of a polygon's edges: the axes its edges could be separated along.
+std::vector<sf::Vector2f> edgeNormals(const hitbox::Polygon& polygon)
+{
+    std::vector<sf::Vector2f> normals;
+    const std::size_t count = polygon.points.size();
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const sf::Vector2f edge = polygon.points[(i + 1) % count] - polygon.points[i];
+        if (edge != sf::Vector2f{})
+            normals.push_back(hitbox::unitOr(hitbox::perpendicular(edge), {1.f, 0.f}));
+    }
+    return normals;
+}
+} // namespace
+
+Shadow projectOnto(const hitbox::Polygon& polygon, sf::Vector2f axis)
+{
+    // BEGIN TASK 1: the shadow of the polygon on the axis
+    // Each corner lands at dot(corner, axis) along the axis; the shadow runs from the
+    // smallest to the largest of those.
+    Shadow shadow;
+    for (std::size_t i = 0; i < polygon.points.size(); ++i)
+    {
+        const float along = hitbox::dot(polygon.points[i], axis);
+        if (i == 0 || along < shadow.min)
+            shadow.min = along;
+        if (i == 0 || along > shadow.max)
+            shadow.max = along;
+    }
+    return shadow;
+    // STARTER TASK 1
+    // static_cast<void>(polygon); // (these two lines only keep the compiler quiet:
+    // static_cast<void>(axis);    //  delete them when you write the projection)
+    // return Shadow{};
+    // END TASK 1
+}
+
+// [slide:lab06-sat-draw]
+SatResult separatingAxisTest(const hitbox::Polygon& a, const hitbox::Polygon& b)
+{
+    std::vector<sf::Vector2f> axes = edgeNormals(a);
+    const std::vector<sf::Vector2f> axesOfB = edgeNormals(b);
+    axes.insert(axes.end(), axesOfB.begin(), axesOfB.end());
+
+    SatResult result;
+    // BEGIN TASK 2: try every axis; keep the largest gap, or the least overlap
+    bool first = true;
+    bool anyGap = false;
+    for (const sf::Vector2f& axis : axes)
+    {
+        const Shadow shadowA = projectOnto(a, axis);
+        const Shadow shadowB = projectOnto(b, axis);
+        // The two ways out along this axis: A forwards past B's end, or backwards past its
+        // start. The shorter one is this axis's overlap.
+        const float forwards = shadowB.max - shadowA.min;
+        const float backwards = shadowA.max - shadowB.min;
+        const float overlap = std::min(forwards, backwards);
+        const sf::Vector2f outOfB = forwards < backwards ? axis : -axis;
+        const float gap = -overlap;
+        if (gap >= 0.f)
+        {
+            // A line fits between the shadows: separated. Report the widest gap.
+            if (!anyGap || gap > result.gap)
+                result = {true, outOfB, gap};
+            anyGap = true;
+        }
+        else if (!anyGap && (first || gap > result.gap))
+            result = {false, outOfB, gap}; // the least overlap so far
+        first = false;
+    }
+    // END TASK 2
+    return result;
+}
+// [/slide]
