@@ -12,8 +12,8 @@
 #include <SFML/Graphics/VertexArray.hpp>
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
+#include <utility>
 
 namespace
 {
@@ -53,8 +53,8 @@ std::vector<sf::FloatRect> labField()
     std::vector<sf::FloatRect> field = {
         {0.f, 40.f, 40.f, 600.f},   // left border
         {40.f, 40.f, 1120.f, 20.f}, // top border
-        {230.f, 170.f, 120.f, 80.f},  {470.f, 120.f, 60.f, 180.f}, {700.f, 190.f, 160.f, 50.f},
-        {330.f, 360.f, 90.f, 90.f},   {600.f, 400.f, 200.f, 30.f}, {900.f, 330.f, 60.f, 120.f},
+        {230.f, 170.f, 120.f, 80.f}, {470.f, 120.f, 60.f, 180.f}, {700.f, 190.f, 160.f, 50.f},
+        {330.f, 360.f, 90.f, 90.f},  {600.f, 400.f, 200.f, 30.f}, {900.f, 330.f, 60.f, 120.f},
     };
     // Floor tiles, stored left to right as a level file would list them.
     for (float x = 40.f; x < 1120.f; x += tileSize)
@@ -66,9 +66,7 @@ std::vector<sf::FloatRect> labField()
 }
 } // namespace
 
-RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f})
-{
-}
+RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f}) {}
 
 RayLevel::RayLevel(std::vector<sf::FloatRect> solidBoxes, sf::Vector2f playerStart)
     : solids(std::move(solidBoxes)), mouse(760.f, 110.f), font(hitbox::loadFont())
@@ -178,7 +176,8 @@ void RayLevel::movePlayer(float dt)
     lastHits.clear();
     for (std::size_t i = 0; i < solids.size(); ++i)
     {
-        const hitbox::Hit hit = hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[i]);
+        const hitbox::Hit hit =
+            hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[i]);
         if (hit)
             lastHits.push_back({i, hit.time});
     }
@@ -248,8 +247,8 @@ void RayLevel::render(sf::RenderTarget& target) const
         box.setPosition(solids[i].left, solids[i].top);
         const bool isTile = i >= firstTile;
         box.setFillColor(static_cast<int>(i) == ray.boxIndex ? sf::Color(120, 80, 110)
-                         : isTile                           ? tileColor
-                                                            : solidColor);
+                         : isTile                            ? tileColor
+                                                             : solidColor);
         if (isTile)
         {
             // Draw the seams: the floor is many boxes, not one.
@@ -317,6 +316,6 @@ std::string RayLevel::describeState() const
 {
     const sf::Vector2f position = player.getPosition();
     return "player at (" + std::to_string(std::lround(position.x)) + ", " +
-           std::to_string(std::lround(position.y)) + "), time order " +
-           (timeOrder ? "on" : "off") + ", ray " + (ray.hit ? "hits box " + std::to_string(ray.boxIndex) : "hits nothing");
+           std::to_string(std::lround(position.y)) + "), time order " + (timeOrder ? "on" : "off") +
+           ", ray " + (ray.hit ? "hits box " + std::to_string(ray.boxIndex) : "hits nothing");
 }

@@ -78,7 +78,7 @@ private:
     sf::Vector2f lastMouseReading;
     RayHit ray;
     std::vector<SolidHit> lastHits;
-    bool stuck = false; // wanted to move this step but hardly moved
+    bool stuck = false;              // wanted to move this step but hardly moved
     std::vector<sf::Vector2f> trail; // where the player has been, for the picture
     sf::Font font;
 };

@@ -35,8 +35,8 @@ std::vector<Ball> rackedBalls()
     std::vector<Ball> rack;
     // Ball 0: the cue ball, on its way to the rack at break speed.
     rack.push_back({{{300.f, 350.f}, ballRadius}, {6000.f, 0.f}, sf::Color::White});
-    const sf::Color colors[] = {{250, 200, 40}, {40, 90, 220},  {220, 50, 50}, {120, 50, 160},
-                                {250, 130, 30}, {30, 150, 80},  {130, 40, 40}, {30, 30, 30},
+    const sf::Color colors[] = {{250, 200, 40}, {40, 90, 220}, {220, 50, 50}, {120, 50, 160},
+                                {250, 130, 30}, {30, 150, 80}, {130, 40, 40}, {30, 30, 30},
                                 {250, 200, 40}, {40, 90, 220}};
     // A loose triangle: 10 px gaps, so the break spreads the balls instead of passing the
     // whole push down a tight chain to the back row (what ideal elastic balls would do).
@@ -58,9 +58,7 @@ float lengthSquared(sf::Vector2f vector)
 }
 } // namespace
 
-PoolLevel::PoolLevel() : PoolLevel(rackedBalls(), labTable)
-{
-}
+PoolLevel::PoolLevel() : PoolLevel(rackedBalls(), labTable) {}
 
 PoolLevel::PoolLevel(std::vector<Ball> startBalls, sf::FloatRect playingArea)
     : balls(std::move(startBalls)), table(playingArea), mouse(900.f, 350.f),
@@ -68,10 +66,10 @@ PoolLevel::PoolLevel(std::vector<Ball> startBalls, sf::FloatRect playingArea)
 {
     const float t = cushionThickness;
     cushions = {
-        {table.left - t, table.top - t, table.width + 2.f * t, t},      // top
+        {table.left - t, table.top - t, table.width + 2.f * t, t},            // top
         {table.left - t, table.top + table.height, table.width + 2.f * t, t}, // bottom
-        {table.left - t, table.top, t, table.height},                    // left
-        {table.left + table.width, table.top, t, table.height},          // right
+        {table.left - t, table.top, t, table.height},                         // left
+        {table.left + table.width, table.top, t, table.height},               // right
     };
     if (!balls.empty())
         cueTrail.push_back(balls[0].shape.center);
@@ -191,9 +189,8 @@ void PoolLevel::stepSwept(float dt)
 }
 // [/slide]
 
-std::pair<sf::Vector2f, sf::Vector2f> PoolLevel::bounceBalls(sf::Vector2f first,
-                                                             sf::Vector2f second,
-                                                             sf::Vector2f normal)
+std::pair<sf::Vector2f, sf::Vector2f>
+PoolLevel::bounceBalls(sf::Vector2f first, sf::Vector2f second, sf::Vector2f normal)
 {
     // BEGIN TASK 2: equal balls swap their speeds along the normal
     // Only the part of the velocity along the line between the centres changes; equal
@@ -326,8 +323,9 @@ void PoolLevel::render(sf::RenderTarget& target) const
     float fastest = 0.f;
     for (const Ball& ball : balls)
         fastest = std::fmax(fastest, hitbox::lengthOf(ball.velocity));
-    const std::string mode = swept ? "TIME OF IMPACT: first collision first, then the rest of the step"
-                                   : "DISCRETE: move, then look for overlaps (press D)";
+    const std::string mode =
+        swept ? "TIME OF IMPACT: first collision first, then the rest of the step"
+              : "DISCRETE: move, then look for overlaps (press D)";
     sf::Text title(mode, font, 22);
     title.setFillColor(swept ? sf::Color(140, 240, 160) : sf::Color(255, 110, 90));
     title.setPosition(20.f, 14.f);
@@ -335,11 +333,10 @@ void PoolLevel::render(sf::RenderTarget& target) const
     const long perStep = std::lround(fastest / 120.f);
     sf::Text speed("fastest ball: " + std::to_string(perStep) + " px per step (a ball is " +
                        std::to_string(std::lround(2.f * ballRadius)) +
-                       " px wide)   next shot: " + std::to_string(std::lround(shotSpeed)) +
-                       " px/s",
+                       " px wide)   next shot: " + std::to_string(std::lround(shotSpeed)) + " px/s",
                    font, 16);
     speed.setFillColor(perStep > 2.f * ballRadius ? sf::Color(255, 170, 60)
-                                                   : sf::Color(200, 200, 200));
+                                                  : sf::Color(200, 200, 200));
     speed.setPosition(20.f, 44.f);
     target.draw(speed);
     sf::Text legend("white dots: the cue ball after each step   yellow rings: balls at the "
@@ -358,7 +355,8 @@ void PoolLevel::renderDebug(hitbox::DebugRenderer& debug) const
     {
         debug.circle(ball.shape, hitbox::DebugRenderer::freeColor);
         // Where the ball will be in four steps.
-        debug.arrow(ball.shape.center, ball.shape.center + ball.velocity * (4.f * hitbox::stepSeconds),
+        debug.arrow(ball.shape.center,
+                    ball.shape.center + ball.velocity * (4.f * hitbox::stepSeconds),
                     hitbox::DebugRenderer::velocityColor);
     }
     for (const Impact& impact : impacts)

@@ -56,9 +56,8 @@ public:
     BallEvent findFirstEvent(float seconds) const;
     // Task 2: the velocities of two equal balls after they bump along `normal` (unit, out of
     // the second towards the first). Returns {first, second}.
-    static std::pair<sf::Vector2f, sf::Vector2f> bounceBalls(sf::Vector2f first,
-                                                             sf::Vector2f second,
-                                                             sf::Vector2f normal);
+    static std::pair<sf::Vector2f, sf::Vector2f>
+    bounceBalls(sf::Vector2f first, sf::Vector2f second, sf::Vector2f normal);
 
     // A sweep's hit is a new collision unless the two already overlap and are moving apart
     // (`relativeVelocity`: the mover's velocity minus the target's).

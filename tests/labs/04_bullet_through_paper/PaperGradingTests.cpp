@@ -27,8 +27,8 @@ PaperLevel shootOnce(float speed)
     return level;
 }
 
-const std::vector<float> risingSpeeds = {300.f,   600.f,    1500.f,    1920.f,  2500.f,
-                                         7000.f,  33333.f,  100000.f,  456789.f, 1000000.f};
+const std::vector<float> risingSpeeds = {300.f,  600.f,   1500.f,   1920.f,   2500.f,
+                                         7000.f, 33333.f, 100000.f, 456789.f, 1000000.f};
 
 } // namespace
 

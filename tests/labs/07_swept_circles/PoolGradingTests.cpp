@@ -46,9 +46,9 @@ bool anyTwoBallsOverlap(const PoolLevel& level)
 TEST(Task1TimeOfImpact, FindsTheFirstOfTwoBallsInTheWay)
 {
     // The nearer ball (index 2) is listed last: the earliest time must win, not list order.
-    PoolLevel level({ballAt({100.f, 500.f}, {6000.f, 0.f}), ballAt({400.f, 500.f}),
-                     ballAt({250.f, 500.f})},
-                    bigTable);
+    PoolLevel level(
+        {ballAt({100.f, 500.f}, {6000.f, 0.f}), ballAt({400.f, 500.f}), ballAt({250.f, 500.f})},
+        bigTable);
     const BallEvent event = level.findFirstEvent(0.1f); // a 600 px move
     ASSERT_TRUE(event.hit);
     EXPECT_EQ(event.first, 0u);
@@ -101,8 +101,7 @@ TEST(Task2ElasticBounce, AGlancingHitSendsTheBallsOffAtRightAngles)
 {
     // Struck at 45 degrees: the cue ball keeps the part along the surface.
     const float half = 1.f / std::sqrt(2.f);
-    const auto [first, second] =
-        PoolLevel::bounceBalls({400.f, 0.f}, {0.f, 0.f}, {-half, half});
+    const auto [first, second] = PoolLevel::bounceBalls({400.f, 0.f}, {0.f, 0.f}, {-half, half});
     EXPECT_NEAR(hitbox::dot(first, second), 0.f, 1e-2f);
     EXPECT_NEAR(first.x, 200.f, 1e-3f);
     EXPECT_NEAR(first.y, 200.f, 1e-3f);
