@@ -115,9 +115,7 @@ hitbox::Capsule Shape::capsule() const
     return {body.center - half, body.center + half, body.halfSize.y};
 }
 
-RotatedLevel::RotatedLevel() : RotatedLevel(labShapes())
-{
-}
+RotatedLevel::RotatedLevel() : RotatedLevel(labShapes()) {}
 
 RotatedLevel::RotatedLevel(std::vector<Shape> startShapes)
     : shapes(std::move(startShapes)), overlapping(shapes.size(), false), font(hitbox::loadFont())
@@ -324,7 +322,8 @@ void RotatedLevel::render(sf::RenderTarget& target) const
         // wrong. The separating line sits at right angles to the axis, in the middle of the gap.
         if (view.overlapping || !view.boundsOverlap || !view.hasShadows)
             continue;
-        const sf::Vector2f middle = (shapes[held].body.center + shapes[view.other].body.center) / 2.f;
+        const sf::Vector2f middle =
+            (shapes[held].body.center + shapes[view.other].body.center) / 2.f;
         const float gapMiddle = (std::fmax(view.heldShadow.min, view.otherShadow.min) +
                                  std::fmin(view.heldShadow.max, view.otherShadow.max)) /
                                 2.f;
@@ -393,8 +392,8 @@ void RotatedLevel::renderDebug(hitbox::DebugRenderer& debug) const
         }
         debug.box(boundsOf(shapes[i]), hitbox::DebugRenderer::hintColor);
         outline = shapes[i].polygon();
-        const sf::Color color =
-            overlapping[i] ? hitbox::DebugRenderer::touchingColor : hitbox::DebugRenderer::freeColor;
+        const sf::Color color = overlapping[i] ? hitbox::DebugRenderer::touchingColor
+                                               : hitbox::DebugRenderer::freeColor;
         for (std::size_t p = 0; p < outline.points.size(); ++p)
             debug.line(outline.points[p], outline.points[(p + 1) % outline.points.size()], color);
     }

@@ -23,8 +23,8 @@ struct Shape
     hitbox::OrientedBox body;
     bool isCapsule = false;
 
-    hitbox::Polygon polygon() const;  // boxes only
-    hitbox::Capsule capsule() const;  // capsules only
+    hitbox::Polygon polygon() const; // boxes only
+    hitbox::Capsule capsule() const; // capsules only
 };
 
 // How the held shape meets one other shape this step.
@@ -32,11 +32,11 @@ struct PairView
 {
     std::size_t other = 0;
     bool overlapping = false;
-    sf::Vector2f axis;         // separating axis, or the MTV direction (out of `other`)
-    float gap = 0.f;           // > = 0 when apart, -depth when overlapping
+    sf::Vector2f axis;          // separating axis, or the MTV direction (out of `other`)
+    float gap = 0.f;            // > = 0 when apart, -depth when overlapping
     bool boundsOverlap = false; // their axis-aligned bounding boxes overlap
-    bool hasShadows = false;   // box vs box: the shadows below can be drawn
-    Shadow heldShadow;         // the held shape's shadow on `axis`
+    bool hasShadows = false;    // box vs box: the shadows below can be drawn
+    Shadow heldShadow;          // the held shape's shadow on `axis`
     Shadow otherShadow;
 };
 

@@ -96,10 +96,10 @@ TEST(Task2SeparatingAxis, AgreesWithTheFrameworkOnThousandsOfRandomBoxes)
     int overlaps = 0;
     for (int i = 0; i < 5000; ++i)
     {
-        const hitbox::Polygon a = box({position(random), position(random)},
-                                      {half(random), half(random)}, angle(random));
-        const hitbox::Polygon b = box({position(random), position(random)},
-                                      {half(random), half(random)}, angle(random));
+        const hitbox::Polygon a =
+            box({position(random), position(random)}, {half(random), half(random)}, angle(random));
+        const hitbox::Polygon b =
+            box({position(random), position(random)}, {half(random), half(random)}, angle(random));
         const SatResult mine = separatingAxisTest(a, b);
         const hitbox::Contact reference = hitbox::polygonVsPolygon(a, b);
         // Near-touching pairs can go either way by a rounding error: skip them.
