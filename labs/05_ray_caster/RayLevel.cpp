@@ -203,15 +203,15 @@ void RayLevel::movePlayer(float dt)
     for (const SolidHit& candidate : lastHits)
     {
         // Sweep again: the responses so far may already have steered the player clear.
-        const hitbox::Hit hit =
+        const hitbox::Hit now =
             hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[candidate.index]);
-        if (!hit)
+        if (!now)
             continue;
-        if (hit.startedInside)
-            player.move(hit.normal * hit.depth); // push out first (never happens in this lab)
-        const float into = dot(velocity, hit.normal);
+        if (now.startedInside) // already overlapping: push out first
+            player.move(now.normal * now.depth);
+        const float into = dot(velocity, now.normal);
         if (into < 0.f)
-            velocity -= hit.normal * into * (1.f - hit.time); // keep only the part up to the touch
+            velocity -= now.normal * into * (1.f - now.time); // keep only the part up to the touch
     }
     // END TASK 2
     player.move(velocity * dt);

@@ -27,16 +27,16 @@ Shadow projectOnto(const hitbox::Polygon& polygon, sf::Vector2f axis)
     // BEGIN TASK 1: the shadow of the polygon on the axis
     // Each corner lands at dot(corner, axis) along the axis; the shadow runs from the
     // smallest to the largest of those.
-    Shadow shadow;
+    Shadow onAxis;
     for (std::size_t i = 0; i < polygon.points.size(); ++i)
     {
         const float along = hitbox::dot(polygon.points[i], axis);
-        if (i == 0 || along < shadow.min)
-            shadow.min = along;
-        if (i == 0 || along > shadow.max)
-            shadow.max = along;
+        if (i == 0 || along < onAxis.min)
+            onAxis.min = along;
+        if (i == 0 || along > onAxis.max)
+            onAxis.max = along;
     }
-    return shadow;
+    return onAxis;
     // STARTER TASK 1
     // static_cast<void>(polygon); // (these two lines only keep the compiler quiet:
     // static_cast<void>(axis);    //  delete them when you write the projection)

@@ -67,8 +67,8 @@ TEST(Task2SweptTest, BulletAtAnySpeedStopsExactlyTouchingTheWall)
         const PaperLevel level = shootOnce(speed);
         const Bullet& bullet = *level.getBullet(Lane::Swept);
         EXPECT_TRUE(bullet.hitTheWall()) << "at " << speed << " px/s";
-        const sf::FloatRect box = bullet.getCollisionBox();
-        EXPECT_NEAR(box.left + box.width, level.getWall().left, 0.01f) << "at " << speed;
+        const sf::FloatRect stopped = bullet.getCollisionBox();
+        EXPECT_NEAR(stopped.left + stopped.width, level.getWall().left, 0.01f) << "at " << speed;
         EXPECT_EQ(level.getScore(Lane::Swept).misses, 0) << "at " << speed << " px/s";
     }
 }
