@@ -146,12 +146,12 @@ BallEvent PoolLevel::findFirstEvent(float seconds) const
     for (std::size_t a = 0; a < balls.size(); ++a)
         for (std::size_t b = a + 1; b < balls.size(); ++b)
         {
-            const hitbox::Hit hit =
+            const hitbox::Hit meeting =
                 hitbox::sweepCircleVsMovingCircle(balls[a].shape, balls[a].velocity * seconds,
                                                   balls[b].shape, balls[b].velocity * seconds);
             const sf::Vector2f closing = balls[a].velocity - balls[b].velocity;
-            if (isNewCollision(hit, closing) && hit.time < first.time)
-                first = {true, hit.time, a, b, -1, hit.normal};
+            if (isNewCollision(meeting, closing) && meeting.time < first.time)
+                first = {true, meeting.time, a, b, -1, meeting.normal};
         }
     // STARTER TASK 1
     // static_cast<void>(seconds); // (only keeps the compiler quiet: delete it)
@@ -160,10 +160,10 @@ BallEvent PoolLevel::findFirstEvent(float seconds) const
     for (std::size_t a = 0; a < balls.size(); ++a)
         for (std::size_t c = 0; c < cushions.size(); ++c)
         {
-            const hitbox::Hit hit =
+            const hitbox::Hit bump =
                 hitbox::sweepCircleVsBox(balls[a].shape, balls[a].velocity * seconds, cushions[c]);
-            if (isNewCollision(hit, balls[a].velocity) && hit.time < first.time)
-                first = {true, hit.time, a, a, static_cast<int>(c), hit.normal};
+            if (isNewCollision(bump, balls[a].velocity) && bump.time < first.time)
+                first = {true, bump.time, a, a, static_cast<int>(c), bump.normal};
         }
     // END TASK 3
     return first;
