@@ -73,8 +73,8 @@ sf::Vector2f edgeAxis(sf::Vector2f from, sf::Vector2f to)
 struct AxisOverlap
 {
     bool apart;
-    float overlap;          // pixels; minus the gap when apart
-    sf::Vector2f towardsA;  // unit: the way to move A (from B's side to A's side)
+    float overlap;         // pixels; minus the gap when apart
+    sf::Vector2f towardsA; // unit: the way to move A (from B's side to A's side)
 };
 
 AxisOverlap overlapOnAxis(const std::vector<sf::Vector2f>& a, const std::vector<sf::Vector2f>& b,
@@ -186,9 +186,9 @@ Polygon toPolygon(const OrientedBox& box)
     const float halfWidth = std::fabs(box.halfSize.x);
     const float halfHeight = std::fabs(box.halfSize.y);
     Polygon polygon;
-    for (sf::Vector2f corner : {sf::Vector2f(-halfWidth, -halfHeight),
-                                sf::Vector2f(-halfWidth, halfHeight), sf::Vector2f(halfWidth, halfHeight),
-                                sf::Vector2f(halfWidth, -halfHeight)})
+    for (sf::Vector2f corner :
+         {sf::Vector2f(-halfWidth, -halfHeight), sf::Vector2f(-halfWidth, halfHeight),
+          sf::Vector2f(halfWidth, halfHeight), sf::Vector2f(halfWidth, -halfHeight)})
     {
         // The rotation sf::Transform::rotate uses: clockwise on screen for a positive angle.
         const sf::Vector2f turned(corner.x * cosSin.x - corner.y * cosSin.y,
@@ -201,7 +201,8 @@ Polygon toPolygon(const OrientedBox& box)
 Polygon toPolygon(const sf::FloatRect& box)
 {
     const sf::FloatRect b = normalised(box);
-    return Polygon{{{b.left, b.top}, {b.left, bottomOf(b)}, {rightOf(b), bottomOf(b)}, {rightOf(b), b.top}}};
+    return Polygon{
+        {{b.left, b.top}, {b.left, bottomOf(b)}, {rightOf(b), bottomOf(b)}, {rightOf(b), b.top}}};
 }
 
 float twiceSignedArea(const Polygon& polygon)
@@ -322,9 +323,9 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
     {
         const sf::Vector2f edge = points[(i + 1) % points.size()] - points[i];
         // Outward normal: the inner side is where cross(edge, p) * area > 0.
-        const sf::Vector2f outward = unitOr(area > 0.f ? sf::Vector2f(edge.y, -edge.x)
-                                                       : sf::Vector2f(-edge.y, edge.x),
-                                            {-1.f, 0.f});
+        const sf::Vector2f outward =
+            unitOr(area > 0.f ? sf::Vector2f(edge.y, -edge.x) : sf::Vector2f(-edge.y, edge.x),
+                   {-1.f, 0.f});
         const float toEdge = -dot(circle.center - points[i], outward);
         if (nearest < 0.f || toEdge < nearest)
         {

@@ -85,7 +85,8 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
         //    the next tile's corner, so the seam between tiles never stops the box.
         if (sortByTime)
             std::stable_sort(candidates.begin(), candidates.end(),
-                             [](const Candidate& a, const Candidate& b) { return a.time < b.time; });
+                             [](const Candidate& a, const Candidate& b)
+                             { return a.time < b.time; });
         // 3. Resolve in that order, sweeping again with the velocity as changed so far.
         for (const Candidate& candidate : candidates)
         {
@@ -93,7 +94,8 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
             if (!hit.hit)
                 continue; // an earlier slide already took this one away
             if (hit.startedInside)
-                result.box = placedAgainst(result.box, normalised(solids[candidate.solid]), hit.normal);
+                result.box =
+                    placedAgainst(result.box, normalised(solids[candidate.solid]), hit.normal);
             stepVelocity = slideVelocity(stepVelocity, hit);
             result.velocity = withoutPartInto(result.velocity, hit.normal);
             result.hits.push_back(hit);
@@ -151,7 +153,8 @@ MoveResult moveBoxPerAxis(const sf::FloatRect& box, sf::Vector2f velocity, float
                 result.velocity.y = normal.y != 0.f ? 0.f : result.velocity.y;
             Hit hit;
             hit.hit = true;
-            const float kept = axis == 0 ? result.box.left - before.left : result.box.top - before.top;
+            const float kept =
+                axis == 0 ? result.box.left - before.left : result.box.top - before.top;
             hit.time = step != 0.f ? std::fmin(std::fmax(kept / step, 0.f), 1.f) : 0.f;
             hit.normal = normal;
             hit.depth = overlap.depth;

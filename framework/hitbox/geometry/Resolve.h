@@ -26,9 +26,9 @@ namespace hitbox
 
 struct MoveResult
 {
-    sf::FloatRect box;      // where the mover ends up
-    sf::Vector2f velocity;  // the velocity to keep: the parts into each surface hit removed
-    std::vector<Hit> hits;  // the hits resolved, in the order they were resolved
+    sf::FloatRect box;     // where the mover ends up
+    sf::Vector2f velocity; // the velocity to keep: the parts into each surface hit removed
+    std::vector<Hit> hits; // the hits resolved, in the order they were resolved
 };
 
 // Sweeps `box` by velocity * dt against every solid and slides (Response.h's slideVelocity)

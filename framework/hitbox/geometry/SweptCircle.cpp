@@ -118,9 +118,9 @@ Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::F
     const Hit tall = segmentVsBox(start, end, {b.left, b.top - r, b.width, b.height + 2.f * r});
     if (tall.hit && (!best.hit || tall.time < best.time))
         best = tall;
-    for (sf::Vector2f corner : {sf::Vector2f(b.left, b.top), sf::Vector2f(rightOf(b), b.top),
-                                sf::Vector2f(b.left, bottomOf(b)),
-                                sf::Vector2f(rightOf(b), bottomOf(b))})
+    for (sf::Vector2f corner :
+         {sf::Vector2f(b.left, b.top), sf::Vector2f(rightOf(b), b.top),
+          sf::Vector2f(b.left, bottomOf(b)), sf::Vector2f(rightOf(b), bottomOf(b))})
     {
         const Hit round = castAgainstCircle(start, displacement, Circle{corner, r});
         if (round.hit && (!best.hit || round.time < best.time)) // ties: the face wins

@@ -27,14 +27,15 @@ bool isUsable(const Circle& circle)
 
 sf::FloatRect boundsOf(const Circle& circle)
 {
-    return {circle.center.x - circle.radius, circle.center.y - circle.radius,
-            2.f * circle.radius, 2.f * circle.radius};
+    return {circle.center.x - circle.radius, circle.center.y - circle.radius, 2.f * circle.radius,
+            2.f * circle.radius};
 }
 
 } // namespace
 
 // [slide:tunnelling-check]
-bool canTunnel(const sf::FloatRect& moverBox, sf::Vector2f displacement, const sf::FloatRect& targetBox)
+bool canTunnel(const sf::FloatRect& moverBox, sf::Vector2f displacement,
+               const sf::FloatRect& targetBox)
 {
     if (!isFinite(moverBox) || !isFinite(displacement) || !isFinite(targetBox))
         return false;
@@ -76,8 +77,8 @@ bool discreteTestMisses(const sf::FloatRect& mover, sf::Vector2f displacement,
 bool discreteTestMisses(const Circle& mover, sf::Vector2f displacement, const Circle& target)
 {
     const Circle moved{mover.center + displacement, mover.radius};
-    return sweepCircleVsCircle(mover, displacement, target).hit &&
-           !circleVsCircle(mover, target) && !circleVsCircle(moved, target);
+    return sweepCircleVsCircle(mover, displacement, target).hit && !circleVsCircle(mover, target) &&
+           !circleVsCircle(moved, target);
 }
 
 sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement)
