@@ -42,10 +42,12 @@ struct Tally
 
 // Records a disagreement; only the first few are printed, so a broken function does not
 // bury the log under 10^5 messages.
-inline void fail(Tally& tally, const std::string& what, const std::string& scene)
+// `scene` describes the case; it is a function so that the text is only built on failure.
+template <class Scene>
+void fail(Tally& tally, const std::string& what, const Scene& scene)
 {
     if (++tally.failures <= 5)
-        ADD_FAILURE() << what << "\n  case: " << scene;
+        ADD_FAILURE() << what << "\n  case: " << scene();
 }
 
 template <class T>
@@ -111,7 +113,8 @@ struct RandomCases
         if (kind < 0.15)
             return {value(-2, 2), value(-2, 2)};
         if (kind < 0.30)
-            return chance(0.5) ? sf::Vector2f(value(-300, 300), 0.f) : sf::Vector2f(0.f, value(-300, 300));
+            return chance(0.5) ? sf::Vector2f(value(-300, 300), 0.f)
+                               : sf::Vector2f(0.f, value(-300, 300));
         if (kind < 0.40)
         {
             // Up to 10^6 px/s at 120 steps a second.
@@ -127,30 +130,38 @@ struct RandomCases
 // ---- sweeps against the brute-force walk -------------------------------------------------
 
 // `depthAt(time, offset)`: the reference depth with the mover at `time`, moved by `offset`.
-template <class DepthAt>
+template <class DepthAt, class Scene>
 void judgeSweep(Tally& tally, const hitbox::Hit& hit, DepthAt depthAt, double speed,
-                const std::string& scene)
+                const Scene& scene)
 {
     using reference::Point;
     ++tally.cases;
-    const reference::Walk walk =
-        reference::walkAlong([&](double s) { return depthAt(s, Point{0, 0}); }, speed, tolerance);
+    const reference::Walk walk = reference::walkAlong(
+        [&](double s) {
+            return depthAt(s, Point{0, 0});
+        },
+        speed, tolerance);
     if (!walk.hits)
     {
         if (!walk.misses)
             ++tally.ambiguous;
         else if (hit.hit)
-            fail(tally, "the sweep hits, the brute force never overlaps", scene + "\n  got " + show(hit.time));
+            fail(tally, "the sweep hits at " + show(hit.time) + ", the brute force never overlaps",
+                 scene);
         return;
     }
     ++tally.hits;
     if (!hit.hit)
-        return fail(tally, "the sweep misses, the brute force overlaps at time " + show(walk.firstHit), scene);
+        return fail(tally,
+                    "the sweep misses, the brute force overlaps at time " + show(walk.firstHit),
+                    scene);
     const double atTolerance = tolerance + 1e-7 * speed;
     if (std::fabs(std::hypot(hit.normal.x, hit.normal.y) - 1.0) > 1e-4)
         fail(tally, "the normal is not a unit vector", scene);
     if (hit.time > walk.firstHit + 1e-6)
-        fail(tally, "time of impact " + show(hit.time) + " after the first overlap " + show(walk.firstHit), scene);
+        fail(tally,
+             "time of impact " + show(hit.time) + " after the first overlap " + show(walk.firstHit),
+             scene);
     const Point normal{hit.normal.x, hit.normal.y};
     if (hit.startedInside)
     {
@@ -191,14 +202,22 @@ inline Tally sweptCircles(long cases, unsigned seed)
         else
             hit = hitbox::sweepCircleVsCircle(mover, move, target);
         // Independent: both centres walk along their own moves.
-        const auto depthAt = [&](double s, Point offset) {
-            const Point moverAt = reference::toPoint(mover.center) + reference::toPoint(move) * s + offset;
-            const Point targetAt = reference::toPoint(target.center) + reference::toPoint(targetMove) * s;
+        const auto depthAt = [&](double s, Point offset)
+        {
+            const Point moverAt =
+                reference::toPoint(mover.center) + reference::toPoint(move) * s + offset;
+            const Point targetAt =
+                reference::toPoint(target.center) + reference::toPoint(targetMove) * s;
             return reference::circlePenetration(moverAt, mover.radius, targetAt, target.radius);
         };
-        const double speed = reference::length(reference::toPoint(move) - reference::toPoint(targetMove));
+        const double speed =
+            reference::length(reference::toPoint(move) - reference::toPoint(targetMove));
         judgeSweep(tally, hit, depthAt, speed,
-                   show(mover) + " moving " + show(move) + " vs " + show(target) + " moving " + show(targetMove));
+                   [&]
+                   {
+                       return show(mover) + " moving " + show(move) + " vs " + show(target) +
+                              " moving " + show(targetMove);
+                   });
     }
     return tally;
 }
@@ -214,12 +233,14 @@ inline Tally sweptCircleVsBox(long cases, unsigned seed)
         const sf::FloatRect box = random.box();
         const sf::Vector2f move = random.displacement();
         const hitbox::Hit hit = hitbox::sweepCircleVsBox(mover, move, box);
-        const auto depthAt = [&](double s, Point offset) {
-            const Point centre = reference::toPoint(mover.center) + reference::toPoint(move) * s + offset;
+        const auto depthAt = [&](double s, Point offset)
+        {
+            const Point centre =
+                reference::toPoint(mover.center) + reference::toPoint(move) * s + offset;
             return mover.radius - reference::signedDistanceToBox(centre, box);
         };
         judgeSweep(tally, hit, depthAt, reference::length(reference::toPoint(move)),
-                   show(mover) + " moving " + show(move) + " vs " + show(box));
+                   [&] { return show(mover) + " moving " + show(move) + " vs " + show(box); });
     }
     return tally;
 }
@@ -238,13 +259,14 @@ inline Tally sweptBoxes(long cases, unsigned seed)
         const sf::FloatRect target = random.box();
         const sf::Vector2f move = random.displacement();
         const hitbox::Hit hit =
-            mover.width == 0.f ? hitbox::segmentVsBox({mover.left, mover.top}, sf::Vector2f(mover.left, mover.top) + move, target)
-                               : hitbox::sweepBoxVsBox(mover, move, target);
-        const auto depthAt = [&](double s, Point offset) {
-            return reference::boxPenetration(mover, reference::toPoint(move) * s + offset, target);
-        };
+            mover.width == 0.f
+                ? hitbox::segmentVsBox({mover.left, mover.top},
+                                       sf::Vector2f(mover.left, mover.top) + move, target)
+                : hitbox::sweepBoxVsBox(mover, move, target);
+        const auto depthAt = [&](double s, Point offset)
+        { return reference::boxPenetration(mover, reference::toPoint(move) * s + offset, target); };
         judgeSweep(tally, hit, depthAt, reference::length(reference::toPoint(move)),
-                   show(mover) + " moving " + show(move) + " vs " + show(target));
+                   [&] { return show(mover) + " moving " + show(move) + " vs " + show(target); });
     }
     return tally;
 }
@@ -271,7 +293,8 @@ inline hitbox::Polygon randomConvexPolygon(RandomCases& random, double spread)
 {
     if (random.chance(0.3))
         return hitbox::toPolygon(hitbox::OrientedBox{
-            {static_cast<float>(random.uniform(0, spread)), static_cast<float>(random.uniform(0, spread))},
+            {static_cast<float>(random.uniform(0, spread)),
+             static_cast<float>(random.uniform(0, spread))},
             {static_cast<float>(random.uniform(1, 60)), static_cast<float>(random.uniform(1, 60))},
             static_cast<float>(random.uniform(0, 360))});
     const double cx = random.uniform(0, spread);
@@ -283,7 +306,8 @@ inline hitbox::Polygon randomConvexPolygon(RandomCases& random, double spread)
     {
         const double angle = random.uniform(0, 6.283185307179586);
         const double r = size * std::sqrt(random.uniform(0, 1));
-        points.push_back({static_cast<float>(cx + r * std::cos(angle)), static_cast<float>(cy + r * std::sin(angle))});
+        points.push_back({static_cast<float>(cx + r * std::cos(angle)),
+                          static_cast<float>(cy + r * std::sin(angle))});
     }
     hitbox::Polygon polygon;
     for (auto p : reference::convexHull(points))
@@ -306,14 +330,15 @@ inline Tally polygonsWithFractions(long cases, unsigned seed)
         ++tally.cases;
         reference::Point outward{0, 0};
         double runnerUp = 0;
-        const double depth = reference::originDepth(reference::minkowskiDifference(asVecs(a), asVecs(b)), &outward, &runnerUp);
+        const double depth = reference::originDepth(
+            reference::minkowskiDifference(asVecs(a), asVecs(b)), &outward, &runnerUp);
         if (std::fabs(depth) < tolerance)
         {
             ++tally.ambiguous;
             continue;
         }
         const bool overlap = depth > 0;
-        const std::string scene = show(a) + " vs " + show(b);
+        const auto scene = [&] { return show(a) + " vs " + show(b); };
         if (reference::polygonsOverlapByEdges(asPoints(a), asPoints(b)) != overlap)
             fail(tally, "the two references disagree (test bug)", scene);
         const hitbox::Contact contact = hitbox::polygonVsPolygon(a, b);
@@ -321,7 +346,10 @@ inline Tally polygonsWithFractions(long cases, unsigned seed)
         tally.hits += overlap;
         if (contact.hit != overlap || report.separated == overlap)
         {
-            fail(tally, std::string("SAT says ") + (contact.hit ? "overlap" : "apart") + ", the references say " + (overlap ? "overlap" : "apart"), scene);
+            fail(tally,
+                 std::string("SAT says ") + (contact.hit ? "overlap" : "apart") +
+                     ", the references say " + (overlap ? "overlap" : "apart"),
+                 scene);
             continue;
         }
         if (hitbox::polygonVsPolygon(b, a).hit != overlap)
@@ -336,12 +364,16 @@ inline Tally polygonsWithFractions(long cases, unsigned seed)
         // The depth is the true minimum translation, and in the true direction when that is
         // unique: the Minkowski difference's nearest edge, seen from A's side.
         if (std::fabs(contact.depth - depth) > tolerance)
-            fail(tally, "depth " + show(contact.depth) + " but the minimum translation is " + show(depth), scene);
+            fail(tally,
+                 "depth " + show(contact.depth) + " but the minimum translation is " + show(depth),
+                 scene);
         if (report.gap != -contact.depth || report.axis != contact.normal)
             fail(tally, "the AxisReport and the Contact disagree", scene);
         if (runnerUp - depth > tolerance &&
             -(contact.normal.x * outward.x + contact.normal.y * outward.y) < 1.0 - 1e-4)
-            fail(tally, "normal " + show(contact.normal) + " is not the minimum translation direction", scene);
+            fail(tally,
+                 "normal " + show(contact.normal) + " is not the minimum translation direction",
+                 scene);
         if (std::fabs(hitbox::polygonVsPolygon(b, a).depth - contact.depth) > 1e-4)
             fail(tally, "depth not symmetric", scene);
     }
@@ -355,9 +387,8 @@ inline Tally polygonsWithWholeNumbers(long cases, unsigned seed)
     RandomCases random(seed);
     Tally tally;
     using Whole = reference::Vec<std::int64_t>;
-    const auto randomWhole = [&](int low, int high) {
-        return std::uniform_int_distribution<int>(low, high)(random.random);
-    };
+    const auto randomWhole = [&](int low, int high)
+    { return std::uniform_int_distribution<int>(low, high)(random.random); };
     for (long i = 0; i < cases && tally.failures < 20; ++i)
     {
         std::vector<Whole> hulls[2];
@@ -376,13 +407,18 @@ inline Tally polygonsWithWholeNumbers(long cases, unsigned seed)
         }
         ++tally.cases;
         const bool bothFlat = hulls[0].size() < 3 && hulls[1].size() < 3;
-        const bool overlap = !bothFlat && reference::originStrictlyInside(reference::minkowskiDifference(hulls[0], hulls[1]));
+        const bool overlap = !bothFlat && reference::originStrictlyInside(
+                                              reference::minkowskiDifference(hulls[0], hulls[1]));
         tally.hits += overlap;
-        const std::string scene = show(polygons[0]) + " vs " + show(polygons[1]);
+        const auto scene = [&] { return show(polygons[0]) + " vs " + show(polygons[1]); };
         const hitbox::Contact contact = hitbox::polygonVsPolygon(polygons[0], polygons[1]);
-        if (contact.hit != overlap || hitbox::findSeparatingAxis(polygons[0], polygons[1]).separated == overlap)
+        if (contact.hit != overlap ||
+            hitbox::findSeparatingAxis(polygons[0], polygons[1]).separated == overlap)
         {
-            fail(tally, std::string("SAT says ") + (contact.hit ? "overlap" : "apart") + ", the reference says " + (overlap ? "overlap" : "apart"), scene);
+            fail(tally,
+                 std::string("SAT says ") + (contact.hit ? "overlap" : "apart") +
+                     ", the reference says " + (overlap ? "overlap" : "apart"),
+                 scene);
             continue;
         }
         // Moving both by the same whole-number offset changes nothing (exact).
@@ -394,7 +430,8 @@ inline Tally polygonsWithWholeNumbers(long cases, unsigned seed)
         for (sf::Vector2f& p : movedB.points)
             p += offset;
         const hitbox::Contact moved = hitbox::polygonVsPolygon(movedA, movedB);
-        if (moved.hit != contact.hit || (contact.hit && std::fabs(moved.depth - contact.depth) > 1e-4))
+        if (moved.hit != contact.hit ||
+            (contact.hit && std::fabs(moved.depth - contact.depth) > 1e-4))
             fail(tally, "moving both shapes changed the answer", scene);
         if (hitbox::polygonVsPolygon(polygons[1], polygons[0]).hit != overlap)
             fail(tally, "not symmetric", scene);
@@ -408,7 +445,10 @@ inline Tally polygonsWithWholeNumbers(long cases, unsigned seed)
                 b.push_back({double(p.x), double(p.y)});
             const double depth = reference::originDepth(reference::minkowskiDifference(a, b));
             if (std::fabs(contact.depth - depth) > 1e-4)
-                fail(tally, "depth " + show(contact.depth) + " but the minimum translation is " + show(depth), scene);
+                fail(tally,
+                     "depth " + show(contact.depth) + " but the minimum translation is " +
+                         show(depth),
+                     scene);
         }
     }
     return tally;
@@ -420,15 +460,17 @@ inline hitbox::Capsule randomCapsule(RandomCases& random, bool allowZeroRadius)
 {
     hitbox::Capsule capsule;
     capsule.start = {random.value(0, 300), random.value(0, 300)};
-    capsule.end = random.chance(0.1) ? capsule.start : capsule.start + sf::Vector2f(random.value(-150, 150), random.value(-150, 150));
+    capsule.end = random.chance(0.1) ? capsule.start
+                                     : capsule.start + sf::Vector2f(random.value(-150, 150),
+                                                                    random.value(-150, 150));
     capsule.radius = allowZeroRadius && random.chance(0.05) ? 0.f : random.value(1, 40);
     return capsule;
 }
 
 // Judges one capsule contact against the reference distance between the cores.
-template <class DistanceAfterMove>
+template <class DistanceAfterMove, class Scene>
 void judgeCapsule(Tally& tally, const hitbox::Contact& contact, double radii, double coreDistance,
-                  DistanceAfterMove distanceAfter, const std::string& scene)
+                  DistanceAfterMove distanceAfter, const Scene& scene)
 {
     ++tally.cases;
     const double margin = radii - coreDistance;
@@ -440,7 +482,10 @@ void judgeCapsule(Tally& tally, const hitbox::Contact& contact, double radii, do
     const bool overlap = margin > 0;
     tally.hits += overlap;
     if (contact.hit != overlap)
-        return fail(tally, std::string("says ") + (contact.hit ? "overlap" : "apart") + ", the reference says " + (overlap ? "overlap" : "apart"), scene);
+        return fail(tally,
+                    std::string("says ") + (contact.hit ? "overlap" : "apart") +
+                        ", the reference says " + (overlap ? "overlap" : "apart"),
+                    scene);
     if (!overlap)
         return;
     if (std::fabs(std::hypot(contact.normal.x, contact.normal.y) - 1.0) > 1e-4)
@@ -451,7 +496,10 @@ void judgeCapsule(Tally& tally, const hitbox::Contact& contact, double radii, do
         fail(tally, "moving A by normal * depth leaves them overlapping", scene);
     // With the cores apart, it is also the shortest such move.
     if (coreDistance > tolerance && std::fabs(contact.depth - margin) > tolerance)
-        fail(tally, "depth " + show(contact.depth) + " but the shortest separating move is " + show(margin), scene);
+        fail(tally,
+             "depth " + show(contact.depth) + " but the shortest separating move is " +
+                 show(margin),
+             scene);
 }
 
 inline Tally capsules(long cases, unsigned seed)
@@ -464,28 +512,38 @@ inline Tally capsules(long cases, unsigned seed)
     {
         const hitbox::Capsule a = randomCapsule(random, true);
         const hitbox::Capsule b = randomCapsule(random, true);
-        const auto coreDistance = [&](sf::Vector2f offset) {
-            return reference::segmentDistance(toPoint(a.start + offset), toPoint(a.end + offset), toPoint(b.start), toPoint(b.end));
+        const auto coreDistance = [&](sf::Vector2f offset)
+        {
+            return reference::segmentDistance(toPoint(a.start + offset), toPoint(a.end + offset),
+                                              toPoint(b.start), toPoint(b.end));
         };
-        judgeCapsule(tally, hitbox::capsuleVsCapsule(a, b), double(a.radius) + b.radius, coreDistance(sf::Vector2f()), coreDistance,
-                     show(a) + " vs " + show(b));
+        judgeCapsule(tally, hitbox::capsuleVsCapsule(a, b), double(a.radius) + b.radius,
+                     coreDistance(sf::Vector2f()), coreDistance,
+                     [&] { return show(a) + " vs " + show(b); });
         if (hitbox::capsuleVsCapsule(a, b).hit != hitbox::capsuleVsCapsule(b, a).hit)
-            fail(tally, "capsuleVsCapsule is not symmetric", show(a) + " vs " + show(b));
+            fail(tally, "capsuleVsCapsule is not symmetric",
+                 [&] { return show(a) + " vs " + show(b); });
 
         const hitbox::Circle circle{b.start, b.radius};
-        const auto toCircle = [&](sf::Vector2f offset) {
-            return reference::pointSegmentDistance(toPoint(circle.center), toPoint(a.start + offset), toPoint(a.end + offset));
+        const auto toCircle = [&](sf::Vector2f offset)
+        {
+            return reference::pointSegmentDistance(
+                toPoint(circle.center), toPoint(a.start + offset), toPoint(a.end + offset));
         };
-        judgeCapsule(tally, hitbox::capsuleVsCircle(a, circle), double(a.radius) + circle.radius, toCircle(sf::Vector2f()), toCircle,
-                     show(a) + " vs " + show(circle));
+        judgeCapsule(tally, hitbox::capsuleVsCircle(a, circle), double(a.radius) + circle.radius,
+                     toCircle(sf::Vector2f()), toCircle,
+                     [&] { return show(a) + " vs " + show(circle); });
 
         hitbox::Capsule round = randomCapsule(random, false);
         const hitbox::Polygon polygon = randomConvexPolygon(random, 300);
-        const auto toPolygon = [&](sf::Vector2f offset) {
-            return reference::segmentPolygonDistance(toPoint(round.start + offset), toPoint(round.end + offset), asPoints(polygon));
+        const auto toPolygon = [&](sf::Vector2f offset)
+        {
+            return reference::segmentPolygonDistance(
+                toPoint(round.start + offset), toPoint(round.end + offset), asPoints(polygon));
         };
-        judgeCapsule(tally, hitbox::capsuleVsPolygon(round, polygon), round.radius, toPolygon(sf::Vector2f()), toPolygon,
-                     show(round) + " vs " + show(polygon));
+        judgeCapsule(tally, hitbox::capsuleVsPolygon(round, polygon), round.radius,
+                     toPolygon(sf::Vector2f()), toPolygon,
+                     [&] { return show(round) + " vs " + show(polygon); });
     }
     return tally;
 }

@@ -165,9 +165,8 @@ T crossOf(Vec<T> o, Vec<T> a, Vec<T> b)
 template <class T>
 std::vector<Vec<T>> convexHull(std::vector<Vec<T>> points)
 {
-    std::sort(points.begin(), points.end(), [](Vec<T> a, Vec<T> b) {
-        return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
+    std::sort(points.begin(), points.end(),
+              [](Vec<T> a, Vec<T> b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     points.erase(std::unique(points.begin(), points.end(),
                              [](Vec<T> a, Vec<T> b) { return a.x == b.x && a.y == b.y; }),
                  points.end());
@@ -235,7 +234,10 @@ inline double originDepth(const std::vector<Vec<double>>& hull, Point* outward =
         const Point edge = b - a;
         const double edgeLength = length(edge);
         // Distance from the origin to the edge as a segment (for the outside case).
-        const double t = edgeLength > 0 ? std::clamp(dot(Point{0, 0} - a, edge) / (edgeLength * edgeLength), 0.0, 1.0) : 0.0;
+        const double t =
+            edgeLength > 0
+                ? std::clamp(dot(Point{0, 0} - a, edge) / (edgeLength * edgeLength), 0.0, 1.0)
+                : 0.0;
         gap = std::min(gap, length(a + edge * t));
         if (n < 3 || edgeLength == 0)
             continue;
@@ -321,12 +323,13 @@ inline double segmentDistance(Point a, Point b, Point c, Point d)
 // Distance from a segment to a convex polygon (as a filled region): 0 when they meet.
 inline double segmentPolygonDistance(Point a, Point b, const std::vector<Point>& polygon)
 {
-    if (polygon.size() >= 3 && (strictlyInsideConvex(a, polygon) || strictlyInsideConvex(b, polygon)))
+    if (polygon.size() >= 3 &&
+        (strictlyInsideConvex(a, polygon) || strictlyInsideConvex(b, polygon)))
         return 0.0;
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < polygon.size(); ++i)
-        nearest = std::min(nearest,
-                           segmentDistance(a, b, polygon[i], polygon[(i + 1) % polygon.size()]));
+        nearest =
+            std::min(nearest, segmentDistance(a, b, polygon[i], polygon[(i + 1) % polygon.size()]));
     return nearest;
 }
 
