@@ -63,6 +63,28 @@ Contact crossingContact(const Capsule& a, const Capsule& b, sf::Vector2f pointOn
     return contact;
 }
 
+// Which side of the line a->b the point p is on (double, so the sign is trustworthy).
+double sideOf(sf::Vector2f a, sf::Vector2f b, sf::Vector2f p)
+{
+    return (double(b.x) - a.x) * (double(p.y) - a.y) - (double(b.y) - a.y) * (double(p.x) - a.x);
+}
+
+bool segmentsCross(sf::Vector2f a0, sf::Vector2f a1, sf::Vector2f b0, sf::Vector2f b1)
+{
+    const double first = sideOf(a0, a1, b0) * sideOf(a0, a1, b1);
+    const double second = sideOf(b0, b1, a0) * sideOf(b0, b1, a1);
+    return first < 0.0 && second < 0.0;
+}
+
+// Closest points this near are "the same point" for choosing a direction: the rounding of
+// the closest-point formula is about a millionth of the coordinates' size.
+bool nearlySame(sf::Vector2f a, sf::Vector2f b)
+{
+    const float scale = 1.f + std::fmax(std::fmax(std::fabs(a.x), std::fabs(a.y)),
+                                        std::fmax(std::fabs(b.x), std::fabs(b.y)));
+    return lengthOf(a - b) <= 1e-6f * scale;
+}
+
 } // namespace
 
 // [slide:capsule-closest-point]
@@ -84,7 +106,8 @@ Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle)
         return Contact{};
     // The capsule is a circle slid along its segment: use the circle at the nearest point.
     const sf::Vector2f nearest = closestPointOnSegment(circle.center, capsule.start, capsule.end);
-    if (nearest == circle.center && capsule.radius + circle.radius > 0.f)
+    const float radiusSum = capsule.radius + circle.radius;
+    if (nearlySame(nearest, circle.center) && lengthOf(nearest - circle.center) < radiusSum)
         return crossingContact(capsule, Capsule{circle.center, circle.center, circle.radius},
                                circle.center);
     return circleVsCircleContact(Circle{nearest, capsule.radius}, circle);
@@ -144,10 +167,13 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
     if (!isUsable(a) || !isUsable(b))
         return Contact{};
     const SegmentPoints closest = closestPointsOfSegments(a.start, a.end, b.start, b.end);
-    if (closest.first == closest.second)
+    const float radiusSum = a.radius + b.radius;
+    const bool crossing = segmentsCross(a.start, a.end, b.start, b.end);
+    if (crossing || nearlySame(closest.first, closest.second))
     {
-        if (!(a.radius + b.radius > 0.f))
-            return Contact{}; // two segments with no area
+        if (!(lengthOf(closest.first - closest.second) < radiusSum) &&
+            !(crossing && radiusSum > 0.f))
+            return Contact{}; // two segments with no area, or apart by more than the radii
         return crossingContact(a, b, closest.second);
     }
     // Otherwise it is two circles: one at each closest point.

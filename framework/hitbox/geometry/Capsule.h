@@ -14,7 +14,8 @@
 //     it reaches strictly inside the other shape. Two shapes with no area never collide.
 //   - Zero-length capsule (start == end): a circle.
 //   - Negative radius, NaN or infinite input: never collide.
-//   - When the cores touch or cross (distance 0), there is no single closest direction. The
+//   - When the cores touch or cross (distance 0, or within rounding: a millionth of the
+//     coordinates' size), there is no single closest direction. The
 //     normal is then at right angles to B's segment (to A's segment if B's is a point), on
 //     the side of A's middle; the depth moves A far enough along it to clear B. It is a
 //     separating move, not always the shortest one. Fully degenerate (both points at the same
