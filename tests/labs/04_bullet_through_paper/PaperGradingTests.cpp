@@ -3,6 +3,7 @@
 
 #include "hitbox/App.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Tunnelling.h"
 
 #include <gtest/gtest.h>
 
@@ -121,4 +122,20 @@ TEST(Task3TunnelWarning, FastShotShowsTheWarningSlowShotDoesNot)
     level.fire(600.f);
     level.update(hitbox::stepSeconds);
     EXPECT_FALSE(level.getBullet(Lane::Discrete)->couldTunnel());
+}
+
+TEST(Task3TunnelWarning, AgreesWithTheFrameworkForStepsThatReachTheWall)
+{
+    PaperLevel level;
+    level.setAutoFire(false);
+    level.fire(600.f);
+    const Bullet& bullet = *level.getBullet(Lane::Discrete);
+    const float distance = level.getWall().left - (bullet.getCollisionBox().left + 12.f);
+    for (float extra = 0.5f; extra < 200.f; extra += 0.5f)
+    {
+        const sf::Vector2f step{distance + extra, 0.f}; // always reaches into the wall
+        EXPECT_EQ(level.stepCouldTunnel(bullet, step),
+                  hitbox::canTunnel(bullet.getCollisionBox(), step, level.getWall()))
+            << "step " << step.x << " px";
+    }
 }
