@@ -121,8 +121,7 @@ void PaperLevel::stepDiscrete(Bullet& bullet, sf::Vector2f step)
     // END TASK 1
 }
 
-// Swept: look along the whole move first. The sweep says WHEN in the step the bullet first
-// touches the wall, so it cannot jump over it at any speed.
+// Swept: look along the whole move first; the sweep says WHEN the bullet first touches.
 void PaperLevel::stepSwept(Bullet& bullet, sf::Vector2f step)
 {
     // BEGIN TASK 2: the swept test - sweep the bullet's box along `step` against the wall

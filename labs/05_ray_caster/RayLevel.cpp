@@ -168,47 +168,45 @@ RayHit RayLevel::castRay(sf::Vector2f from, sf::Vector2f to) const
 }
 // [/slide]
 
-// [slide:lab05-slide-time-order]
-void RayLevel::movePlayer(float dt)
+std::vector<SolidHit> RayLevel::solidsInTheWay(sf::Vector2f move) const
 {
-    sf::Vector2f velocity = player.getVelocity();
-    // Every solid the whole move of this step would run into, and when (seed 004).
-    lastHits.clear();
+    std::vector<SolidHit> inTheWay;
     for (std::size_t i = 0; i < solids.size(); ++i)
     {
-        const hitbox::Hit hit =
-            hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[i]);
+        const hitbox::Hit hit = hitbox::sweepBoxVsBox(player.getCollisionBox(), move, solids[i]);
         if (hit)
-            lastHits.push_back({i, hit.time});
+            inTheWay.push_back({i, hit.time});
     }
-    // BEGIN TASK 3: handle the nearest contact first
-    // The floor under the player is touched at time 0; the next tile's corner later in the
-    // step. Handle the corner first and it stops the player dead at the seam. On a tie (the
-    // player's edge exactly on a seam), the solid whose centre is nearer goes first: the
-    // tile right under the player, not the one beside it.
+    return inTheWay;
+}
+
+bool RayLevel::isNearer(const SolidHit& a, const SolidHit& b) const
+{
+    const sf::Vector2f center = hitbox::centerOf(player.getCollisionBox());
+    const sf::Vector2f toA = hitbox::centerOf(solids[a.index]) - center;
+    const sf::Vector2f toB = hitbox::centerOf(solids[b.index]) - center;
+    return dot(toA, toA) < dot(toB, toB);
+}
+
+// [slide:lab05-slide-time-order]
+void RayLevel::movePlayer(sf::Vector2f velocity, float dt)
+{
+    lastHits = solidsInTheWay(velocity * dt); // every solid this move runs into, and when
+    // BEGIN TASK 3: handle the nearest contact first (ties: the nearer solid)
     if (timeOrder)
-    {
-        const sf::Vector2f center = hitbox::centerOf(player.getCollisionBox());
-        auto distance = [&](const SolidHit& hit)
-        {
-            const sf::Vector2f offset = hitbox::centerOf(solids[hit.index]) - center;
-            return dot(offset, offset);
-        };
         std::sort(lastHits.begin(), lastHits.end(),
                   [&](const SolidHit& a, const SolidHit& b)
-                  { return a.time != b.time ? a.time < b.time : distance(a) < distance(b); });
-    }
+                  { return a.time != b.time ? a.time < b.time : isNearer(a, b); });
     // END TASK 3
     // BEGIN TASK 2: slide - remove the part of the velocity that goes into each surface
     for (const SolidHit& candidate : lastHits)
     {
-        // Sweep again: the responses so far may already have steered the player clear.
-        const hitbox::Hit now =
+        const hitbox::Hit now = // sweep again: earlier answers may have steered clear
             hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[candidate.index]);
         if (!now)
             continue;
-        if (now.startedInside) // already overlapping: push out first
-            player.move(now.normal * now.depth);
+        if (now.startedInside)
+            player.move(now.normal * now.depth); // already overlapping: push out first
         const float into = dot(velocity, now.normal);
         if (into < 0.f)
             velocity -= now.normal * into * (1.f - now.time); // keep only the part up to the touch
@@ -226,7 +224,7 @@ void RayLevel::update(float dt)
         direction /= length;
     player.setVelocity(direction * playerSpeed);
     const sf::Vector2f before = player.getPosition();
-    movePlayer(dt);
+    movePlayer(player.getVelocity(), dt);
     // Wanting to move but barely moving: snagged (or pressed into a corner).
     const sf::Vector2f moved = player.getPosition() - before;
     stuck = length > 0.f && dot(moved, moved) < 0.01f * playerSpeed * dt * playerSpeed * dt;

@@ -67,7 +67,12 @@ public:
     bool isStuck() const;
 
 private:
-    void movePlayer(float dt);
+    // Move the player by velocity * dt, sliding along what it runs into (tasks 2 and 3).
+    void movePlayer(sf::Vector2f velocity, float dt);
+    // Every solid the player's box would run into moving by `move`, with the time of each.
+    std::vector<SolidHit> solidsInTheWay(sf::Vector2f move) const;
+    // For ties in time: is solid a's centre nearer the player's centre than solid b's?
+    bool isNearer(const SolidHit& a, const SolidHit& b) const;
 
     std::vector<sf::FloatRect> solids;
     GameObject player;

@@ -3,6 +3,7 @@
 #include "hitbox/geometry/VectorMath.h"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace
@@ -50,34 +51,24 @@ SatResult separatingAxisTest(const hitbox::Polygon& a, const hitbox::Polygon& b)
     std::vector<sf::Vector2f> axes = edgeNormals(a);
     const std::vector<sf::Vector2f> axesOfB = edgeNormals(b);
     axes.insert(axes.end(), axesOfB.begin(), axesOfB.end());
-
-    SatResult result;
-    // BEGIN TASK 2: try every axis; keep the largest gap, or the least overlap
-    bool first = true;
-    bool anyGap = false;
+    if (axes.empty())
+        return SatResult{}; // nothing to test (empty polygons): apart
+    // BEGIN TASK 2: try every axis; keep the largest gap (or, with none, the least overlap)
+    SatResult best{false, {}, -std::numeric_limits<float>::infinity()};
     for (const sf::Vector2f& axis : axes)
     {
         const Shadow shadowA = projectOnto(a, axis);
         const Shadow shadowB = projectOnto(b, axis);
-        // The two ways out along this axis: A forwards past B's end, or backwards past its
-        // start. The shorter one is this axis's overlap.
+        // Two ways out along this axis: A forwards past B's end, or backwards past its start.
         const float forwards = shadowB.max - shadowA.min;
         const float backwards = shadowA.max - shadowB.min;
-        const float overlap = std::min(forwards, backwards);
-        const sf::Vector2f outOfB = forwards < backwards ? axis : -axis;
-        const float gap = -overlap;
-        if (gap >= 0.f)
-        {
-            // A line fits between the shadows: separated. Report the widest gap.
-            if (!anyGap || gap > result.gap)
-                result = {true, outOfB, gap};
-            anyGap = true;
-        }
-        else if (!anyGap && (first || gap > result.gap))
-            result = {false, outOfB, gap}; // the least overlap so far
-        first = false;
+        const float gap = -std::min(forwards, backwards);
+        if (gap > best.gap)
+            best = {gap >= 0.f, forwards < backwards ? axis : -axis, gap};
     }
+    return best;
+    // STARTER TASK 2
+    // return SatResult{};
     // END TASK 2
-    return result;
 }
 // [/slide]

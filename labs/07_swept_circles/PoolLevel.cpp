@@ -137,7 +137,6 @@ bool PoolLevel::isNewCollision(const hitbox::Hit& hit, sf::Vector2f relativeVelo
     return !hit.startedInside || hitbox::dot(relativeVelocity, hit.normal) < 0.f;
 }
 
-// [slide:lab07-toi-pool]
 BallEvent PoolLevel::findFirstEvent(float seconds) const
 {
     BallEvent first;
@@ -169,6 +168,7 @@ BallEvent PoolLevel::findFirstEvent(float seconds) const
     return first;
 }
 
+// [slide:lab07-toi-pool]
 void PoolLevel::stepSwept(float dt)
 {
     float secondsLeft = dt;
