@@ -23,6 +23,12 @@
 # (against the exercise; built but not registered: scripts/check-exercises.sh runs it to
 # prove every task has a test that fails until the student does the task).
 #
+# Writing a lab: the exercise is compiled with the same warnings as the solution (errors in
+# the debug preset), so starter code must compile cleanly: e.g. "// (void)dt;" in a STARTER
+# block for a parameter only the solution uses. Grading tests can include
+# "labs/LabTesting.h" (EXPECT_VEC_NEAR). scripts/check-exercises.sh checks that each task
+# has a test (suite Task<n>...) that fails on the exercise.
+#
 # In a student handout (scripts/make-handout.sh writes framework/cmake/HitboxHandout.cmake,
 # which sets HITBOX_HANDOUT) the lab folders already hold the exercise, so there is only one
 # version: <lab>_level, <lab> and <lab>_tests build and test the student's own code.
