@@ -15,6 +15,7 @@
 #include <SFML/Graphics/Text.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace
@@ -91,6 +92,7 @@ void PoolLevel::shoot(sf::Vector2f target, float speed)
         return;
     balls[0].velocity = hitbox::unitOr(target - balls[0].shape.center, {1.f, 0.f}) * speed;
     cueTrail.assign(1, balls[0].shape.center);
+    cueImpact = {};
 }
 
 const std::vector<Ball>& PoolLevel::getBalls() const
@@ -124,6 +126,7 @@ void PoolLevel::handleInput(const Input& input, float)
         balls = rackedBalls();
         cueTrail.assign(1, balls[0].shape.center);
         impacts.clear();
+        cueImpact = {};
     }
 }
 
@@ -183,6 +186,8 @@ void PoolLevel::stepSwept(float dt)
         // ...that one collision is answered, and the rest of the step goes round again.
         answer(next);
         secondsLeft *= 1.f - next.time;
+        if (next.cushion < 0 && (next.first == 0 || next.second == 0))
+            cueImpact = {true, balls[0].shape.center, 1.f - secondsLeft / dt};
     }
     // Out of events: the rest of this step is dropped (the balls lose a moment of motion,
     // but nothing passes through anything).
@@ -318,6 +323,19 @@ void PoolLevel::render(sf::RenderTarget& target) const
         drawn.setPosition(ball.shape.center);
         drawn.setFillColor(ball.color);
         target.draw(drawn);
+    }
+
+    if (cueImpact.happened)
+    {
+        char when[96];
+        std::snprintf(when, sizeof(when), "cue ball stopped where it touched: t = %.2f of its step",
+                      cueImpact.stepFraction);
+        sf::Text label(when, font, 16);
+        label.setFillColor(sf::Color::White);
+        label.setOutlineColor(sf::Color::Black);
+        label.setOutlineThickness(1.5f);
+        label.setPosition(cueImpact.where + sf::Vector2f{-470.f, 18.f});
+        target.draw(label);
     }
 
     float fastest = 0.f;

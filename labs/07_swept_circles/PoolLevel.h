@@ -87,5 +87,11 @@ private:
     sf::Vector2f mouse;
     std::vector<sf::Vector2f> cueTrail; // the cue ball after each step
     std::vector<Impact> impacts;        // the latest ball-ball impacts
+    struct CueImpact
+    {
+        bool happened = false;
+        sf::Vector2f where;       // the cue ball's centre when it touched
+        float stepFraction = 0.f; // when, as a fraction of that whole step
+    } cueImpact;                  // the cue ball's latest ball-ball impact
     sf::Font font;
 };
