@@ -182,3 +182,24 @@ TEST(Task4PushOut, OutOfTheCapsuleToo)
     stepWith(level, input);
     EXPECT_FALSE(level.isOverlapping(0));
 }
+
+TEST(Task4PushOut, ADraggedShapeIsPushedOutOfWhatItWasDroppedOn)
+{
+    RotatedLevel level({{{{100.f, 100.f}, {30.f, 30.f}, 0.f}, false},
+                        {{{400.f, 100.f}, {30.f, 30.f}, 20.f}, false}});
+    Input input;
+    // Grab shape 1 at its centre, drag it onto shape 0, then press Space.
+    input.setMousePosition({400.f, 100.f});
+    input.setMouseLDown(true);
+    stepWith(level, input);
+    EXPECT_EQ(level.getHeld(), 1u);
+    input.setMousePosition({130.f, 110.f});
+    stepWith(level, input);
+    input.setMouseLDown(false);
+    stepWith(level, input);
+    ASSERT_TRUE(level.isOverlapping(1));
+    input.setKeyDown(sf::Keyboard::Space);
+    stepWith(level, input);
+    EXPECT_FALSE(level.isOverlapping(1));
+    EXPECT_FALSE(level.isOverlapping(0));
+}
