@@ -20,7 +20,7 @@ const sf::Color tileEdgeColor{100, 130, 190};
 const sf::Color playerColor{240, 180, 70};
 const sf::Color groundedColor{90, 230, 120};
 const float helpBarHeight = 24.f; // the App's help line sits under the map, not on it
-const float hudTextSize = 16.f;
+const float hudTextSize = 18.f;
 
 // The smallest box holding both boxes.
 sf::FloatRect unionOf(const sf::FloatRect& a, const sf::FloatRect& b)
@@ -292,10 +292,10 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     body.setFillColor(playerColor);
     target.draw(body);
     // Eyes on the side the player runs towards, so its direction is easy to follow.
-    sf::RectangleShape eye({4.f, 6.f});
+    sf::RectangleShape eye({5.f, 9.f});
     eye.setFillColor(sf::Color(40, 30, 20));
-    const float facing = player.getVelocity().x < 0.f ? 3.f : Player::width - 7.f;
-    eye.setPosition(player.getPosition() + sf::Vector2f(facing, 8.f));
+    const float facing = player.getVelocity().x < 0.f ? 3.f : Player::width - 9.f;
+    eye.setPosition(player.getPosition() + sf::Vector2f(facing, 12.f));
     target.draw(eye);
 
     std::ostringstream hud;
@@ -304,7 +304,7 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
         << "    speculative contacts [X]: " << (speculative ? "ON" : "off")
         << "    tiles tested: " << testedRegion.tileCount() << "    fell out: " << fallsOutOfWorld;
     sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
-    text.setPosition(40.f, 36.f);
+    text.setPosition(60.f, 56.f);
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);
 }
@@ -328,7 +328,7 @@ void PlatformerLevel::renderDebug(hitbox::DebugRenderer& debug) const
                 DebugRenderer::velocityColor);
     // The collision points: red if the point was inside a solid tile this step.
     for (std::size_t index = 0; index < collisionPoints.size(); ++index)
-        debug.cross(pointOn(box, collisionPoints[index]), 7.f,
+        debug.cross(pointOn(box, collisionPoints[index]), 10.f,
                     pointWasInside[index] ? DebugRenderer::touchingColor
                                           : DebugRenderer::freeColor);
     for (const hitbox::Contact& contact : contacts)

@@ -23,18 +23,18 @@ class Player
 {
 public:
     // The tuning, in pixels and seconds, where a student can try other values.
-    static constexpr float width = 22.f;
-    static constexpr float height = 40.f;
-    static constexpr float runAcceleration = 1400.f; // px/s^2 while a direction is held
-    static constexpr float runDeceleration = 2100.f; // px/s^2 with no direction: stops
+    static constexpr float width = 32.f;
+    static constexpr float height = 60.f;
+    static constexpr float runAcceleration = 2100.f; // px/s^2 while a direction is held
+    static constexpr float runDeceleration = 3150.f; // px/s^2 with no direction: stops
                                                      // 50 % faster than it starts (seed 000)
-    static constexpr float maxRunSpeed = 280.f;      // px/s
-    static constexpr float gravity = 2200.f;         // px/s^2, down
-    static constexpr float jumpSpeed = 760.f;        // px/s, up: about 4 tiles high
-    static constexpr float diveSpeed = 9000.f;       // px/s, down: far too fast on purpose
+    static constexpr float maxRunSpeed = 420.f;      // px/s
+    static constexpr float gravity = 3300.f;         // px/s^2, down
+    static constexpr float jumpSpeed = 1140.f;       // px/s, up: about 4 tiles high
+    static constexpr float diveSpeed = 13500.f;      // px/s, down: far too fast on purpose
     // The speed cap against tunnelling (seed 001): in one step the player may move less
     // than one tile, so it cannot jump over a tile between two steps.
-    static constexpr float maxFallSpeed = 1500.f; // px/s
+    static constexpr float maxFallSpeed = 2250.f; // px/s
     static constexpr float fixedStep = 1.f / 120.f;
     static_assert(maxFallSpeed * fixedStep < TileMap::tileSize,
                   "the speed cap must keep every step shorter than a tile");

@@ -77,7 +77,17 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
 
 TileMap TileMap::load(const std::string& relativePath)
 {
-    const std::string path = hitbox::findAsset(relativePath); // throws, naming path and fix
+    std::string path;
+    try
+    {
+        path = hitbox::findAsset(relativePath);
+    }
+    catch (const hitbox::AssetError& error)
+    {
+        throw hitbox::AssetError(std::string(error.what()) +
+                                 " Levels are text files in assets/levels/; pick one with "
+                                 "--level levels/NAME.txt.");
+    }
     std::ifstream file(path, std::ios::binary);
     if (!file)
         throw LevelFileError("Hitbox: cannot read level file '" + path +

@@ -40,7 +40,7 @@ struct TileRegion
 class TileMap
 {
 public:
-    static constexpr float tileSize = 32.f; // pixels, the same on both axes
+    static constexpr float tileSize = 48.f; // pixels, the same on both axes
 
     // Reads a level from text. `sourceName` (usually the file's path) starts every error
     // message. Throws LevelFileError.

@@ -15,10 +15,10 @@
 
 int main(int argc, char* argv[])
 {
-    return hitbox::run(argc, argv, {"Lab 9 - Platformer", {"level"}},
+    return hitbox::run(argc, argv, {"Lab 9 - Platformer", {"--level"}},
                        [](const hitbox::Options& options)
                        {
                            return std::make_unique<PlatformerLevel>(
-                               TileMap::load(options.get("level", "levels/platformer.txt")));
+                               TileMap::load(options.get("--level", "levels/platformer.txt")));
                        });
 }

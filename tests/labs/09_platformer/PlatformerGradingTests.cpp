@@ -56,8 +56,9 @@ TEST(Task1Jump, JumpFromTheFloorRisesAboutFourTiles)
     const float standingTop = game.position().y;
     game.tap(sf::Keyboard::Space);
     const float top = highestTop(game, 1.f);
-    // v^2 / 2g = 760^2 / 4400 = 131 pixels, give or take one step.
-    EXPECT_NEAR(standingTop - top, 131.f, 8.f);
+    // v^2 / 2g = 1140^2 / 6600 = 197 pixels, give or take one step.
+    const float expected = Player::jumpSpeed * Player::jumpSpeed / (2.f * Player::gravity);
+    EXPECT_NEAR(standingTop - top, expected, 10.f);
     EXPECT_NEAR(game.feet(), platformertest::roomFloorTop, 0.01f) << "lands again";
 }
 
@@ -109,13 +110,13 @@ TEST(Task2LeastPenetration, CornerShallowSidewaysDeepDownIsPushedSideways)
 TEST(Task2LeastPenetration, LandingWithOnlyACornerOnALedgeStandsOnIt)
 {
     Game game(platformertest::roomWithLedge);
-    // Only the left 8 pixels of the player are above the ledge: the bottom point (in the
+    // Only the left 12 pixels of the player are above the ledge: the bottom point (in the
     // middle) misses it, the left-bottom corner does not.
-    game.level.placePlayer({platformertest::ledgeRight - 8.f, 80.f});
+    game.level.placePlayer({platformertest::ledgeRight - 12.f, 120.f});
     game.run(1.f);
     EXPECT_NEAR(game.feet(), platformertest::ledgeTop, 0.01f)
         << "the corner landed on the ledge: it must hold the player up, not push it off";
-    EXPECT_NEAR(game.position().x, platformertest::ledgeRight - 8.f, 0.01f);
+    EXPECT_NEAR(game.position().x, platformertest::ledgeRight - 12.f, 0.01f);
     EXPECT_TRUE(game.level.isGrounded());
 }
 
@@ -130,7 +131,7 @@ TEST(Task3SweptBounds, OnlyTheTilesAroundThePlayerAreTested)
         game.frame();
         mostTested = std::max(mostTested, game.level.getTestedRegion().tileCount());
     }
-    // 22 x 40 pixels, moving at most 12.5 pixels a step: never more than 2 x 3 tiles.
+    // 32 x 60 pixels, moving under 19 pixels a step, 48-pixel tiles: at most 2 x 3 tiles.
     EXPECT_LE(mostTested, 6);
     EXPECT_GT(mostTested, 0);
 }
@@ -155,7 +156,7 @@ TEST(Task3SweptBounds, TheSweptBoundsHoldWhereThePlayerWasAndIs)
 
 TEST(Task4SpeedCap, AFallFromVeryHighLandsOnAFloorOneTileThick)
 {
-    Game game(platformertest::deepShaft(1000)); // a 32 000 pixel drop
+    Game game(platformertest::deepShaft(1000)); // a 48 000 pixel drop
     game.run(25.f);
     EXPECT_EQ(game.level.getFallsOutOfWorld(), 0) << "the player went through the floor";
     EXPECT_NEAR(game.feet(), 999 * TileMap::tileSize, 0.01f);
@@ -166,7 +167,7 @@ TEST(Task4SpeedCap, EveryStepMovesLessThanATileEvenWhenDiving)
 {
     Game game(platformertest::deepShaft(200));
     game.run(0.2f);
-    game.tap(sf::Keyboard::S); // dive: asks for 9000 px/s
+    game.tap(sf::Keyboard::S); // dive: asks for 13 500 px/s
     for (int frame = 0; frame < 120; ++frame)
     {
         const float before = game.position().y;
@@ -181,7 +182,7 @@ TEST(Tunnelling, WithoutTheCapAFastFallGoesThroughTheFloor)
 {
     Game game(platformertest::deepShaft(1000));
     game.level.setSpeedCap(false);
-    game.run(6.f);
+    game.run(8.f);
     EXPECT_GE(game.level.getFallsOutOfWorld(), 1)
         << "the bullet-through-paper problem this lab shows has gone away?";
 }
@@ -191,7 +192,7 @@ TEST(SpeculativeContacts, StopAFastFallOnAThinFloorWithoutTheCap)
     Game game(platformertest::deepShaft(1000));
     game.level.setSpeedCap(false);
     game.level.setSpeculativeContacts(true);
-    game.run(6.f);
+    game.run(8.f);
     EXPECT_EQ(game.level.getFallsOutOfWorld(), 0);
     EXPECT_NEAR(game.feet(), 999 * TileMap::tileSize, 0.01f);
     EXPECT_TRUE(game.level.isGrounded());
@@ -291,7 +292,7 @@ TEST(Grounded, WalkingOffALedgeIsNotGrounded)
 TEST(Grounded, PressedAgainstAWallInTheAirIsNotGrounded)
 {
     Game game(platformertest::room);
-    game.level.placePlayer({40.f, 40.f});
+    game.level.placePlayer({60.f, 60.f});
     game.input.setKeyDown(sf::Keyboard::A);
     game.run(0.15f);
     EXPECT_NEAR(game.position().x, TileMap::tileSize, 0.01f) << "against the left wall";

@@ -12,7 +12,7 @@
 
 namespace platformertest
 {
-// A closed room 10 tiles wide and 10 high; the floor's top is at y = 288.
+// A closed room 10 tiles wide and 10 high; the floor's top is at y = 432.
 inline const char* const room = "##########\n"
                                 "#........#\n"
                                 "#........#\n"
@@ -25,7 +25,7 @@ inline const char* const room = "##########\n"
                                 "##########\n";
 constexpr float roomFloorTop = 9 * TileMap::tileSize;
 
-// The same room with a ledge on the left: its top is y = 160, its right edge x = 160.
+// The same room with a ledge on the left: its top is y = 240, its right edge x = 240.
 inline const char* const roomWithLedge = "##########\n"
                                          "#........#\n"
                                          "#........#\n"

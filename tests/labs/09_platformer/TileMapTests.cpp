@@ -38,7 +38,7 @@ TEST(LevelFile, ReadsSolidTilesEmptyTilesAndTheStart)
     EXPECT_TRUE(map.isSolid(0, 0));
     EXPECT_FALSE(map.isSolid(1, 1));
     EXPECT_FALSE(map.isSolid(2, 1)) << "the start is an empty tile";
-    EXPECT_EQ(map.getPlayerStart(), sf::Vector2f(64.f, 32.f));
+    EXPECT_EQ(map.getPlayerStart(), sf::Vector2f(96.f, 48.f));
     EXPECT_FALSE(map.isSolid(-1, 0)) << "outside the map there is nothing";
 }
 
@@ -96,8 +96,8 @@ TEST(LevelFile, MissingFileNamesThePathAndTheFix)
 TEST(LevelFile, TheLabsLevelLoads)
 {
     const TileMap map = TileMap::load("levels/platformer.txt");
-    EXPECT_GT(map.getColumns(), 30);
-    EXPECT_GT(map.getRows(), 15);
+    EXPECT_GT(map.getColumns(), 20);
+    EXPECT_GT(map.getRows(), 10);
 }
 
 // ---- Task 3: the tiles under a box ---------------------------------------------------------
@@ -127,18 +127,18 @@ void expectRegion(const TileRegion& region, int firstColumn, int lastColumn, int
 
 TEST(Task3TilesUnder, ABoxInsideOneTileCoversOnlyThatTile)
 {
-    expectRegion(tenByTen.tilesUnder({70.f, 40.f, 10.f, 10.f}), 2, 2, 1, 1);
+    expectRegion(tenByTen.tilesUnder({100.f, 60.f, 10.f, 10.f}), 2, 2, 1, 1);
 }
 
 TEST(Task3TilesUnder, ABoxAcrossTileEdgesCoversEveryTileItReaches)
 {
-    expectRegion(tenByTen.tilesUnder({60.f, 30.f, 40.f, 40.f}), 1, 3, 0, 2);
+    expectRegion(tenByTen.tilesUnder({90.f, 40.f, 60.f, 60.f}), 1, 3, 0, 2);
 }
 
 TEST(Task3TilesUnder, AnEdgeExactlyOnATileBoundaryDoesNotReachTheNextTile)
 {
-    // 64..96 by 32..64 is exactly tile (2, 1): touching its neighbours is not sharing area.
-    expectRegion(tenByTen.tilesUnder({64.f, 32.f, 32.f, 32.f}), 2, 2, 1, 1);
+    // 96..144 by 48..96 is exactly tile (2, 1): touching its neighbours is not sharing area.
+    expectRegion(tenByTen.tilesUnder({96.f, 48.f, 48.f, 48.f}), 2, 2, 1, 1);
 }
 
 TEST(Task3TilesUnder, IsClippedToTheMapAndEmptyBesideIt)
