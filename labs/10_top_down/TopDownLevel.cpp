@@ -63,11 +63,11 @@ void TopDownLevel::buildScene()
     addTree({520.f, 470.f});
     addTree({820.f, 250.f});
     addTree({1050.f, 320.f});
-    addEnemy({470.f, 300.f});
+    addEnemy({170.f, 292.f}); // walks behind the first tree to reach the player
     addEnemy({980.f, 560.f});
     addEnemy({1000.f, 120.f});
-    // The player starts just behind (above) a tree: its canopy covers the player's legs.
-    placePlayer({330.f, 300.f});
+    // The player starts just behind (above) a tree: the leaves cover part of it.
+    placePlayer({352.f, 296.f});
 }
 
 void TopDownLevel::addWall(const sf::FloatRect& wall)
