@@ -303,8 +303,12 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
         << "    speed cap [C]: " << (speedCapOn ? "on" : "OFF")
         << "    speculative contacts [X]: " << (speculative ? "ON" : "off")
         << "    tiles tested: " << testedRegion.tileCount() << "    fell out: " << fallsOutOfWorld;
+    // On a dark strip over the top row, so it never hides the player.
+    sf::RectangleShape strip({map.getSizeInPixels().x, hudTextSize + 14.f});
+    strip.setFillColor(sf::Color(0, 0, 0, 170));
+    target.draw(strip);
     sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
-    text.setPosition(60.f, 56.f);
+    text.setPosition(10.f, 5.f);
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);
 }
