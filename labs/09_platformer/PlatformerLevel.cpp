@@ -173,41 +173,46 @@ void PlatformerLevel::moveThenResolve(const sf::FloatRect& before)
     resolvePenetration(before);
 }
 
-// [slide:platformer-resolve]
+std::vector<sf::FloatRect> PlatformerLevel::solidTilesIn(const TileRegion& region) const
+{
+    std::vector<sf::FloatRect> solids;
+    for (int row = region.firstRow; row <= region.lastRow; ++row)
+        for (int column = region.firstColumn; column <= region.lastColumn; ++column)
+            if (map.isSolid(column, row))
+                solids.push_back(map.tileBox(column, row));
+    return solids;
+}
+
 void PlatformerLevel::resolvePenetration(const sf::FloatRect& before)
 {
-    passesUsed = 0;
-    for (int pass = 0; pass < maxResolvePasses; ++pass)
+    // [slide:platformer-resolve]
+    for (passesUsed = 1; passesUsed <= maxResolvePasses; ++passesUsed)
     {
         // Broad phase: only the tiles under where the player was and where it is now.
         sweptBounds = unionOf(before, player.getBox());
         testedRegion = map.tilesUnder(sweptBounds);
         bool pushed = false;
         for (std::size_t index = 0; index < collisionPoints.size(); ++index)
-        {
-            const sf::Vector2f where = pointOn(player.getBox(), collisionPoints[index]);
-            for (int row = testedRegion.firstRow; row <= testedRegion.lastRow; ++row)
-                for (int column = testedRegion.firstColumn; column <= testedRegion.lastColumn;
-                     ++column)
+            for (const sf::FloatRect& tile : solidTilesIn(testedRegion))
+            {
+                const sf::Vector2f where = pointOn(player.getBox(), collisionPoints[index]);
+                if (!hitbox::pointInBox(where, tile))
+                    continue;
+                pointWasInside[index] = true;
+                const hitbox::Contact push = pushOut(collisionPoints[index], where, tile);
+                if (push.hit)
                 {
-                    const sf::FloatRect tile = map.tileBox(column, row);
-                    if (!map.isSolid(column, row) || !hitbox::pointInBox(where, tile))
-                        continue;
-                    const hitbox::Contact push = pushOut(collisionPoints[index], where, tile);
-                    pointWasInside[index] = true;
-                    if (!push.hit)
-                        continue;
                     applyPush(push);
                     pushingTiles.push_back(tile);
                     pushed = true;
                 }
-        }
-        ++passesUsed;
+            }
         if (!pushed)
-            break; // nothing is inside any more: done for this step
+            return; // nothing is inside any more: done for this step
     }
+    // [/slide]
+    passesUsed = maxResolvePasses;
 }
-// [/slide]
 
 // [slide:platformer-grounded]
 void PlatformerLevel::applyPush(const hitbox::Contact& push)
@@ -228,6 +233,19 @@ void PlatformerLevel::applyPush(const hitbox::Contact& push)
 }
 // [/slide]
 
+hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2f move) const
+{
+    const sf::FloatRect moved{box.left + move.x, box.top + move.y, box.width, box.height};
+    hitbox::Hit first;
+    for (const sf::FloatRect& tile : solidTilesIn(map.tilesUnder(unionOf(box, moved))))
+    {
+        const hitbox::Hit hit = hitbox::sweepBoxVsBox(box, move, tile);
+        if (hit && !hit.startedInside && hit.time < first.time)
+            first = hit;
+    }
+    return first;
+}
+
 // [slide:platformer-speculative]
 // Speculative contacts (seed 000): instead of moving and then repairing, sweep the player's
 // box along its move and stop it where it would first touch a tile. The rest of the move
@@ -237,35 +255,21 @@ void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
     sf::Vector2f move = player.getVelocity() * Player::fixedStep;
     for (int pass = 0; pass < maxResolvePasses && (move.x != 0.f || move.y != 0.f); ++pass)
     {
-        const sf::FloatRect box = player.getBox();
-        const sf::FloatRect moved{box.left + move.x, box.top + move.y, box.width, box.height};
-        const TileRegion region = map.tilesUnder(unionOf(box, moved));
-        hitbox::Hit first;
-        for (int row = region.firstRow; row <= region.lastRow; ++row)
-            for (int column = region.firstColumn; column <= region.lastColumn; ++column)
-            {
-                if (!map.isSolid(column, row))
-                    continue;
-                const hitbox::Hit hit = hitbox::sweepBoxVsBox(box, move, map.tileBox(column, row));
-                if (hit && !hit.startedInside && hit.time < first.time)
-                    first = hit;
-            }
+        const hitbox::Hit first = firstHitAlong(player.getBox(), move);
         if (!first.hit)
         {
             player.setPosition(player.getPosition() + move);
             break;
         }
-        player.setPosition(player.getPosition() + move * first.time);
+        player.setPosition(player.getPosition() + move * first.time); // just touching
         applyPush({true, first.normal, 0.f, first.point});
         // What is left of the move, minus the part that would go into the surface.
-        sf::Vector2f rest = move * (1.f - first.time);
-        const float intoSurface = rest.x * first.normal.x + rest.y * first.normal.y;
+        move *= 1.f - first.time;
+        const float intoSurface = move.x * first.normal.x + move.y * first.normal.y;
         if (intoSurface < 0.f)
-            rest -= first.normal * intoSurface;
-        move = rest;
+            move -= first.normal * intoSurface;
     }
-    // Anything still inside (it started inside) is pushed out the usual way.
-    resolvePenetration(before);
+    resolvePenetration(before); // anything that started inside is pushed out as usual
 }
 // [/slide]
 

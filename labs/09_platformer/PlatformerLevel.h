@@ -17,6 +17,7 @@
 
 #include "hitbox/Level.h"
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
@@ -88,6 +89,10 @@ private:
     void moveWithSpeculativeContacts(const sf::FloatRect& before);
     void resolvePenetration(const sf::FloatRect& before);
     void applyPush(const hitbox::Contact& push);
+    // The boxes of the solid tiles in a region.
+    std::vector<sf::FloatRect> solidTilesIn(const TileRegion& region) const;
+    // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
+    hitbox::Hit firstHitAlong(const sf::FloatRect& box, sf::Vector2f move) const;
     void respawn();
 
     TileMap map;

@@ -41,6 +41,7 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
                               " tiles but the first row has " + std::to_string(map.columns) +
                               " (every row must be the same length)");
 
+        // [slide:tile-level-parse]
         for (std::size_t column = 0; column < line.size(); ++column)
         {
             const char tile = line[column];
@@ -62,6 +63,7 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
                                   " (use # for solid, . for empty, P for the player start)");
         }
         map.tiles.push_back(line);
+        // [/slide]
     }
 
     if (map.tiles.empty())

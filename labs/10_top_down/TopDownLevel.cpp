@@ -125,10 +125,10 @@ void TopDownLevel::handleInput(const Input& input, float)
     }
 }
 
-// [slide:topdown-per-axis]
 void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
 {
     // BEGIN TASK 1: move along x and resolve, then along y and resolve
+    // [slide:topdown-per-axis]
     // One axis at a time, so we always know which way the actor came in: moving right
     // into a wall, its right edge goes back to the wall's left edge (seed 003).
     actor.feet.x += move.x;
@@ -151,11 +151,11 @@ void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
             else if (move.y < 0.f)
                 actor.feet.y = solid.top + solid.height + actor.hitboxSize.y / 2.f;
         }
+    // [/slide]
     // STARTER TASK 1
     // actor.feet += move; // for now, straight through everything
     // END TASK 1
 }
-// [/slide]
 
 // [slide:topdown-notice-radius]
 EnemyState TopDownLevel::chooseEnemyState(sf::Vector2f enemyFeet, sf::Vector2f playerFeet)
