@@ -308,3 +308,23 @@ TEST(DebugView, ShowsTestedTilesPointsAndContacts)
     game.level.renderDebug(debug);
     EXPECT_GT(debug.getVertices().getVertexCount(), 100u);
 }
+
+TEST(CollisionPoints, AreCheckedSidesFirstThenCornersInSeed001sOrder)
+{
+    const char* expected[] = {"bottom",   "top",       "left",        "right",
+                              "left top", "right top", "left bottom", "right bottom"};
+    ASSERT_EQ(PlatformerLevel::collisionPoints.size(), 8u);
+    for (std::size_t index = 0; index < 8; ++index)
+        EXPECT_STREQ(PlatformerLevel::collisionPoints[index].name, expected[index]);
+}
+
+TEST(CollisionPoints, SitOnTheEdgesAndCornersOfThePlayersBox)
+{
+    const sf::FloatRect box{100.f, 200.f, Player::width, Player::height};
+    EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[0]),
+              sf::Vector2f(100.f + Player::width / 2.f, 200.f + Player::height));
+    EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[4]),
+              sf::Vector2f(100.f, 200.f));
+    EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[7]),
+              sf::Vector2f(100.f + Player::width, 200.f + Player::height));
+}
