@@ -144,6 +144,8 @@ void PlatformerLevel::update(float dt)
 void PlatformerLevel::step()
 {
     PlayerControls controls{holdingLeft, holdingRight, jumpPressed, divePressed};
+    if (demo) // run right, jump every half second
+        controls = {false, true, stepCount % 60 == 0, false};
     jumpPressed = false;
     divePressed = false;
     player.steer(controls, grounded, speedCapOn, Player::fixedStep);
@@ -186,10 +188,11 @@ std::vector<sf::FloatRect> PlatformerLevel::solidTilesIn(const TileRegion& regio
 void PlatformerLevel::resolvePenetration(const sf::FloatRect& before)
 {
     // [slide:platformer-resolve]
+    sweptBounds = before;
     for (passesUsed = 1; passesUsed <= maxResolvePasses; ++passesUsed)
     {
         // Broad phase: only the tiles under where the player was and where it is now.
-        sweptBounds = unionOf(before, player.getBox());
+        sweptBounds = unionOf(sweptBounds, player.getBox());
         testedRegion = map.tilesUnder(sweptBounds);
         bool pushed = false;
         for (std::size_t index = 0; index < collisionPoints.size(); ++index)

@@ -72,6 +72,8 @@ public:
     bool isGrounded() const { return grounded; }
     bool isSpeedCapOn() const { return speedCapOn; }
     void setSpeedCap(bool on) { speedCapOn = on; }
+    // Demo mode (for lectures and screenshots): the player runs right and jumps by itself.
+    void setDemo(bool on) { demo = on; }
     bool usesSpeculativeContacts() const { return speculative; }
     void setSpeculativeContacts(bool on) { speculative = on; }
     // The tiles looked at in the last step (the swept-bounds region), solid or not.
@@ -108,6 +110,7 @@ private:
 
     bool speedCapOn = true;
     bool speculative = false;
+    bool demo = false;
     float unsimulatedTime = 0.f; // seconds handed to update() but not yet simulated
     long long stepCount = 0;
     int fallsOutOfWorld = 0;
