@@ -183,7 +183,7 @@ bool TopDownLevel::hurt(Actor& victim, sf::Vector2f from, float invulnerableSeco
     // Just hit: further hits do nothing for a while. Without this, an enemy standing on
     // the player would take a life every time its attack came round again.
     if (victim.invulnerable > 0.f)
-        return false;
+        return false; // still invulnerable: this hit does nothing
     victim.health -= 1;
     victim.knockback = directionFrom(from, victim.feet) * knockbackSpeed;
     victim.invulnerable = invulnerableSeconds;
