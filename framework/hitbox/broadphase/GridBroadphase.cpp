@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hitbox
 {
@@ -22,6 +23,10 @@ GridBroadphase::GridBroadphase(float cellSize) : fixedCellSize(cellSize) {}
 void GridBroadphase::chooseGrid()
 {
     const std::size_t count = boxes.size();
+    // A box edge can be +-infinity when left + width overflowed; the grid only needs
+    // finite numbers (boxes beyond it land in its edge cells).
+    const float largest = std::numeric_limits<float>::max();
+    auto finite = [largest](float value) { return std::clamp(value, -largest, largest); };
     float left = 0.f, top = 0.f, right = 0.f, bottom = 0.f;
     double sideSum = 0.0;
     std::size_t usable = 0;
@@ -29,18 +34,20 @@ void GridBroadphase::chooseGrid()
     {
         if (!boxes.isUsable(i))
             continue;
+        const float minX = finite(boxes.minX[i]), maxX = finite(boxes.maxX[i]);
+        const float minY = finite(boxes.minY[i]), maxY = finite(boxes.maxY[i]);
         if (usable == 0)
         {
-            left = boxes.minX[i];
-            top = boxes.minY[i];
-            right = boxes.maxX[i];
-            bottom = boxes.maxY[i];
+            left = minX;
+            top = minY;
+            right = maxX;
+            bottom = maxY;
         }
-        left = std::min(left, boxes.minX[i]);
-        top = std::min(top, boxes.minY[i]);
-        right = std::max(right, boxes.maxX[i]);
-        bottom = std::max(bottom, boxes.maxY[i]);
-        sideSum += 0.5 * (double(boxes.maxX[i]) - boxes.minX[i] + boxes.maxY[i] - boxes.minY[i]);
+        left = std::min(left, minX);
+        top = std::min(top, minY);
+        right = std::max(right, maxX);
+        bottom = std::max(bottom, maxY);
+        sideSum += 0.5 * ((double(maxX) - minX) + (double(maxY) - minY));
         ++usable;
     }
     originX = left;
@@ -52,19 +59,23 @@ void GridBroadphase::chooseGrid()
                   : usable > 0        ? kCellSizePerAverageSide * sideSum / double(usable)
                                       : 1.0;
     if (!(cell > 0.0) || !std::isfinite(cell))
-        cell = std::max({width, height, 1.0}); // every box has zero size: one cell per axis
-    double cellCount = std::ceil(width / cell + 1e-9) * std::ceil(height / cell + 1e-9);
+        cell = std::max({width, height, 1.0}); // every box has zero size: one big cell
+    // [slide:grid-size]
+    // Never more than a few cells per box: a lone box far away (or a tiny cell size) would
+    // otherwise make a grid of mostly empty cells. Grow the cells instead.
     const double maxCells = kMaxCellsPerItem * double(count) + 16.0;
-    if (cellCount > maxCells)
+    double cellsX = std::max(1.0, std::ceil(width / cell));
+    double cellsY = std::max(1.0, std::ceil(height / cell));
+    if (cellsX * cellsY > maxCells)
     {
-        cell *= std::sqrt(cellCount / maxCells);
-        cellCount = std::ceil(width / cell) * std::ceil(height / cell);
+        cell *= std::sqrt(cellsX * cellsY / maxCells);
+        cellsX = std::max(1.0, std::ceil(width / cell));
+        cellsY = std::max(1.0, std::ceil(height / cell));
     }
-    columns = static_cast<int>(std::clamp(std::ceil(width / cell), 1.0, maxCells));
-    rows = static_cast<int>(std::clamp(std::ceil(height / cell), 1.0, maxCells / columns + 1.0));
-    usedCellSize = static_cast<float>(cell);
-    if (!(usedCellSize > 0.f) || !std::isfinite(usedCellSize))
-        usedCellSize = 3e38f;
+    // [/slide]
+    columns = static_cast<int>(std::min(cellsX, maxCells));
+    rows = static_cast<int>(std::min(cellsY, std::floor(maxCells / columns) + 1.0));
+    usedCellSize = static_cast<float>(std::min(cell, double(largest)));
 }
 
 void GridBroadphase::assignCells()
@@ -175,7 +186,8 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     pairs.clear();
     testCells(pairs);
     // Cells are visited in space order; the interface promises (first, second) order.
-    std::sort(pairs.begin(), pairs.end(), [](const Pair& p, const Pair& q)
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& p, const Pair& q)
               { return p.first != q.first ? p.first < q.first : p.second < q.second; });
     lastStats.pairsFound = pairs.size();
 }

@@ -23,10 +23,11 @@ std::int32_t QuadtreeBroadphase::build(const sf::FloatRect& region, std::uint32_
     const float midY = region.top + region.height / 2.f;
     const float right = rightOf(region);
     const float bottom = bottomOf(region);
-    const sf::FloatRect quarters[4] = {{region.left, region.top, midX - region.left, midY - region.top},
-                                       {midX, region.top, right - midX, midY - region.top},
-                                       {region.left, midY, midX - region.left, bottom - midY},
-                                       {midX, midY, right - midX, bottom - midY}};
+    const sf::FloatRect quarters[4] = {
+        {region.left, region.top, midX - region.left, midY - region.top},
+        {midX, region.top, right - midX, midY - region.top},
+        {region.left, midY, midX - region.left, bottom - midY},
+        {midX, midY, right - midX, bottom - midY}};
     // [slide:quadtree-insert]
     // A box goes down into a quarter only if it fits there whole. The quarters share their
     // split lines, but touching is not colliding, so boxes in different quarters can never
@@ -135,7 +136,8 @@ void QuadtreeBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
         build(root, 0, static_cast<std::uint32_t>(order.size()), 0);
         testNode(0, pairs);
     }
-    std::sort(pairs.begin(), pairs.end(), [](const Pair& p, const Pair& q)
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& p, const Pair& q)
               { return p.first != q.first ? p.first < q.first : p.second < q.second; });
     lastStats.pairsTested = tested;
     lastStats.pairsFound = pairs.size();

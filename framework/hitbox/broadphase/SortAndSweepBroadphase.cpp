@@ -31,7 +31,8 @@ void SortAndSweepBroadphase::sortByLeftEdge()
     // [/slide]
     if (moves > moveBudget)
     {
-        std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b)
+        std::sort(order.begin(), order.end(),
+                  [this](std::uint32_t a, std::uint32_t b)
                   { return boxes.minX[a] < boxes.minX[b]; });
     }
 }
@@ -71,7 +72,8 @@ void SortAndSweepBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
     }
     // [/slide]
     // The sweep finds pairs in x order; the interface promises (first, second) order.
-    std::sort(pairs.begin(), pairs.end(), [](const Pair& p, const Pair& q)
+    std::sort(pairs.begin(), pairs.end(),
+              [](const Pair& p, const Pair& q)
               { return p.first != q.first ? p.first < q.first : p.second < q.second; });
     lastStats.pairsTested = tested;
     lastStats.pairsFound = pairs.size();
