@@ -127,11 +127,12 @@ void GridBroadphase::listCells()
                 ++cellStart[std::size_t(cy) * columns + cx + 1];
     for (std::size_t c = 0; c < cellCount; ++c)
         cellStart[c + 1] += cellStart[c]; // now cellStart[c + 1] = end of cell c
-    cellItems.resize(cellStart[cellCount]);
+    entries.resize(cellStart[cellCount]);
     for (std::size_t i = 0; i < count; ++i)
         for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
             for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                cellItems[cellStart[std::size_t(cy) * columns + cx]++] = std::uint32_t(i);
+                entries.add(cellStart[std::size_t(cy) * columns + cx]++, i, boxes,
+                            cx == cellX0[i], cy == cellY0[i]);
     // Filling moved every start to its cell's end: shift back by one cell.
     for (std::size_t c = cellCount; c > 0; --c)
         cellStart[c] = cellStart[c - 1];
@@ -139,42 +140,101 @@ void GridBroadphase::listCells()
     // [/slide]
 }
 
-void GridBroadphase::testCells(std::vector<Pair>& pairs)
+void GridBroadphase::Entries::resize(std::size_t size)
+{
+    item.resize(size);
+    minX.resize(size);
+    maxX.resize(size);
+    minY.resize(size);
+    maxY.resize(size);
+    firstCell.resize(size);
+    layer.resize(size);
+    mask.resize(size);
+}
+
+void GridBroadphase::Entries::add(std::size_t slot, std::size_t i, const BoxArrays& boxes,
+                                  bool firstColumn, bool firstRow)
+{
+    item[slot] = static_cast<std::uint32_t>(i);
+    minX[slot] = boxes.minX[i];
+    maxX[slot] = boxes.maxX[i];
+    minY[slot] = boxes.minY[i];
+    maxY[slot] = boxes.maxY[i];
+    firstCell[slot] = static_cast<std::uint8_t>(int(firstColumn) | (int(firstRow) << 1));
+    layer[slot] = boxes.layer[i];
+    mask[slot] = boxes.mask[i];
+}
+
+void GridBroadphase::testCells()
 {
     std::size_t found = 0;
     std::size_t tested = 0;
-    for (int cy = 0; cy < rows; ++cy)
+    std::vector<Pair>& cellPairs = cellOrderPairs;
+    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
+    for (std::size_t cell = 0; cell < cellCount; ++cell)
     {
-        for (int cx = 0; cx < columns; ++cx)
+        const std::uint32_t begin = cellStart[cell];
+        const std::uint32_t end = cellStart[cell + 1];
+        if (end - begin < 2)
+            continue; // most cells: nothing to test, and no hashing to find that out
+        tested += std::size_t(end - begin) * (end - begin - 1) / 2;
+        if (cellPairs.size() < found + std::size_t(end - begin) * (end - begin - 1) / 2)
+            cellPairs.resize(std::max(2 * cellPairs.size(),
+                                        found + std::size_t(end - begin) * (end - begin)));
+        // [slide:grid-test]
+        for (std::uint32_t p = begin; p < end; ++p)
         {
-            const std::size_t cell = std::size_t(cy) * columns + cx;
-            const std::uint32_t begin = cellStart[cell];
-            const std::uint32_t end = cellStart[cell + 1];
-            if (end - begin < 2)
-                continue;
-            tested += std::size_t(end - begin) * (end - begin - 1) / 2;
-            for (std::uint32_t p = begin; p < end; ++p)
+            const float minX = entries.minX[p], maxX = entries.maxX[p];
+            const float minY = entries.minY[p], maxY = entries.maxY[p];
+            for (std::uint32_t q = p + 1; q < end; ++q)
             {
-                const std::uint32_t a = cellItems[p];
-                if (pairs.size() < found + (end - p))
-                    pairs.resize(std::max(2 * pairs.size(), found + (end - p)));
-                for (std::uint32_t q = p + 1; q < end; ++q)
-                {
-                    const std::uint32_t b = cellItems[q];
-                    // Report a pair only in the lowest cell both boxes cover (the top-left
-                    // corner of where their cell ranges meet), so it is reported once.
-                    const bool lowestSharedCell = (std::max(cellX0[a], cellX0[b]) == cx) &
-                                                  (std::max(cellY0[a], cellY0[b]) == cy);
-                    const bool hit = lowestSharedCell & boxes.allowed(a, b) & boxes.overlap(a, b);
-                    // Branch-free: always write, only keep it (advance) on a hit.
-                    pairs[found] = {a, b};
-                    found += hit;
-                }
+                // Two boxes share several cells? Only the first cell of both (their first
+                // column and first row) reports them, so each pair is reported once.
+                const bool firstSharedCell = (entries.firstCell[p] | entries.firstCell[q]) == 3;
+                const bool allowed = ((entries.layer[p] & entries.mask[q]) != 0) &
+                                     ((entries.layer[q] & entries.mask[p]) != 0);
+                const bool overlap = (minX < entries.maxX[q]) & (entries.minX[q] < maxX) &
+                                     (minY < entries.maxY[q]) & (entries.minY[q] < maxY);
+                // Branch-free: always write the pair, keep it (move on) only on a hit.
+                cellPairs[found] = {entries.item[p], entries.item[q]};
+                found += firstSharedCell & allowed & overlap;
             }
         }
+        // [/slide]
     }
-    pairs.resize(found);
+    cellPairs.resize(found);
     lastStats.pairsTested = tested;
+}
+
+void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
+{
+    // Cells find pairs in space order; the interface promises (first, second) order. A
+    // counting sort by `first` is one pass over the pairs (std::sort needs about 17 at
+    // 100,000 pairs); pairs with the same first come from different cells only when a box
+    // covers several cells, so those few are put in order by insertion sort.
+    const std::size_t count = boxes.size();
+    pairStart.assign(count + 1, 0);
+    for (const Pair& pair : cellOrderPairs)
+        ++pairStart[pair.first + 1];
+    for (std::size_t i = 0; i < count; ++i)
+        pairStart[i + 1] += pairStart[i];
+    pairs.resize(cellOrderPairs.size());
+    for (const Pair& pair : cellOrderPairs)
+        pairs[pairStart[pair.first]++] = pair; // afterwards pairStart[i] = end of i's pairs
+    std::uint32_t begin = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const std::uint32_t end = pairStart[i];
+        for (std::uint32_t k = begin + 1; k < end; ++k)
+        {
+            const Pair moving = pairs[k];
+            std::uint32_t j = k;
+            for (; j > begin && pairs[j - 1].second > moving.second; --j)
+                pairs[j] = pairs[j - 1];
+            pairs[j] = moving;
+        }
+        begin = end;
+    }
 }
 
 void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
@@ -183,12 +243,8 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     chooseGrid();
     assignCells();
     listCells();
-    pairs.clear();
-    testCells(pairs);
-    // Cells are visited in space order; the interface promises (first, second) order.
-    std::sort(pairs.begin(), pairs.end(),
-              [](const Pair& p, const Pair& q)
-              { return p.first != q.first ? p.first < q.first : p.second < q.second; });
+    testCells();
+    sortPairs(pairs);
     lastStats.pairsFound = pairs.size();
 }
 

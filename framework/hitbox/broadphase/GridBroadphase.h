@@ -32,7 +32,21 @@ private:
     void chooseGrid();
     void assignCells();
     void listCells();
-    void testCells(std::vector<Pair>& pairs);
+    void testCells();
+    void sortPairs(std::vector<Pair>& pairs);
+
+    // One entry per (cell, box): the box's numbers copied next to its cell's other boxes
+    // (structure of arrays), so testing a cell reads memory in order.
+    struct Entries
+    {
+        std::vector<std::uint32_t> item;
+        std::vector<float> minX, maxX, minY, maxY;
+        std::vector<std::uint8_t> firstCell; // bit 0: the box's first column, bit 1: first row
+        std::vector<std::uint32_t> layer, mask;
+        void resize(std::size_t size);
+        void add(std::size_t slot, std::size_t i, const BoxArrays& boxes, bool firstColumn,
+                 bool firstRow);
+    };
 
     float fixedCellSize;
     BoxArrays boxes;
@@ -44,9 +58,11 @@ private:
 
     // Per item: the range of cells it covers (inclusive). Empty (x0 > x1) for NaN boxes.
     std::vector<int> cellX0, cellY0, cellX1, cellY1;
-    // Cell c's items are cellItems[cellStart[c] .. cellStart[c + 1]), in item order.
+    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
     std::vector<std::uint32_t> cellStart;
-    std::vector<std::uint32_t> cellItems;
+    Entries entries;
+    std::vector<Pair> cellOrderPairs;     // the pairs in the order the cells found them
+    std::vector<std::uint32_t> pairStart; // counting sort of the pairs by `first`
 };
 
 } // namespace hitbox
