@@ -7,7 +7,7 @@ namespace
 {
 constexpr float kSmallestSide = 0.5f;
 constexpr float kLargestSide = 2.0f;
-constexpr float kTopSpeed = 2.f;        // units per second
+constexpr float kTopSpeed = 2.f;         // units per second
 constexpr float kFrameTime = 1.f / 60.f; // seconds
 // Two boxes of average sides overlap when their centres are within (wa+wb) x (ha+hb) = 2.5 x
 // 2.5 units of each other, so with this much area per box each overlaps about three others.

@@ -11,7 +11,7 @@ namespace
 
 // Cell size = this times the average box side. Measured in tests/benchmarks (see
 // docs/performance.md): smaller cells list big boxes many times, bigger cells test more pairs.
-constexpr float kCellSizePerAverageSide = 1.0f;
+constexpr float kCellSizePerAverageSide = 2.0f;
 // Never more than this many cells per item, so empty space (or one far-away object) cannot
 // make the grid huge: the cell size grows instead.
 constexpr double kMaxCellsPerItem = 4.0;
@@ -131,38 +131,20 @@ void GridBroadphase::listCells()
     for (std::size_t i = 0; i < count; ++i)
         for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
             for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                entries.add(cellStart[std::size_t(cy) * columns + cx]++, i, boxes,
-                            cx == cellX0[i], cy == cellY0[i]);
+                entries[cellStart[std::size_t(cy) * columns + cx]++] = {
+                    boxes.minX[i],
+                    boxes.maxX[i],
+                    boxes.minY[i],
+                    boxes.maxY[i],
+                    std::uint32_t(i),
+                    boxes.layer[i],
+                    boxes.mask[i],
+                    std::uint32_t(cx == cellX0[i]) | std::uint32_t(cy == cellY0[i]) << 1};
     // Filling moved every start to its cell's end: shift back by one cell.
     for (std::size_t c = cellCount; c > 0; --c)
         cellStart[c] = cellStart[c - 1];
     cellStart[0] = 0;
     // [/slide]
-}
-
-void GridBroadphase::Entries::resize(std::size_t size)
-{
-    item.resize(size);
-    minX.resize(size);
-    maxX.resize(size);
-    minY.resize(size);
-    maxY.resize(size);
-    firstCell.resize(size);
-    layer.resize(size);
-    mask.resize(size);
-}
-
-void GridBroadphase::Entries::add(std::size_t slot, std::size_t i, const BoxArrays& boxes,
-                                  bool firstColumn, bool firstRow)
-{
-    item[slot] = static_cast<std::uint32_t>(i);
-    minX[slot] = boxes.minX[i];
-    maxX[slot] = boxes.maxX[i];
-    minY[slot] = boxes.minY[i];
-    maxY[slot] = boxes.maxY[i];
-    firstCell[slot] = static_cast<std::uint8_t>(int(firstColumn) | (int(firstRow) << 1));
-    layer[slot] = boxes.layer[i];
-    mask[slot] = boxes.mask[i];
 }
 
 void GridBroadphase::testCells()
@@ -178,31 +160,30 @@ void GridBroadphase::testCells()
         if (end - begin < 2)
             continue; // most cells: nothing to test, and no hashing to find that out
         tested += std::size_t(end - begin) * (end - begin - 1) / 2;
-        if (cellPairs.size() < found + std::size_t(end - begin) * (end - begin - 1) / 2)
-            cellPairs.resize(std::max(2 * cellPairs.size(),
-                                        found + std::size_t(end - begin) * (end - begin)));
         // [slide:grid-test]
         for (std::uint32_t p = begin; p < end; ++p)
         {
-            const float minX = entries.minX[p], maxX = entries.maxX[p];
-            const float minY = entries.minY[p], maxY = entries.maxY[p];
+            const Entry a = entries[p];
+            // Room for every pair this row could find (the loop below writes unchecked).
+            if (cellPairs.size() < found + (end - p))
+                cellPairs.resize(std::max(2 * cellPairs.size(), found + (end - p)));
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
+                const Entry& b = entries[q];
                 // Two boxes share several cells? Only the first cell of both (their first
                 // column and first row) reports them, so each pair is reported once.
-                const bool firstSharedCell = (entries.firstCell[p] | entries.firstCell[q]) == 3;
-                const bool allowed = ((entries.layer[p] & entries.mask[q]) != 0) &
-                                     ((entries.layer[q] & entries.mask[p]) != 0);
-                const bool overlap = (minX < entries.maxX[q]) & (entries.minX[q] < maxX) &
-                                     (minY < entries.maxY[q]) & (entries.minY[q] < maxY);
+                const bool firstSharedCell = (a.firstCell | b.firstCell) == 3;
+                const bool allowed = ((a.layer & b.mask) != 0) & ((b.layer & a.mask) != 0);
+                const bool overlap =
+                    (a.minX < b.maxX) & (b.minX < a.maxX) & (a.minY < b.maxY) & (b.minY < a.maxY);
                 // Branch-free: always write the pair, keep it (move on) only on a hit.
-                cellPairs[found] = {entries.item[p], entries.item[q]};
+                cellPairs[found] = {a.item, b.item};
                 found += firstSharedCell & allowed & overlap;
             }
         }
         // [/slide]
     }
-    cellPairs.resize(found);
+    cellPairCount = found;
     lastStats.pairsTested = tested;
 }
 
@@ -214,13 +195,15 @@ void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
     // covers several cells, so those few are put in order by insertion sort.
     const std::size_t count = boxes.size();
     pairStart.assign(count + 1, 0);
-    for (const Pair& pair : cellOrderPairs)
-        ++pairStart[pair.first + 1];
+    const Pair* cellPairs = cellOrderPairs.data();
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+        ++pairStart[cellPairs[k].first + 1];
     for (std::size_t i = 0; i < count; ++i)
         pairStart[i + 1] += pairStart[i];
-    pairs.resize(cellOrderPairs.size());
-    for (const Pair& pair : cellOrderPairs)
-        pairs[pairStart[pair.first]++] = pair; // afterwards pairStart[i] = end of i's pairs
+    pairs.resize(cellPairCount);
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+        pairs[pairStart[cellPairs[k].first]++] =
+            cellPairs[k]; // afterwards pairStart[i] = end of i's pairs
     std::uint32_t begin = 0;
     for (std::size_t i = 0; i < count; ++i)
     {

@@ -35,17 +35,14 @@ private:
     void testCells();
     void sortPairs(std::vector<Pair>& pairs);
 
-    // One entry per (cell, box): the box's numbers copied next to its cell's other boxes
-    // (structure of arrays), so testing a cell reads memory in order.
-    struct Entries
+    // One entry per (cell, box): the box's numbers copied next to its cell's other boxes,
+    // so testing a cell reads memory in order, and filling a cell writes one cache line.
+    struct Entry
     {
-        std::vector<std::uint32_t> item;
-        std::vector<float> minX, maxX, minY, maxY;
-        std::vector<std::uint8_t> firstCell; // bit 0: the box's first column, bit 1: first row
-        std::vector<std::uint32_t> layer, mask;
-        void resize(std::size_t size);
-        void add(std::size_t slot, std::size_t i, const BoxArrays& boxes, bool firstColumn,
-                 bool firstRow);
+        float minX, maxX, minY, maxY;
+        std::uint32_t item;
+        std::uint32_t layer, mask;
+        std::uint32_t firstCell; // bit 0: the box's first column, bit 1: its first row
     };
 
     float fixedCellSize;
@@ -60,7 +57,8 @@ private:
     std::vector<int> cellX0, cellY0, cellX1, cellY1;
     // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
     std::vector<std::uint32_t> cellStart;
-    Entries entries;
+    std::vector<Entry> entries;
+    std::size_t cellPairCount = 0;
     std::vector<Pair> cellOrderPairs;     // the pairs in the order the cells found them
     std::vector<std::uint32_t> pairStart; // counting sort of the pairs by `first`
 };
