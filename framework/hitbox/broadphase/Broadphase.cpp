@@ -1,50 +1,28 @@
-// TEMPORARY STAND-IN (see Broadphase.h): brute force under every name.
 #include "hitbox/broadphase/Broadphase.h"
 
-#include "hitbox/geometry/Overlap.h"
+#include "hitbox/broadphase/BruteForceBroadphase.h"
+#include "hitbox/broadphase/GridBroadphase.h"
+#include "hitbox/broadphase/QuadtreeBroadphase.h"
+#include "hitbox/broadphase/SortAndSweepBroadphase.h"
 
 namespace hitbox
 {
-namespace
-{
-
-class StandIn : public Broadphase
-{
-public:
-    explicit StandIn(BroadphaseMethod method) : method(method) {}
-
-    void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override
-    {
-        pairs.clear();
-        counts = {};
-        const auto count = static_cast<std::uint32_t>(items.size());
-        for (std::uint32_t i = 0; i < count; ++i)
-            for (std::uint32_t j = i + 1; j < count; ++j)
-            {
-                const BroadphaseItem& a = items[i];
-                const BroadphaseItem& b = items[j];
-                if (!((a.layer & b.mask) && (b.layer & a.mask)))
-                    continue;
-                ++counts.pairsTested;
-                if (boxVsBox(a.box, b.box))
-                    pairs.push_back({i, j});
-            }
-        counts.pairsFound = pairs.size();
-    }
-    const char* name() const override { return toString(method); }
-    BroadphaseStats stats() const override { return counts; }
-    void drawDebug(DebugRenderer&) const override {}
-
-private:
-    BroadphaseMethod method;
-    BroadphaseStats counts;
-};
-
-} // namespace
 
 std::unique_ptr<Broadphase> makeBroadphase(BroadphaseMethod method)
 {
-    return std::make_unique<StandIn>(method);
+    switch (method)
+    {
+    case BroadphaseMethod::BruteForce:
+        return std::make_unique<BruteForceBroadphase>();
+    case BroadphaseMethod::SortAndSweep:
+        return std::make_unique<SortAndSweepBroadphase>();
+    case BroadphaseMethod::Quadtree:
+        return std::make_unique<QuadtreeBroadphase>();
+    case BroadphaseMethod::Grid:
+        break;
+    }
+    // The grid picks its cell size from the boxes each frame.
+    return std::make_unique<GridBroadphase>();
 }
 
 const char* toString(BroadphaseMethod method)
@@ -52,15 +30,15 @@ const char* toString(BroadphaseMethod method)
     switch (method)
     {
     case BroadphaseMethod::BruteForce:
-        return "brute force";
+        return "BruteForce";
     case BroadphaseMethod::SortAndSweep:
-        return "sort and sweep";
+        return "SortAndSweep";
     case BroadphaseMethod::Grid:
-        return "grid";
+        return "Grid";
     case BroadphaseMethod::Quadtree:
-        return "quadtree";
+        return "Quadtree";
     }
-    return "?";
+    return "Unknown";
 }
 
 } // namespace hitbox

@@ -1,0 +1,41 @@
+#include "hitbox/broadphase/BoxArrays.h"
+
+#include "hitbox/geometry/Shapes.h"
+
+#include <limits>
+
+namespace hitbox
+{
+
+void BoxArrays::load(const std::vector<BroadphaseItem>& items)
+{
+    const std::size_t count = items.size();
+    minX.resize(count);
+    minY.resize(count);
+    maxX.resize(count);
+    maxY.resize(count);
+    layer.resize(count);
+    mask.resize(count);
+    const float inf = std::numeric_limits<float>::infinity();
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        layer[i] = items[i].layer;
+        mask[i] = items[i].mask;
+        if (!isFinite(items[i].box))
+        {
+            // An empty box: min > max, so every overlap test with it is false.
+            minX[i] = minY[i] = inf;
+            maxX[i] = maxY[i] = -inf;
+            continue;
+        }
+        // The same arithmetic as boxVsBox (normalised, then left + width), so the broadphase
+        // and the exact test agree to the last bit, even at huge coordinates.
+        const sf::FloatRect box = normalised(items[i].box);
+        minX[i] = box.left;
+        minY[i] = box.top;
+        maxX[i] = rightOf(box);
+        maxY[i] = bottomOf(box);
+    }
+}
+
+} // namespace hitbox
