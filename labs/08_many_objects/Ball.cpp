@@ -2,7 +2,10 @@
 
 namespace
 {
-float dot(sf::Vector2f a, sf::Vector2f b) { return a.x * b.x + a.y * b.y; }
+float dot(sf::Vector2f a, sf::Vector2f b)
+{
+    return a.x * b.x + a.y * b.y;
+}
 } // namespace
 
 void bounceApart(Ball& a, Ball& b, const hitbox::Contact& contact)

@@ -25,8 +25,8 @@ struct Ball
     int owner = 0; // which ship a ship or a bullet belongs to (0 or 1)
     std::uint32_t layer = 1;
     std::uint32_t mask = 0xFFFFFFFF;
-    float age = 0.f;    // seconds since it appeared (bullets expire)
-    int responses = 0;  // collision responses in the last step
+    float age = 0.f;   // seconds since it appeared (bullets expire)
+    int responses = 0; // collision responses in the last step
 
     hitbox::Circle circle() const { return {position, radius}; }
     // The cheap bound the broadphase sorts and buckets: the square around the circle.

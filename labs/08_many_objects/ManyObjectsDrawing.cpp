@@ -26,7 +26,7 @@ const sf::Color cellTested{95, 110, 135};
 const sf::Color cellOverlapping{240, 90, 80};
 const sf::Color cellWasted{210, 60, 210}; // on or below the diagonal, or tested twice
 
-const sf::FloatRect tableArea{650.f, 120.f, 520.f, 500.f};
+const sf::FloatRect tableArea{660.f, 60.f, 500.f, 500.f};
 
 // Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
 // that size nobody can tell.
@@ -156,8 +156,8 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
     const std::size_t count = table.size();
     if (count == 0)
         return;
-    const float cell = std::min(40.f, std::min(tableArea.width, tableArea.height) /
-                                          static_cast<float>(count + 1));
+    const float cell =
+        std::min(40.f, std::min(tableArea.width, tableArea.height) / static_cast<float>(count + 1));
     const sf::Vector2f origin{tableArea.left + cell, tableArea.top + cell};
     sf::VertexArray cells(sf::Triangles);
     for (std::uint32_t row = 0; row < count; ++row)
@@ -210,7 +210,11 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
     const char* sceneNames[] = {"1 crowd", "2 pair table", "3 layers"};
     std::string lines = std::string("Scene ") + sceneNames[static_cast<int>(scene)] +
                         "    balls: " + withCommas(balls.size()) +
-                        "    method: " + hitbox::toString(method) + "  (M)\n";
+                        "    method: " + methodLabel(method) + "  (M)";
+    if (method == hitbox::BroadphaseMethod::Grid)
+        lines += "    grid cell: " + fixed(gridCellSize, 0) +
+                 " px = " + std::to_string(gridCellWidths) + " ball widths  ([ ])";
+    lines += "\n";
     sf::Color color = sf::Color::White;
     if (bruteForceSkipped)
     {
@@ -242,12 +246,14 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
     }
 
     sf::Text text = makeText(lines, getFont(), 16, color);
-    text.setPosition(10.f, 6.f);
-    const sf::FloatRect bounds = text.getGlobalBounds();
-    sf::RectangleShape panel({bounds.width + 16.f, bounds.height + 14.f});
-    panel.setPosition(2.f, 2.f);
-    panel.setFillColor(sf::Color(0, 0, 0, 190));
+    // Between the arena and the help bar, the full width of the world.
+    const sf::Vector2f world = getWorldSize();
+    const float top = getArena().top + getArena().height;
+    sf::RectangleShape panel({world.x, world.y - top});
+    panel.setPosition(0.f, top);
+    panel.setFillColor(sf::Color(30, 34, 46));
     target.draw(panel);
+    text.setPosition(10.f, top + 4.f);
     target.draw(text);
 }
 
@@ -258,11 +264,12 @@ void ManyObjectsLevel::measureFrame() const
     if (framesDrawn > 0)
         frameMilliseconds += (milliseconds - frameMilliseconds) / (framesDrawn < 10 ? 2.f : 20.f);
     ++framesDrawn;
-    if (printTimingSeconds > 0.f && timingLogClock.getElapsedTime().asSeconds() >= printTimingSeconds)
+    if (printTimingSeconds > 0.f &&
+        timingLogClock.getElapsedTime().asSeconds() >= printTimingSeconds)
     {
         timingLogClock.restart();
-        std::cout << "timing: " << hitbox::toString(method) << ", " << balls.size() << " balls: "
-                  << getPairsTested() << " pairs tested, " << pairs.size()
+        std::cout << "timing: " << methodLabel(method) << ", " << balls.size()
+                  << " balls: " << getPairsTested() << " pairs tested, " << pairs.size()
                   << " overlapping, collision " << fixed(collisionMilliseconds, 2)
                   << " ms/step, frame " << fixed(frameMilliseconds, 1) << " ms"
                   << (bruteForceSkipped ? " (brute force skipped)" : "") << std::endl;

@@ -3,6 +3,7 @@
 #include "Rules.h"
 
 #include "hitbox/Input.h"
+#include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/geometry/Overlap.h"
 
 #include <algorithm>
@@ -12,9 +13,10 @@
 
 namespace
 {
-// The world is the default 1200 x 675; the help bar covers the bottom 24 pixels.
-const sf::FloatRect crowdArena{0.f, 0.f, 1200.f, 651.f};
-const sf::FloatRect tableSceneArena{0.f, 110.f, 600.f, 541.f}; // below the readout
+// The world is the default 1200 x 675: balls above, the readout and the help bar below
+// (so the debug view's grid never covers the numbers).
+const sf::FloatRect crowdArena{0.f, 0.f, 1200.f, 560.f};
+const sf::FloatRect tableSceneArena{0.f, 0.f, 600.f, 560.f};
 
 // Crowd balls cover this fraction of the arena whatever their number, so each ball has a
 // few neighbours at 100 balls and at 100,000 alike (the radius shrinks instead).
@@ -39,6 +41,8 @@ const float pickupRadius = 11.f;
 const int pickupsPerPile = 10;
 const float pickupDrag = 1.5f; // per second: a knocked pickup slides to a stop
 
+const int maxGridCellWidths = 16;
+
 const float pi = 3.14159265f;
 
 sf::Vector2f fromAngle(float angle, float length)
@@ -52,7 +56,6 @@ ManyObjectsLevel::ManyObjectsLevel(const LabSettings& settings)
     : method(settings.method), random(settings.seed),
       printTimingSeconds(settings.printTimingSeconds)
 {
-    broadphase = hitbox::makeBroadphase(method);
     startScene(settings.scene, settings.balls);
 }
 
@@ -71,15 +74,39 @@ void ManyObjectsLevel::startScene(Scene newScene, int count)
         spawnPairTableBalls(std::clamp(count, tableMinBalls, tableMaxBalls));
     else
         spawnLayersScene();
+    rebuildBroadphase();
 }
 
 void ManyObjectsLevel::setMethod(hitbox::BroadphaseMethod newMethod)
 {
     method = newMethod;
-    broadphase = hitbox::makeBroadphase(method);
+    rebuildBroadphase();
 }
 
-void ManyObjectsLevel::setBalls(std::vector<Ball> newBalls) { balls = std::move(newBalls); }
+void ManyObjectsLevel::setBalls(std::vector<Ball> newBalls)
+{
+    balls = std::move(newBalls);
+    rebuildBroadphase();
+}
+
+void ManyObjectsLevel::rebuildBroadphase()
+{
+    if (method != hitbox::BroadphaseMethod::Grid)
+    {
+        broadphase = hitbox::makeBroadphase(method);
+        return;
+    }
+    // The grid's cell follows the balls' size, so a cell holds about the same number of
+    // balls at 100 or 100,000 and the cost per ball stays flat. makeBroadphase would pick
+    // one ball width by itself; the lab lets you change it ([ and ]) to see the trade-off:
+    // small cells, many cells to fill; big cells, many pairs per cell.
+    float widths = 0.f;
+    for (const Ball& ball : balls)
+        widths += 2.f * ball.radius;
+    const float averageWidth = balls.empty() ? 10.f : widths / static_cast<float>(balls.size());
+    gridCellSize = averageWidth * static_cast<float>(gridCellWidths);
+    broadphase = std::make_unique<hitbox::GridBroadphase>(gridCellSize);
+}
 
 Ball ManyObjectsLevel::makeBall(sf::Vector2f position, sf::Vector2f velocity, float radius,
                                 BallKind kind, int owner) const
@@ -143,8 +170,8 @@ void ManyObjectsLevel::spawnLayersScene()
     balls.push_back(makeBall({arena.width * 0.75f, arena.height * 0.5f}, {0.f, -shipSpeed},
                              shipRadius, BallKind::Ship, 1));
     // Piles: pickups start on top of each other. With the rules they stay a pile.
-    const sf::Vector2f piles[] = {{600.f, 130.f}, {600.f, 520.f}, {160.f, 560.f},
-                                  {1060.f, 540.f}, {420.f, 330.f}, {780.f, 330.f}};
+    const sf::Vector2f piles[] = {{600.f, 110.f},  {600.f, 450.f}, {150.f, 460.f},
+                                  {1050.f, 100.f}, {430.f, 280.f}, {770.f, 280.f}};
     std::uniform_real_distribution<float> offset(-pickupRadius * 1.5f, pickupRadius * 1.5f);
     for (const sf::Vector2f pile : piles)
         for (int i = 0; i < pickupsPerPile; ++i)
@@ -164,6 +191,16 @@ void ManyObjectsLevel::handleInput(const Input& input, float)
         startScene(Scene::Layers, 0);
     if (input.isPressed(sf::Keyboard::M))
         setMethod(static_cast<hitbox::BroadphaseMethod>((static_cast<int>(method) + 1) % 4));
+    if (input.isPressed(sf::Keyboard::LBracket) && gridCellWidths > 1)
+    {
+        gridCellWidths /= 2;
+        rebuildBroadphase();
+    }
+    if (input.isPressed(sf::Keyboard::RBracket) && gridCellWidths < maxGridCellWidths)
+    {
+        gridCellWidths *= 2;
+        rebuildBroadphase();
+    }
 
     const bool more = input.isPressed(sf::Keyboard::Up);
     const bool fewer = input.isPressed(sf::Keyboard::Down);
@@ -315,9 +352,18 @@ void ManyObjectsLevel::respond(Ball& a, Ball& b, const hitbox::Contact& contact)
         ++pickupBumps;
 }
 
-Scene ManyObjectsLevel::getScene() const { return scene; }
-hitbox::BroadphaseMethod ManyObjectsLevel::getMethod() const { return method; }
-const std::vector<Ball>& ManyObjectsLevel::getBalls() const { return balls; }
+Scene ManyObjectsLevel::getScene() const
+{
+    return scene;
+}
+hitbox::BroadphaseMethod ManyObjectsLevel::getMethod() const
+{
+    return method;
+}
+const std::vector<Ball>& ManyObjectsLevel::getBalls() const
+{
+    return balls;
+}
 
 sf::FloatRect ManyObjectsLevel::getArena() const
 {
@@ -331,16 +377,38 @@ std::size_t ManyObjectsLevel::getPairsTested() const
     return broadphase->stats().pairsTested;
 }
 
-std::size_t ManyObjectsLevel::getPairsOverlapping() const { return pairs.size(); }
-std::size_t ManyObjectsLevel::getContacts() const { return contacts; }
-bool ManyObjectsLevel::isBruteForceSkipped() const { return bruteForceSkipped; }
-const PairTable& ManyObjectsLevel::getPairTable() const { return table; }
-std::size_t ManyObjectsLevel::getOwnShipHits() const { return ownShipHits; }
-std::size_t ManyObjectsLevel::getPickupBumps() const { return pickupBumps; }
+std::size_t ManyObjectsLevel::getPairsOverlapping() const
+{
+    return pairs.size();
+}
+std::size_t ManyObjectsLevel::getContacts() const
+{
+    return contacts;
+}
+bool ManyObjectsLevel::isBruteForceSkipped() const
+{
+    return bruteForceSkipped;
+}
+const PairTable& ManyObjectsLevel::getPairTable() const
+{
+    return table;
+}
+std::size_t ManyObjectsLevel::getOwnShipHits() const
+{
+    return ownShipHits;
+}
+std::size_t ManyObjectsLevel::getPickupBumps() const
+{
+    return pickupBumps;
+}
+float ManyObjectsLevel::getGridCellSize() const
+{
+    return gridCellSize;
+}
 
 std::string ManyObjectsLevel::getHelpText() const
 {
-    return "Up/Down balls  M method  1 crowd  2 pair table  3 layers";
+    return "Up/Down balls  M method  [ ] grid cell  1 crowd  2 pair table  3 layers";
 }
 
 std::string ManyObjectsLevel::describeState() const
@@ -348,7 +416,7 @@ std::string ManyObjectsLevel::describeState() const
     const char* sceneNames[] = {"crowd", "pair table", "layers"};
     std::ostringstream text;
     text << sceneNames[static_cast<int>(scene)] << ", " << balls.size() << " balls, "
-         << hitbox::toString(method) << ": ";
+         << methodLabel(method) << ": ";
     if (bruteForceSkipped)
         text << "brute force skipped (over " << bruteForceBallLimit << " balls)";
     else
@@ -360,6 +428,22 @@ std::string ManyObjectsLevel::describeState() const
         text << "; bullets hit their own ship " << ownShipHits << " times, pickups bumped "
              << pickupBumps << " times";
     return text.str();
+}
+
+const char* methodLabel(hitbox::BroadphaseMethod method)
+{
+    switch (method)
+    {
+    case hitbox::BroadphaseMethod::BruteForce:
+        return "brute force";
+    case hitbox::BroadphaseMethod::SortAndSweep:
+        return "sort and sweep";
+    case hitbox::BroadphaseMethod::Grid:
+        return "grid";
+    case hitbox::BroadphaseMethod::Quadtree:
+        return "quadtree";
+    }
+    return "?";
 }
 
 hitbox::BroadphaseMethod parseMethod(const std::string& text)

@@ -26,7 +26,10 @@ void PairTable::record(std::uint32_t first, std::uint32_t second, bool overlappi
     }
 }
 
-std::size_t PairTable::size() const { return count; }
+std::size_t PairTable::size() const
+{
+    return count;
+}
 
 int PairTable::timesTested(std::uint32_t row, std::uint32_t column) const
 {
@@ -38,9 +41,15 @@ bool PairTable::isOverlapping(std::uint32_t row, std::uint32_t column) const
     return row < count && column < count && cells[row * count + column].overlapping;
 }
 
-std::size_t PairTable::testsMade() const { return tests; }
+std::size_t PairTable::testsMade() const
+{
+    return tests;
+}
 
-const std::vector<hitbox::Pair>& PairTable::overlappingPairs() const { return overlaps; }
+const std::vector<hitbox::Pair>& PairTable::overlappingPairs() const
+{
+    return overlaps;
+}
 
 void testEveryPair(const std::vector<hitbox::BroadphaseItem>& items, PairTable& table)
 {

@@ -24,8 +24,8 @@ int main(int argc, char* argv[])
                            LabSettings settings;
                            settings.scene = parseScene(options.get("--scene", "crowd"));
                            const int defaultBalls = settings.scene == Scene::PairTable ? 12 : 1000;
-                           settings.balls = std::stoi(
-                               options.get("--balls", std::to_string(defaultBalls)));
+                           settings.balls =
+                               std::stoi(options.get("--balls", std::to_string(defaultBalls)));
                            settings.method = parseMethod(options.get("--method", "grid"));
                            settings.seed = options.seed;
                            settings.printTimingSeconds =

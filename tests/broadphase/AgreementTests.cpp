@@ -65,8 +65,7 @@ std::string firstDifference(const std::vector<Pair>& expected, const std::vector
         const bool actualEnded = k == actual.size();
         if (expectedEnded && actualEnded)
             return "";
-        const bool same = !expectedEnded && !actualEnded &&
-                          expected[k].first == actual[k].first &&
+        const bool same = !expectedEnded && !actualEnded && expected[k].first == actual[k].first &&
                           expected[k].second == actual[k].second;
         if (same)
             continue;

@@ -17,12 +17,11 @@ using hitbox::Pair;
 namespace
 {
 
-const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce,
-                                       BroadphaseMethod::SortAndSweep, BroadphaseMethod::Grid,
-                                       BroadphaseMethod::Quadtree};
+const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce, BroadphaseMethod::SortAndSweep,
+                                       BroadphaseMethod::Grid, BroadphaseMethod::Quadtree};
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>> pairsFound(
-    BroadphaseMethod method, const std::vector<BroadphaseItem>& items)
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+pairsFound(BroadphaseMethod method, const std::vector<BroadphaseItem>& items)
 {
     std::vector<Pair> pairs;
     hitbox::makeBroadphase(method)->findPairs(items, pairs);
@@ -47,8 +46,8 @@ TEST_P(EveryBroadphase, OverlappingBoxesPairOnce)
 TEST_P(EveryBroadphase, TouchingEdgesAndCornersDoNotPair)
 {
     const std::vector<BroadphaseItem> items = {{{0.f, 0.f, 10.f, 10.f}},
-                                               {{10.f, 0.f, 10.f, 10.f}},   // right edge
-                                               {{0.f, 10.f, 10.f, 10.f}},   // bottom edge
+                                               {{10.f, 0.f, 10.f, 10.f}},     // right edge
+                                               {{0.f, 10.f, 10.f, 10.f}},     // bottom edge
                                                {{-10.f, -10.f, 10.f, 10.f}}}; // corner
     EXPECT_EQ(pairsFound(GetParam(), items), PairList{});
 }
@@ -73,9 +72,9 @@ TEST_P(EveryBroadphase, PairsComeSortedByFirstThenSecond)
 TEST_P(EveryBroadphase, AZeroSizeBoxPairsOnlyWhenStrictlyInside)
 {
     const std::vector<BroadphaseItem> items = {{{0.f, 0.f, 10.f, 10.f}},
-                                               {{5.f, 5.f, 0.f, 0.f}},    // inside: pairs
-                                               {{10.f, 5.f, 0.f, 0.f}},   // on the edge: no
-                                               {{5.f, 5.f, 0.f, 0.f}}};   // same point as 1: no
+                                               {{5.f, 5.f, 0.f, 0.f}},  // inside: pairs
+                                               {{10.f, 5.f, 0.f, 0.f}}, // on the edge: no
+                                               {{5.f, 5.f, 0.f, 0.f}}}; // same point as 1: no
     EXPECT_EQ(pairsFound(GetParam(), items), (PairList{{0, 1}, {0, 3}}));
 }
 
@@ -101,9 +100,9 @@ TEST_P(EveryBroadphase, NaNAndInfiniteBoxesNeverPair)
 TEST_P(EveryBroadphase, EveryBoxInOneSpotPairsWithEveryOther)
 {
     const std::vector<BroadphaseItem> items(5, BroadphaseItem{{40.f, 40.f, 8.f, 8.f}});
-    EXPECT_EQ(pairsFound(GetParam(), items),
-              (PairList{{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}, {2, 3}, {2, 4},
-                        {3, 4}}));
+    EXPECT_EQ(
+        pairsFound(GetParam(), items),
+        (PairList{{0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 2}, {1, 3}, {1, 4}, {2, 3}, {2, 4}, {3, 4}}));
 }
 
 TEST_P(EveryBroadphase, HugeAndNegativeCoordinatesWork)
@@ -120,9 +119,9 @@ TEST_P(EveryBroadphase, ABulletIgnoresItsOwnerAndPickupsIgnoreEachOther)
     const std::uint32_t player = 1, bullet = 2, enemy = 4, pickup = 8;
     const std::vector<BroadphaseItem> items = {
         {{0.f, 0.f, 20.f, 20.f}, player, enemy | pickup},
-        {{5.f, 5.f, 4.f, 4.f}, bullet, enemy},        // fired by the player: ignores it
+        {{5.f, 5.f, 4.f, 4.f}, bullet, enemy}, // fired by the player: ignores it
         {{10.f, 10.f, 20.f, 20.f}, enemy, player | bullet},
-        {{12.f, 0.f, 6.f, 6.f}, pickup, player},      // overlaps the other pickup: ignored
+        {{12.f, 0.f, 6.f, 6.f}, pickup, player}, // overlaps the other pickup: ignored
         {{14.f, 2.f, 6.f, 6.f}, pickup, player}};
     EXPECT_EQ(pairsFound(GetParam(), items), (PairList{{0, 2}, {0, 3}, {0, 4}}));
 }
@@ -205,8 +204,8 @@ TEST(Broadphase, DrawsItsStructureForTheDebugView)
     std::vector<BroadphaseItem> items(20, BroadphaseItem{{0.f, 0.f, 30.f, 30.f}});
     for (std::size_t i = 0; i < items.size(); ++i)
         items[i].box.left = 20.f * static_cast<float>(i);
-    for (BroadphaseMethod method : {BroadphaseMethod::SortAndSweep, BroadphaseMethod::Grid,
-                                    BroadphaseMethod::Quadtree})
+    for (BroadphaseMethod method :
+         {BroadphaseMethod::SortAndSweep, BroadphaseMethod::Grid, BroadphaseMethod::Quadtree})
     {
         auto broadphase = hitbox::makeBroadphase(method);
         std::vector<Pair> pairs;

@@ -31,8 +31,8 @@ sf::FloatRect ordinaryBox(std::mt19937& random)
 
 std::string describe(Kind kind)
 {
-    const char* names[] = {"Scattered", "OnGridLines",  "BigAndSmall", "FarAndHuge",
-                           "ZeroSize",  "OneSpot",      "NegativeSize", "WithNaN"};
+    const char* names[] = {"Scattered", "OnGridLines", "BigAndSmall",  "FarAndHuge",
+                           "ZeroSize",  "OneSpot",     "NegativeSize", "WithNaN"};
     return names[static_cast<int>(kind)];
 }
 

@@ -28,9 +28,8 @@ public:
     std::vector<GameObject*> hits;
 };
 
-const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce,
-                                       BroadphaseMethod::SortAndSweep, BroadphaseMethod::Grid,
-                                       BroadphaseMethod::Quadtree};
+const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce, BroadphaseMethod::SortAndSweep,
+                                       BroadphaseMethod::Grid, BroadphaseMethod::Quadtree};
 
 TEST(World, CallsCollisionResponseOnBothObjectsOncePerPair)
 {
@@ -112,7 +111,7 @@ TEST(World, TheRuleCallbackVetoesPairsBeforeTheExactTest)
             return &first != &c && &second != &c; // c collides with nothing
         });
     EXPECT_EQ(world.checkCollisions(), 1u);
-    EXPECT_EQ(calls, 3); // three overlapping pairs reached the rule
+    EXPECT_EQ(calls, 3);                  // three overlapping pairs reached the rule
     EXPECT_EQ(world.getExactTests(), 1u); // only the allowed one got the exact test
     EXPECT_EQ(a.hits, std::vector<GameObject*>{&b});
     EXPECT_TRUE(c.hits.empty());

@@ -19,10 +19,11 @@ inline std::string text(sf::Vector2f vector)
 }
 
 inline testing::AssertionResult vectorsNear(const char* actualText, const char* expectedText,
-                                            const char*, sf::Vector2f actual,
-                                            sf::Vector2f expected, float tolerance)
+                                            const char*, sf::Vector2f actual, sf::Vector2f expected,
+                                            float tolerance)
 {
-    if (std::abs(actual.x - expected.x) <= tolerance && std::abs(actual.y - expected.y) <= tolerance)
+    if (std::abs(actual.x - expected.x) <= tolerance &&
+        std::abs(actual.y - expected.y) <= tolerance)
         return testing::AssertionSuccess();
     return testing::AssertionFailure()
            << actualText << " is " << text(actual) << ", expected " << expectedText << " = "
@@ -31,5 +32,5 @@ inline testing::AssertionResult vectorsNear(const char* actualText, const char* 
 } // namespace labtesting
 
 // Both coordinates of two sf::Vector2f within `tolerance` of each other.
-#define EXPECT_VEC_NEAR(actual, expected, tolerance) \
+#define EXPECT_VEC_NEAR(actual, expected, tolerance)                                               \
     EXPECT_PRED_FORMAT3(labtesting::vectorsNear, actual, expected, tolerance)

@@ -16,8 +16,8 @@ sf::FloatRect boundsOf(GameObject& object, World::Shape shape)
     if (shape == World::Shape::Box)
         return object.getCollisionBox();
     const Circle circle = object.getBoundingCircle();
-    return {circle.center.x - circle.radius, circle.center.y - circle.radius,
-            2.f * circle.radius, 2.f * circle.radius};
+    return {circle.center.x - circle.radius, circle.center.y - circle.radius, 2.f * circle.radius,
+            2.f * circle.radius};
 }
 
 } // namespace

@@ -187,7 +187,8 @@ TEST(Task2DragTheSelectedBox, DraggingOverAnotherBoxKeepsHoldOfTheFirst)
     player.pressLeft();
     const sf::Vector2f target = uncoveredPointOf(player.level, 1);
     for (int i = 1; i <= 10; ++i)
-        player.moveMouseTo(uncoveredPointOf(player.level, 0) * (1.f - i / 10.f) + target * (i / 10.f));
+        player.moveMouseTo(uncoveredPointOf(player.level, 0) * (1.f - i / 10.f) +
+                           target * (i / 10.f));
     EXPECT_EQ(player.level.getSelectedBox(), 0);
 }
 
