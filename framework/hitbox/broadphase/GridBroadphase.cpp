@@ -11,7 +11,7 @@ namespace
 
 // Cell size = this times the average box side. Measured in tests/benchmarks (see
 // docs/performance.md): smaller cells list big boxes many times, bigger cells test more pairs.
-constexpr float kCellSizePerAverageSide = 1.0f;
+constexpr float kCellSizePerAverageSide = 2.0f;
 // Never more than this many cells per item, so empty space (or one far-away object) cannot
 // make the grid huge: the cell size grows instead.
 constexpr double kMaxCellsPerItem = 4.0;
@@ -127,11 +127,19 @@ void GridBroadphase::listCells()
                 ++cellStart[std::size_t(cy) * columns + cx + 1];
     for (std::size_t c = 0; c < cellCount; ++c)
         cellStart[c + 1] += cellStart[c]; // now cellStart[c + 1] = end of cell c
-    cellItems.resize(cellStart[cellCount]);
+    entries.resize(cellStart[cellCount]);
     for (std::size_t i = 0; i < count; ++i)
         for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
             for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                cellItems[cellStart[std::size_t(cy) * columns + cx]++] = std::uint32_t(i);
+                entries[cellStart[std::size_t(cy) * columns + cx]++] = {
+                    boxes.minX[i],
+                    boxes.maxX[i],
+                    boxes.minY[i],
+                    boxes.maxY[i],
+                    std::uint32_t(i),
+                    boxes.layer[i],
+                    boxes.mask[i],
+                    std::uint32_t(cx == cellX0[i]) | std::uint32_t(cy == cellY0[i]) << 1};
     // Filling moved every start to its cell's end: shift back by one cell.
     for (std::size_t c = cellCount; c > 0; --c)
         cellStart[c] = cellStart[c - 1];
@@ -139,42 +147,77 @@ void GridBroadphase::listCells()
     // [/slide]
 }
 
-void GridBroadphase::testCells(std::vector<Pair>& pairs)
+void GridBroadphase::testCells()
 {
     std::size_t found = 0;
     std::size_t tested = 0;
-    for (int cy = 0; cy < rows; ++cy)
+    std::vector<Pair>& cellPairs = cellOrderPairs;
+    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
+    for (std::size_t cell = 0; cell < cellCount; ++cell)
     {
-        for (int cx = 0; cx < columns; ++cx)
+        const std::uint32_t begin = cellStart[cell];
+        const std::uint32_t end = cellStart[cell + 1];
+        if (end - begin < 2)
+            continue; // most cells: nothing to test, and no hashing to find that out
+        tested += std::size_t(end - begin) * (end - begin - 1) / 2;
+        // [slide:grid-test]
+        for (std::uint32_t p = begin; p < end; ++p)
         {
-            const std::size_t cell = std::size_t(cy) * columns + cx;
-            const std::uint32_t begin = cellStart[cell];
-            const std::uint32_t end = cellStart[cell + 1];
-            if (end - begin < 2)
-                continue;
-            tested += std::size_t(end - begin) * (end - begin - 1) / 2;
-            for (std::uint32_t p = begin; p < end; ++p)
+            const Entry a = entries[p];
+            // Room for every pair this row could find (the loop below writes unchecked).
+            if (cellPairs.size() < found + (end - p))
+                cellPairs.resize(std::max(2 * cellPairs.size(), found + (end - p)));
+            for (std::uint32_t q = p + 1; q < end; ++q)
             {
-                const std::uint32_t a = cellItems[p];
-                if (pairs.size() < found + (end - p))
-                    pairs.resize(std::max(2 * pairs.size(), found + (end - p)));
-                for (std::uint32_t q = p + 1; q < end; ++q)
-                {
-                    const std::uint32_t b = cellItems[q];
-                    // Report a pair only in the lowest cell both boxes cover (the top-left
-                    // corner of where their cell ranges meet), so it is reported once.
-                    const bool lowestSharedCell = (std::max(cellX0[a], cellX0[b]) == cx) &
-                                                  (std::max(cellY0[a], cellY0[b]) == cy);
-                    const bool hit = lowestSharedCell & boxes.allowed(a, b) & boxes.overlap(a, b);
-                    // Branch-free: always write, only keep it (advance) on a hit.
-                    pairs[found] = {a, b};
-                    found += hit;
-                }
+                const Entry& b = entries[q];
+                // Two boxes share several cells? Only the first cell of both (their first
+                // column and first row) reports them, so each pair is reported once.
+                const bool firstSharedCell = (a.firstCell | b.firstCell) == 3;
+                const bool allowed = ((a.layer & b.mask) != 0) & ((b.layer & a.mask) != 0);
+                const bool overlap =
+                    (a.minX < b.maxX) & (b.minX < a.maxX) & (a.minY < b.maxY) & (b.minY < a.maxY);
+                // Branch-free: always write the pair, keep it (move on) only on a hit.
+                cellPairs[found] = {a.item, b.item};
+                found += firstSharedCell & allowed & overlap;
             }
         }
+        // [/slide]
     }
-    pairs.resize(found);
+    cellPairCount = found;
     lastStats.pairsTested = tested;
+}
+
+void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
+{
+    // Cells find pairs in space order; the interface promises (first, second) order. A
+    // counting sort by `first` is one pass over the pairs (std::sort needs about 17 at
+    // 100,000 pairs); pairs with the same first come from different cells only when a box
+    // covers several cells, so those few are put in order by insertion sort.
+    const std::size_t count = boxes.size();
+    pairStart.assign(count + 1, 0);
+    const Pair* cellPairs = cellOrderPairs.data();
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+        ++pairStart[cellPairs[k].first + 1];
+    for (std::size_t i = 0; i < count; ++i)
+        pairStart[i + 1] += pairStart[i];
+    pairs.resize(cellPairCount);
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+        pairs[pairStart[cellPairs[k].first]++] =
+            cellPairs[k]; // afterwards pairStart[i] = end of i's pairs
+    std::uint32_t begin = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const std::uint32_t end = pairStart[i];
+        for (std::uint32_t k = begin + 1; k < end; ++k)
+        {
+            const Pair moving = pairs[k];
+            std::uint32_t j = k;
+            for (; j > begin && pairs[j - 1].second > moving.second; --j)
+                pairs[j] = pairs[j - 1];
+            pairs[j] = moving;
+        }
+        begin = end;
+    }
 }
 
 void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
@@ -183,12 +226,8 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     chooseGrid();
     assignCells();
     listCells();
-    pairs.clear();
-    testCells(pairs);
-    // Cells are visited in space order; the interface promises (first, second) order.
-    std::sort(pairs.begin(), pairs.end(),
-              [](const Pair& p, const Pair& q)
-              { return p.first != q.first ? p.first < q.first : p.second < q.second; });
+    testCells();
+    sortPairs(pairs);
     lastStats.pairsFound = pairs.size();
 }
 

@@ -32,7 +32,18 @@ private:
     void chooseGrid();
     void assignCells();
     void listCells();
-    void testCells(std::vector<Pair>& pairs);
+    void testCells();
+    void sortPairs(std::vector<Pair>& pairs);
+
+    // One entry per (cell, box): the box's numbers copied next to its cell's other boxes,
+    // so testing a cell reads memory in order, and filling a cell writes one cache line.
+    struct Entry
+    {
+        float minX, maxX, minY, maxY;
+        std::uint32_t item;
+        std::uint32_t layer, mask;
+        std::uint32_t firstCell; // bit 0: the box's first column, bit 1: its first row
+    };
 
     float fixedCellSize;
     BoxArrays boxes;
@@ -44,9 +55,12 @@ private:
 
     // Per item: the range of cells it covers (inclusive). Empty (x0 > x1) for NaN boxes.
     std::vector<int> cellX0, cellY0, cellX1, cellY1;
-    // Cell c's items are cellItems[cellStart[c] .. cellStart[c + 1]), in item order.
+    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
     std::vector<std::uint32_t> cellStart;
-    std::vector<std::uint32_t> cellItems;
+    std::vector<Entry> entries;
+    std::size_t cellPairCount = 0;
+    std::vector<Pair> cellOrderPairs;     // the pairs in the order the cells found them
+    std::vector<std::uint32_t> pairStart; // counting sort of the pairs by `first`
 };
 
 } // namespace hitbox
