@@ -224,6 +224,13 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
                  " balls. Press M.\n";
         color = sf::Color(255, 190, 90);
     }
+    else if (stoppedAsTooSlow)
+    {
+        lines += std::string(methodLabel(method)) + " took " + fixed(collisionMilliseconds, 0) +
+                 " ms per step with " + withCommas(balls.size()) +
+                 " balls: stopped, too slow to watch. Press M or Down.\n";
+        color = sf::Color(255, 190, 90);
+    }
     else
     {
         lines += "pairs tested: " + withCommas(getPairsTested()) +
@@ -272,13 +279,14 @@ void ManyObjectsLevel::measureFrame() const
                   << " balls: " << getPairsTested() << " pairs tested, " << pairs.size()
                   << " overlapping, collision " << fixed(collisionMilliseconds, 2)
                   << " ms/step, frame " << fixed(frameMilliseconds, 1) << " ms"
-                  << (bruteForceSkipped ? " (brute force skipped)" : "") << std::endl;
+                  << (bruteForceSkipped ? " (brute force skipped)" : "")
+                  << (stoppedAsTooSlow ? " (stopped: too slow)" : "") << std::endl;
     }
 }
 
 void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
-    if (scene != Scene::PairTable && !bruteForceSkipped)
+    if (scene != Scene::PairTable && !bruteForceSkipped && !stoppedAsTooSlow)
         broadphase->drawDebug(debug);
     // The boxes the pair loop compares, for the scenes small enough to read them.
     if (balls.size() <= 300)

@@ -91,6 +91,8 @@ void ManyObjectsLevel::setBalls(std::vector<Ball> newBalls)
 
 void ManyObjectsLevel::rebuildBroadphase()
 {
+    stoppedAsTooSlow = false;
+    collisionMilliseconds = 0.f;
     if (method != hitbox::BroadphaseMethod::Grid)
     {
         broadphase = hitbox::makeBroadphase(method);
@@ -307,7 +309,7 @@ void ManyObjectsLevel::update(float dt)
 
     bruteForceSkipped = method == hitbox::BroadphaseMethod::BruteForce &&
                         balls.size() > static_cast<std::size_t>(bruteForceBallLimit);
-    if (bruteForceSkipped)
+    if (bruteForceSkipped || stoppedAsTooSlow)
     {
         pairs.clear();
         return;
@@ -317,6 +319,7 @@ void ManyObjectsLevel::update(float dt)
     // Averaged over about 30 steps so the readout is steady enough to read.
     const float milliseconds = clock.getElapsedTime().asSeconds() * 1000.f;
     collisionMilliseconds += (milliseconds - collisionMilliseconds) / 30.f;
+    stoppedAsTooSlow = collisionMilliseconds > slowStepMilliseconds;
 }
 
 void ManyObjectsLevel::findPairsAndRespond()
@@ -419,6 +422,8 @@ std::string ManyObjectsLevel::describeState() const
          << methodLabel(method) << ": ";
     if (bruteForceSkipped)
         text << "brute force skipped (over " << bruteForceBallLimit << " balls)";
+    else if (stoppedAsTooSlow)
+        text << "stopped: too slow";
     else
         text << getPairsTested() << " pairs tested, " << getPairsOverlapping()
              << " boxes overlapping, " << contacts << " circles touching";

@@ -51,6 +51,11 @@ constexpr int bruteForceBallLimit = 3000;
 constexpr int bruteForceBallLimit = 1000;
 #endif
 
+// Any method whose collision step averages more than this stops until the method or the
+// number of balls changes: at 120 steps a second the window would hardly move. (It cannot
+// happen in a test's few steps: the average starts at 0 and needs a dozen slow steps.)
+constexpr float slowStepMilliseconds = 40.f;
+
 class ManyObjectsLevel : public hitbox::Level
 {
 public:
@@ -79,6 +84,8 @@ public:
     std::size_t getPairsOverlapping() const;
     std::size_t getContacts() const;
     bool isBruteForceSkipped() const;
+    // True when the method was stopped for being too slow (see slowStepMilliseconds).
+    bool isStoppedAsTooSlow() const;
     // The table your loop filled this step (pair table scene only).
     const PairTable& getPairTable() const;
     // Since the scene started: responses the rules forbid (both must stay 0 with task 3).
@@ -115,6 +122,7 @@ private:
     PairTable table;
     std::size_t contacts = 0;
     bool bruteForceSkipped = false;
+    bool stoppedAsTooSlow = false;
     std::size_t ownShipHits = 0;
     std::size_t pickupBumps = 0;
     int gridCellWidths = 8; // grid cell = this many average ball widths
