@@ -234,7 +234,7 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
     else
     {
         lines += "pairs tested: " + withCommas(getPairsTested()) +
-                 "    boxes overlapping: " + withCommas(pairs.size()) +
+                 "    boxes overlapping: " + withCommas(candidatePairs.size()) +
                  "    circles touching: " + withCommas(contacts) + "\n";
         lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms per step";
         if (framesDrawn > 1)
@@ -276,7 +276,7 @@ void ManyObjectsLevel::measureFrame() const
     {
         timingLogClock.restart();
         std::cout << "timing: " << methodLabel(method) << ", " << balls.size()
-                  << " balls: " << getPairsTested() << " pairs tested, " << pairs.size()
+                  << " balls: " << getPairsTested() << " pairs tested, " << candidatePairs.size()
                   << " overlapping, collision " << fixed(collisionMilliseconds, 2)
                   << " ms/step, frame " << fixed(frameMilliseconds, 1) << " ms"
                   << (bruteForceSkipped ? " (brute force skipped)" : "")

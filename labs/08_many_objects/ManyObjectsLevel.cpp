@@ -66,7 +66,7 @@ void ManyObjectsLevel::startScene(Scene newScene, int count)
     ownShipHits = 0;
     pickupBumps = 0;
     contacts = 0;
-    pairs.clear();
+    candidatePairs.clear();
     table.reset(0);
     if (scene == Scene::Crowd)
         spawnCrowd(std::max(count, 0));
@@ -311,7 +311,7 @@ void ManyObjectsLevel::update(float dt)
                         balls.size() > static_cast<std::size_t>(bruteForceBallLimit);
     if (bruteForceSkipped || stoppedAsTooSlow)
     {
-        pairs.clear();
+        candidatePairs.clear();
         return;
     }
     const sf::Clock clock;
@@ -326,8 +326,8 @@ void ManyObjectsLevel::findPairsAndRespond()
 {
     // BEGIN TASK 2: ask the broadphase for candidate pairs; respond to those that really touch
     // [slide:lab08-respond]
-    broadphase->findPairs(items, pairs);
-    for (const hitbox::Pair& pair : pairs)
+    broadphase->findPairs(items, candidatePairs);
+    for (const hitbox::Pair& pair : candidatePairs)
     {
         Ball& a = balls[pair.first];
         Ball& b = balls[pair.second];
@@ -338,7 +338,7 @@ void ManyObjectsLevel::findPairsAndRespond()
     }
     // [/slide]
     // STARTER TASK 2
-    // pairs.clear(); // no pairs asked for yet: every ball passes through the others
+    // candidatePairs.clear(); // no pairs asked for yet: every ball passes through the others
     // END TASK 2
 }
 
@@ -382,7 +382,7 @@ std::size_t ManyObjectsLevel::getPairsTested() const
 
 std::size_t ManyObjectsLevel::getPairsOverlapping() const
 {
-    return pairs.size();
+    return candidatePairs.size();
 }
 std::size_t ManyObjectsLevel::getContacts() const
 {

@@ -118,7 +118,7 @@ private:
     std::mt19937 random;
     std::vector<Ball> balls;
     std::vector<hitbox::BroadphaseItem> items; // balls[i].item(), rebuilt every step
-    std::vector<hitbox::Pair> pairs;           // the broadphase's answer this step
+    std::vector<hitbox::Pair> candidatePairs;  // the broadphase's answer this step
     PairTable table;
     std::size_t contacts = 0;
     bool bruteForceSkipped = false;

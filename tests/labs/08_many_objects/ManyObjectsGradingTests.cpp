@@ -52,8 +52,8 @@ referenceOverlaps(const std::vector<BroadphaseItem>& items, bool obeyLayers)
 std::vector<std::pair<std::uint32_t, std::uint32_t>> asPairs(const std::vector<hitbox::Pair>& pairs)
 {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> result;
-    for (const hitbox::Pair& pair : pairs)
-        result.emplace_back(pair.first, pair.second);
+    for (const hitbox::Pair& found : pairs)
+        result.emplace_back(found.first, found.second);
     std::sort(result.begin(), result.end());
     return result;
 }
