@@ -110,7 +110,8 @@ for ((step = 1; step <= max_tasks; step++)); do
         step_targets+=("${lab}_tests")
     done
     build "${step_targets[@]}"
-    for lab in "${!solved_now[@]}"; do
+    for lab in "${labs[@]}"; do
+        [[ -n ${solved_now[$lab]:-} ]] || continue
         program=$(find_test_program "$out/build/debug" "${lab}_tests")
         run_gtest "$program" "$work/$lab" || true
         result=ok

@@ -122,15 +122,13 @@ EOF
 } >"$out/README.md"
 
 # No solution may leak: every solution-only line (a line inside a BEGIN TASK block that
-# appears nowhere else in the lab, not even as starter code) must be absent from the handout.
+# appears nowhere else in any lab, not even as starter code) must be absent from the
+# handout's labs/. Whole lines are compared, blanks around them ignored.
 leaks=0
-checked=0
 solution_lines=$(mktemp)
 trap 'rm -f "$solution_lines"' EXIT
-for lab in "${labs[@]}"; do
-    folder=$(lab_folder "$lab")
-    mapfile -t sources < <(find "$folder" -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.hpp' \))
-    [[ ${#sources[@]} -gt 0 ]] || continue
+mapfile -t sources < <(find labs -path 'labs/[0-9][0-9]_*' -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.hpp' \))
+if [[ ${#sources[@]} -gt 0 ]]; then
     awk '
         { text = $0; sub(/\r$/, "", text); trimmed = text; gsub(/^[ \t]+|[ \t]+$/, "", trimmed) }
         text ~ /^[ \t]*\/\/[ \t]*BEGIN TASK/ { state = "solution"; next }
@@ -140,11 +138,10 @@ for lab in "${labs[@]}"; do
         state == "starter" { sub(/^\/\/ ?/, "", trimmed); elsewhere[trimmed] = 1; next }
         { elsewhere[trimmed] = 1 }
         END { for (line in solution) if (length(line) >= 12 && !(line in elsewhere)) print line }
-        ' "${sources[@]}" >>"$solution_lines"
-done
+        ' "${sources[@]}" >"$solution_lines"
+fi
 checked=$(wc -l <"$solution_lines")
-# Whole lines are compared (blanks around them ignored), in every file of the handout.
-mapfile -t handout_files < <(find "$out" -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.hpp' \))
+mapfile -t handout_files < <(find "$out/labs" -type f)
 while IFS= read -r line; do
     echo "make-handout: solution line leaked into the handout: $line" >&2
     leaks=$((leaks + 1))
