@@ -11,7 +11,7 @@ namespace
 
 // Cell size = this times the average box side. Measured in tests/benchmarks (see
 // docs/performance.md): smaller cells list big boxes many times, bigger cells test more pairs.
-constexpr float kCellSizePerAverageSide = 2.0f;
+constexpr float kCellSizePerAverageSide = 3.0f;
 // Never more than this many cells per item, so empty space (or one far-away object) cannot
 // make the grid huge: the cell size grows instead.
 constexpr double kMaxCellsPerItem = 4.0;
@@ -118,20 +118,22 @@ void GridBroadphase::listCells()
     const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
     // [slide:grid-insert]
     // A counting sort: count each cell's boxes, turn the counts into start positions, then
-    // drop each box into its cells. Boxes go in item order, so every cell's list is sorted,
-    // and the same vectors are reused every frame (no allocation after the first frames).
+    // drop each box into its cells. No hashing and no list per cell: one array holds every
+    // cell's boxes back to back, reused every frame (no allocation after the first frames).
     cellStart.assign(cellCount + 1, 0);
     for (std::size_t i = 0; i < count; ++i)
         for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
             for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                ++cellStart[std::size_t(cy) * columns + cx + 1];
-    for (std::size_t c = 0; c < cellCount; ++c)
-        cellStart[c + 1] += cellStart[c]; // now cellStart[c + 1] = end of cell c
+                ++cellStart[std::size_t(cy) * columns + cx];
+    for (std::size_t c = 1; c <= cellCount; ++c)
+        cellStart[c] += cellStart[c - 1]; // now cellStart[c] = end of cell c
     entries.resize(cellStart[cellCount]);
-    for (std::size_t i = 0; i < count; ++i)
+    // Fill from the last box back, each cell from its end back: afterwards cellStart[c] is
+    // the start of cell c, and every cell's boxes are in item order.
+    for (std::size_t i = count; i-- > 0;)
         for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
             for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                entries[cellStart[std::size_t(cy) * columns + cx]++] = {
+                entries[--cellStart[std::size_t(cy) * columns + cx]] = {
                     boxes.minX[i],
                     boxes.maxX[i],
                     boxes.minY[i],
@@ -140,10 +142,6 @@ void GridBroadphase::listCells()
                     boxes.layer[i],
                     boxes.mask[i],
                     std::uint32_t(cx == cellX0[i]) | std::uint32_t(cy == cellY0[i]) << 1};
-    // Filling moved every start to its cell's end: shift back by one cell.
-    for (std::size_t c = cellCount; c > 0; --c)
-        cellStart[c] = cellStart[c - 1];
-    cellStart[0] = 0;
     // [/slide]
 }
 
