@@ -21,7 +21,7 @@ const sf::FloatRect tableSceneArena{0.f, 0.f, 600.f, 560.f};
 // Crowd balls cover this fraction of the arena whatever their number, so each ball has a
 // few neighbours at 100 balls and at 100,000 alike (the radius shrinks instead).
 const float crowdCoverage = 0.12f;
-const float smallestRadius = 1.f;
+const float smallestRadius = 0.5f;
 const float crowdSpeedMin = 20.f;
 const float crowdSpeedMax = 70.f;
 const int crowdSizes[] = {100, 300, 1000, 3000, 10000, 30000, 100000};
