@@ -188,7 +188,11 @@ void ManyObjectsLevel::handleInput(const Input& input, float)
     if (input.isPressed(sf::Keyboard::Num1))
         startScene(Scene::Crowd, 1000);
     if (input.isPressed(sf::Keyboard::Num2))
+    {
+        // The table is brute force, so the readout's broadphase line matches it.
+        method = hitbox::BroadphaseMethod::BruteForce;
         startScene(Scene::PairTable, 12);
+    }
     if (input.isPressed(sf::Keyboard::Num3))
         startScene(Scene::Layers, 0);
     if (input.isPressed(sf::Keyboard::M))
