@@ -8,6 +8,8 @@
 #   --exercise   in the course repository: grade the generated exercise instead of the
 #                solution (shows what a student starts from). Not available in a handout.
 #
+# The summary has one row per lab and task (test suites Task<n>...); task "-" counts the
+# lab's other tests (e.g. that it starts the way the lab sheet says).
 # Results: JUnit XML in DIR/grade-results/<lab>.xml (plus <lab>.xml.crashed.xml when a test
 # crashed or hung), the tests' output in DIR/grade-results/<lab>.log.
 # Exit status: 0 when every test of every graded lab passed, 1 otherwise, 2 bad usage.
@@ -32,6 +34,10 @@ while [[ $# -gt 0 ]]; do
     esac
 done
 export ALSOFT_DRIVERS=null
+if [[ $suffix == _exercise_tests && -f framework/cmake/HitboxHandout.cmake ]]; then
+    echo "grade: --exercise is for the course repository; in a handout the labs are the exercise already." >&2
+    exit 2
+fi
 
 mapfile -t labs < <(lab_names)
 if [[ -n $only_lab ]]; then
@@ -78,7 +84,12 @@ for lab in "${labs[@]}"; do
     results=$results_dir/$lab.results
     run_gtest "$program" "$results" "$results_dir/$lab.xml" || all_passed=no
     mv "$results.log" "$results_dir/$lab.log"
-    mapfile -t tasks < <(lab_tasks "$(lab_folder "$lab")")
+    # The tasks marked in the code, and any task the tests name (in case a TASK comment
+    # was deleted along the way).
+    mapfile -t tasks < <({
+        lab_tasks "$(lab_folder "$lab")"
+        awk '{ s = $2; sub(/\..*/, "", s); if (match(s, /^Task[0-9]+/)) print substr(s, 5, RLENGTH - 4) }' "$results"
+    } | sort -n -u)
     for task in "${tasks[@]}"; do
         read -r passed failed < <(task_counts "$results" "$task")
         summary+=("$lab $task $passed $failed")

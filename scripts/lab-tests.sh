@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # lab-tests.sh - shell functions shared by grade.sh, check-exercises.sh and check-handout.sh.
 # Source it; it is not a program:   source "$(dirname "$0")/lab-tests.sh"
 

@@ -23,6 +23,12 @@
 # (against the exercise; built but not registered: scripts/check-exercises.sh runs it to
 # prove every task has a test that fails until the student does the task).
 #
+# Writing a lab: the exercise is compiled with the same warnings as the solution (errors in
+# the debug preset), so starter code must compile cleanly: e.g. "// (void)dt;" in a STARTER
+# block for a parameter only the solution uses. Grading tests can include
+# "labs/LabTesting.h" (EXPECT_VEC_NEAR). scripts/check-exercises.sh checks that each task
+# has a test (suite Task<n>...) that fails on the exercise.
+#
 # In a student handout (scripts/make-handout.sh writes framework/cmake/HitboxHandout.cmake,
 # which sets HITBOX_HANDOUT) the lab folders already hold the exercise, so there is only one
 # version: <lab>_level, <lab> and <lab>_tests build and test the student's own code.
@@ -30,12 +36,16 @@ include_guard(GLOBAL)
 include(GoogleTest)
 include(HitboxHandout OPTIONAL)
 
-set(HITBOX_LAB_GENERATOR "${CMAKE_CURRENT_LIST_DIR}/HitboxMakeExercise.cmake")
+# Global properties, not variables: the include guard means only the first folder that
+# includes this file (labs/) would see variables set here, and tests/labs/ needs them too.
+set_property(GLOBAL PROPERTY HITBOX_LAB_HANDOUT "${HITBOX_HANDOUT}")
+set_property(GLOBAL PROPERTY HITBOX_LAB_GENERATOR "${CMAKE_CURRENT_LIST_DIR}/HitboxMakeExercise.cmake")
 
 # Compiler settings every lab target shares.
 function(_hitbox_lab_target_settings target)
     hitbox_warnings(${target})
-    if(HITBOX_HANDOUT AND NOT MSVC)
+    get_property(handout GLOBAL PROPERTY HITBOX_LAB_HANDOUT)
+    if(handout AND NOT MSVC)
         # A student's half-finished code (an unused variable) should warn, not stop the build.
         target_compile_options(${target} PRIVATE -Wno-error)
     endif()
@@ -51,6 +61,8 @@ function(hitbox_add_lab name)
         message(FATAL_ERROR "hitbox_add_lab(${name}): unknown arguments ${LAB_UNPARSED_ARGUMENTS}")
     endif()
     set(lab_dir "${CMAKE_CURRENT_SOURCE_DIR}")
+    get_property(handout GLOBAL PROPERTY HITBOX_LAB_HANDOUT)
+    get_property(generator GLOBAL PROPERTY HITBOX_LAB_GENERATOR)
 
     # The solution (or, in a handout, the student's code): the sources as they are.
     add_library(${name}_level STATIC ${LAB_SOURCES})
@@ -60,7 +72,7 @@ function(hitbox_add_lab name)
     add_executable(${name} ${LAB_MAIN})
     target_link_libraries(${name} PRIVATE ${name}_level)
     _hitbox_lab_target_settings(${name})
-    if(HITBOX_HANDOUT)
+    if(handout)
         return()
     endif()
 
@@ -75,8 +87,8 @@ function(hitbox_add_lab name)
         set(exercise_file "${exercise_dir}/${relative}")
         add_custom_command(OUTPUT "${exercise_file}"
             COMMAND "${CMAKE_COMMAND}" "-DINPUT=${source_path}" "-DOUTPUT=${exercise_file}"
-                    -P "${HITBOX_LAB_GENERATOR}"
-            DEPENDS "${source_path}" "${HITBOX_LAB_GENERATOR}"
+                    -P "${generator}"
+            DEPENDS "${source_path}" "${generator}"
             COMMENT "Writing the exercise version of ${name}/${relative}"
             VERBATIM)
         if(source STREQUAL LAB_MAIN)
@@ -113,7 +125,8 @@ function(hitbox_add_lab_tests name)
         TEST_PREFIX "${name}."
         DISCOVERY_TIMEOUT 60
         PROPERTIES LABELS lab ENVIRONMENT "ALSOFT_DRIVERS=null")
-    if(HITBOX_HANDOUT)
+    get_property(handout GLOBAL PROPERTY HITBOX_LAB_HANDOUT)
+    if(handout)
         return()
     endif()
 

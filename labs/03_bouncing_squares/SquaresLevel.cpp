@@ -91,7 +91,8 @@ void SquaresLevel::update(float dt)
             second.move(-contact.normal * (contact.depth / 2.f));
             // Equal crates swap their velocities along the normal; along the other axis
             // nothing changes. Squares already moving apart are left alone.
-            const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), contact.normal);
+            const float closing =
+                Vector::dot(first.getVelocity() - second.getVelocity(), contact.normal);
             if (closing < 0.f)
             {
                 first.setVelocity(first.getVelocity() - contact.normal * closing);
@@ -120,9 +121,8 @@ void SquaresLevel::render(sf::RenderTarget& target) const
         target.draw(picture);
 
         const float white = square.getFlash() * 0.6f;
-        const auto mix = [white](sf::Uint8 channel) {
-            return static_cast<sf::Uint8>(channel + (255 - channel) * white);
-        };
+        const auto mix = [white](sf::Uint8 channel)
+        { return static_cast<sf::Uint8>(channel + (255 - channel) * white); };
         sf::RectangleShape crate({crateSize, crateSize});
         crate.setOrigin(crateSize / 2.f, crateSize / 2.f);
         crate.setPosition(square.getPosition());

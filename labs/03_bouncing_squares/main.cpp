@@ -32,9 +32,8 @@ int squareCountFrom(const hitbox::Options& options)
 
 int main(int argc, char* argv[])
 {
-    return hitbox::run(argc, argv, {"Lab 3 - Bouncing squares", {"--squares"}},
-                       [](const hitbox::Options& options) {
-                           return std::make_unique<SquaresLevel>(squareCountFrom(options),
-                                                                 options.seed);
-                       });
+    return hitbox::run(
+        argc, argv, {"Lab 3 - Bouncing squares", {"--squares"}},
+        [](const hitbox::Options& options)
+        { return std::make_unique<SquaresLevel>(squareCountFrom(options), options.seed); });
 }

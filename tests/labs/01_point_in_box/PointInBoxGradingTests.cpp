@@ -9,6 +9,8 @@
 #include "hitbox/Input.h"
 #include "hitbox/geometry/Shapes.h"
 
+#include <SFML/Graphics/View.hpp>
+
 #include <gtest/gtest.h>
 
 namespace
@@ -60,7 +62,7 @@ struct Player
     }
 };
 
-// A point inside box `index` that no box drawn after it covers.
+// A point inside box `index`, clear of every box drawn after it (which would cover it).
 sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
 {
     const sf::FloatRect box = level.getBox(index).getCollisionBox();
@@ -70,12 +72,41 @@ sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
             const sf::Vector2f point{box.left + box.width * fx, box.top + box.height * fy};
             bool covered = false;
             for (int later = index + 1; later < level.getBoxCount(); ++later)
-                covered = covered || level.getBox(later).getCollisionBox().contains(point);
+            {
+                // A few pixels clear of the covering box, so rounding cannot land on it.
+                sf::FloatRect near = level.getBox(later).getCollisionBox();
+                near = {near.left - 4.f, near.top - 4.f, near.width + 8.f, near.height + 8.f};
+                covered = covered || near.contains(point);
+            }
             if (!covered)
                 return point;
         }
     ADD_FAILURE() << "box " << index << " is covered completely";
     return hitbox::centerOf(box);
+}
+
+// Where the mouse is in world coordinates when it is at `pixel` in a window of
+// `windowSize` pixels: what the window does with sf::RenderWindow::mapPixelToCoords and
+// the letterboxed view (hitbox/App.h), worked out here without opening a window.
+sf::Vector2f pixelToWorld(sf::Vector2i pixel, sf::Vector2u windowSize, sf::Vector2f world)
+{
+    sf::View view(sf::FloatRect(0.f, 0.f, world.x, world.y));
+    view.setViewport(hitbox::letterboxViewport(windowSize, world));
+    const sf::FloatRect viewport = view.getViewport();
+    const sf::Vector2f size(windowSize);
+    const sf::Vector2f normalized{
+        -1.f + 2.f * (pixel.x - viewport.left * size.x) / (viewport.width * size.x),
+        1.f - 2.f * (pixel.y - viewport.top * size.y) / (viewport.height * size.y)};
+    return view.getInverseTransform().transformPoint(normalized);
+}
+
+// The pixel of a window of `windowSize` where world point `point` is drawn.
+sf::Vector2i worldToPixel(sf::Vector2f point, sf::Vector2u windowSize, sf::Vector2f world)
+{
+    const sf::FloatRect viewport = hitbox::letterboxViewport(windowSize, world);
+    const sf::Vector2f size(windowSize);
+    return {static_cast<int>(viewport.left * size.x + point.x / world.x * viewport.width * size.x),
+            static_cast<int>(viewport.top * size.y + point.y / world.y * viewport.height * size.y)};
 }
 
 // An empty spot: the top-left corner of the scene has no box.
@@ -91,6 +122,23 @@ TEST(Task1FindTheBoxUnderTheMouse, EveryBoxIsHoveredWhenTheMouseIsOverIt)
     {
         player.moveMouseTo(uncoveredPointOf(player.level, index));
         EXPECT_EQ(player.level.getHoveredBox(), index) << "mouse over box " << index;
+    }
+}
+
+TEST(Task1FindTheBoxUnderTheMouse, InAResizedWindowTheHoveredBoxIsTheOneUnderTheMouse)
+{
+    // A tall window: the world is letterboxed with bars above and below, and window pixels
+    // are no longer world pixels. Input gives the mouse in world coordinates.
+    Player player;
+    const sf::Vector2u windowSize{700, 900};
+    const sf::Vector2f world = player.level.getWorldSize();
+    for (int index = 0; index < player.level.getBoxCount(); ++index)
+    {
+        const sf::Vector2i pixel =
+            worldToPixel(uncoveredPointOf(player.level, index), windowSize, world);
+        player.moveMouseTo(pixelToWorld(pixel, windowSize, world));
+        EXPECT_EQ(player.level.getHoveredBox(), index)
+            << "mouse at pixel (" << pixel.x << ", " << pixel.y << ") of a 700 x 900 window";
     }
 }
 
