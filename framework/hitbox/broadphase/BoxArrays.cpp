@@ -1,7 +1,6 @@
 #include "hitbox/broadphase/BoxArrays.h"
 
-#include "hitbox/geometry/Shapes.h"
-
+#include <cmath>
 #include <limits>
 
 namespace hitbox
@@ -21,20 +20,25 @@ void BoxArrays::load(const std::vector<BroadphaseItem>& items)
     {
         layer[i] = items[i].layer;
         mask[i] = items[i].mask;
-        if (!isFinite(items[i].box))
+        const sf::FloatRect& box = items[i].box;
+        if (!(std::isfinite(box.left) && std::isfinite(box.top) && std::isfinite(box.width) &&
+              std::isfinite(box.height)))
         {
             // An empty box: min > max, so every overlap test with it is false.
             minX[i] = minY[i] = inf;
             maxX[i] = maxY[i] = -inf;
             continue;
         }
-        // The same arithmetic as boxVsBox (normalised, then left + width), so the broadphase
-        // and the exact test agree to the last bit, even at huge coordinates.
-        const sf::FloatRect box = normalised(items[i].box);
-        minX[i] = box.left;
-        minY[i] = box.top;
-        maxX[i] = rightOf(box);
-        maxY[i] = bottomOf(box);
+        // The same arithmetic as boxVsBox (normalised(), then left + width), so the broadphase
+        // and the exact test agree to the last bit, even at huge coordinates. Written out
+        // rather than calling normalised() and rightOf(): this runs for every box every frame,
+        // and calls into another file are not inlined.
+        const float left = box.width < 0.f ? box.left + box.width : box.left;
+        const float top = box.height < 0.f ? box.top + box.height : box.top;
+        minX[i] = left;
+        minY[i] = top;
+        maxX[i] = left + (box.width < 0.f ? -box.width : box.width);
+        maxY[i] = top + (box.height < 0.f ? -box.height : box.height);
     }
 }
 

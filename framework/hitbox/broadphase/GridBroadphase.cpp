@@ -134,14 +134,9 @@ void GridBroadphase::listCells()
         for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
             for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
                 entries[--cellStart[std::size_t(cy) * columns + cx]] = {
-                    boxes.minX[i],
-                    boxes.maxX[i],
-                    boxes.minY[i],
-                    boxes.maxY[i],
-                    std::uint32_t(i),
-                    boxes.layer[i],
-                    boxes.mask[i],
-                    std::uint32_t(cx == cellX0[i]) | std::uint32_t(cy == cellY0[i]) << 1};
+                    boxes.minX[i], boxes.maxX[i], boxes.minY[i], boxes.maxY[i],
+                    std::uint32_t(i) | std::uint32_t(cx == cellX0[i]) << 30 |
+                        std::uint32_t(cy == cellY0[i]) << 31};
     // [/slide]
 }
 
@@ -162,6 +157,7 @@ void GridBroadphase::testCells()
         for (std::uint32_t p = begin; p < end; ++p)
         {
             const Entry a = entries[p];
+            const std::uint32_t first = a.itemAndFirstCell & kItemBits;
             // Room for every pair this row could find (the loop below writes unchecked).
             if (cellPairs.size() < found + (end - p))
                 cellPairs.resize(std::max(2 * cellPairs.size(), found + (end - p)));
@@ -170,19 +166,38 @@ void GridBroadphase::testCells()
                 const Entry& b = entries[q];
                 // Two boxes share several cells? Only the first cell of both (their first
                 // column and first row) reports them, so each pair is reported once.
-                const bool firstSharedCell = (a.firstCell | b.firstCell) == 3;
-                const bool allowed = ((a.layer & b.mask) != 0) & ((b.layer & a.mask) != 0);
+                const bool firstSharedCell =
+                    ((a.itemAndFirstCell | b.itemAndFirstCell) & ~kItemBits) == ~kItemBits;
                 const bool overlap =
                     (a.minX < b.maxX) & (b.minX < a.maxX) & (a.minY < b.maxY) & (b.minY < a.maxY);
                 // Branch-free: always write the pair, keep it (move on) only on a hit.
-                cellPairs[found] = {a.item, b.item};
-                found += firstSharedCell & allowed & overlap;
+                cellPairs[found] = {first, b.itemAndFirstCell & kItemBits};
+                found += firstSharedCell & overlap;
             }
         }
         // [/slide]
     }
     cellPairCount = found;
     lastStats.pairsTested = tested;
+}
+
+void GridBroadphase::dropPairsLayersForbid()
+{
+    // Layers rarely forbid anything (every mask all ones): then skip this pass entirely.
+    const std::size_t count = boxes.size();
+    bool anyRules = false;
+    for (std::size_t i = 0; i < count; ++i)
+        anyRules |= (boxes.mask[i] != 0xFFFFFFFF) | (boxes.layer[i] == 0);
+    if (!anyRules)
+        return;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+    {
+        const Pair pair = cellOrderPairs[k];
+        cellOrderPairs[kept] = pair;
+        kept += boxes.allowed(pair.first, pair.second);
+    }
+    cellPairCount = kept;
 }
 
 void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
@@ -225,6 +240,7 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     assignCells();
     listCells();
     testCells();
+    dropPairsLayersForbid();
     sortPairs(pairs);
     lastStats.pairsFound = pairs.size();
 }

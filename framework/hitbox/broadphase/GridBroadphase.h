@@ -35,15 +35,20 @@ private:
     void testCells();
     void sortPairs(std::vector<Pair>& pairs);
 
+    void dropPairsLayersForbid();
+
     // One entry per (cell, box): the box's numbers copied next to its cell's other boxes,
-    // so testing a cell reads memory in order, and filling a cell writes one cache line.
+    // so testing a cell reads memory in order. 20 bytes: filling cells in random order costs
+    // a memory write per entry, so smaller entries are faster (layers are checked afterwards,
+    // on the few pairs found, instead of being copied into every entry).
     struct Entry
     {
         float minX, maxX, minY, maxY;
-        std::uint32_t item;
-        std::uint32_t layer, mask;
-        std::uint32_t firstCell; // bit 0: the box's first column, bit 1: its first row
+        std::uint32_t itemAndFirstCell; // the item index, and in the top two bits:
+                                        // bit 30: this is the box's first column,
+                                        // bit 31: this is the box's first row
     };
+    static constexpr std::uint32_t kItemBits = 0x3FFFFFFF;
 
     float fixedCellSize;
     BoxArrays boxes;

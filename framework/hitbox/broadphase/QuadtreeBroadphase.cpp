@@ -1,7 +1,6 @@
 #include "hitbox/broadphase/QuadtreeBroadphase.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace hitbox
 {
@@ -11,58 +10,61 @@ QuadtreeBroadphase::QuadtreeBroadphase(std::size_t capacity, int depth)
 {
 }
 
-std::int32_t QuadtreeBroadphase::build(const sf::FloatRect& region, std::uint32_t begin,
-                                       std::uint32_t end, int depth)
+std::int32_t QuadtreeBroadphase::build(const Bounds& region, const Bounds& loose,
+                                       std::uint32_t begin, std::uint32_t end, int depth)
 {
     const std::int32_t index = static_cast<std::int32_t>(nodes.size());
-    nodes.push_back(Node{region, begin, end, {-1, -1, -1, -1}});
+    nodes.push_back(Node{region, loose, begin, end, {-1, -1, -1, -1}});
     if (end - begin <= nodeCapacity || depth >= maxDepth)
         return index; // a leaf: all its boxes stay here
 
-    const float midX = region.left + region.width / 2.f;
-    const float midY = region.top + region.height / 2.f;
-    const float right = rightOf(region);
-    const float bottom = bottomOf(region);
-    const sf::FloatRect quarters[4] = {
-        {region.left, region.top, midX - region.left, midY - region.top},
-        {midX, region.top, right - midX, midY - region.top},
-        {region.left, midY, midX - region.left, bottom - midY},
-        {midX, midY, right - midX, bottom - midY}};
+    const float midX = region.minX + (region.maxX - region.minX) / 2.f;
+    const float midY = region.minY + (region.maxY - region.minY) / 2.f;
+    Bounds quarters[4] = {{region.minX, region.minY, midX, midY},
+                          {midX, region.minY, region.maxX, midY},
+                          {region.minX, midY, midX, region.maxY},
+                          {midX, midY, region.maxX, region.maxY}};
+    Bounds looseQuarters[4];
+    for (int q = 0; q < 4; ++q)
+    {
+        // Grown by half the quarter's size each side, but never beyond this node's own loose
+        // area, so a node's area always holds its children's (the search relies on it).
+        const float growX = (quarters[q].maxX - quarters[q].minX) / 2.f;
+        const float growY = (quarters[q].maxY - quarters[q].minY) / 2.f;
+        looseQuarters[q] = {std::max(quarters[q].minX - growX, loose.minX),
+                            std::max(quarters[q].minY - growY, loose.minY),
+                            std::min(quarters[q].maxX + growX, loose.maxX),
+                            std::min(quarters[q].maxY + growY, loose.maxY)};
+    }
     // [slide:quadtree-insert]
-    // A box goes down into a quarter only if it fits there whole. The quarters share their
-    // split lines, but touching is not colliding, so boxes in different quarters can never
-    // share area. A box lying across a split line stays in this node.
-    auto fitsIn = [this](std::uint32_t item, float left, float top, float r, float b)
+    // Which quarter? The one holding the box's centre. The box goes down only if it fits
+    // inside that quarter's loose area (the quarter grown by half its size on every side);
+    // a box too big for it stays in this node. Every box is then inside its node's loose area.
+    auto quarterOf = [&](std::uint32_t item)
     {
-        return boxes.minX[item] >= left && boxes.maxX[item] <= r && boxes.minY[item] >= top &&
-               boxes.maxY[item] <= b;
+        const float centerX = boxes.minX[item] / 2.f + boxes.maxX[item] / 2.f;
+        const float centerY = boxes.minY[item] / 2.f + boxes.maxY[item] / 2.f;
+        const int q = (centerX < midX ? 0 : 1) + (centerY < midY ? 0 : 2);
+        const Bounds& area = looseQuarters[q];
+        const bool fits = boxes.minX[item] >= area.minX && boxes.maxX[item] <= area.maxX &&
+                          boxes.minY[item] >= area.minY && boxes.maxY[item] <= area.maxY;
+        return fits ? q : -1; // -1: stays here
     };
-    auto fitsQuarter = [&](std::uint32_t item, int q)
-    {
-        return fitsIn(item, quarters[q].left, quarters[q].top, q % 2 == 0 ? midX : right,
-                      q < 2 ? midY : bottom);
-    };
+    // [/slide]
     std::uint32_t* cursor = order.data() + begin;
     std::uint32_t* last = order.data() + end;
-    // Boxes that fit no quarter move to the front: they are this node's own boxes.
-    cursor = std::partition(cursor, last,
-                            [&](std::uint32_t item)
-                            {
-                                return !fitsQuarter(item, 0) && !fitsQuarter(item, 1) &&
-                                       !fitsQuarter(item, 2) && !fitsQuarter(item, 3);
-                            });
-    // [/slide]
+    // Boxes that stay move to the front: they are this node's own boxes.
+    cursor = std::partition(cursor, last, [&](std::uint32_t item) { return quarterOf(item) < 0; });
     nodes[index].itemsEnd = static_cast<std::uint32_t>(cursor - order.data());
     for (int q = 0; q < 4; ++q)
     {
-        // The boxes for quarter q move next (a box on a split line goes to the first fit).
         std::uint32_t* childEnd =
-            std::partition(cursor, last, [&](std::uint32_t item) { return fitsQuarter(item, q); });
+            std::partition(cursor, last, [&](std::uint32_t item) { return quarterOf(item) == q; });
         if (childEnd != cursor)
         {
-            const std::int32_t child =
-                build(quarters[q], static_cast<std::uint32_t>(cursor - order.data()),
-                      static_cast<std::uint32_t>(childEnd - order.data()), depth + 1);
+            const std::int32_t child = build(
+                quarters[q], looseQuarters[q], static_cast<std::uint32_t>(cursor - order.data()),
+                static_cast<std::uint32_t>(childEnd - order.data()), depth + 1);
             nodes[index].children[q] = child; // not a reference: build() grew `nodes`
         }
         cursor = childEnd;
@@ -70,40 +72,36 @@ std::int32_t QuadtreeBroadphase::build(const sf::FloatRect& region, std::uint32_
     return index;
 }
 
-void QuadtreeBroadphase::testNode(std::int32_t nodeIndex, std::vector<Pair>& pairs)
+void QuadtreeBroadphase::findPairsOf(std::uint32_t a, std::vector<Pair>& pairs)
 {
-    const Node node = nodes[static_cast<std::size_t>(nodeIndex)];
-    // Each own box against the later own boxes, and against every box of the nodes above.
-    for (std::uint32_t p = node.itemsBegin; p < node.itemsEnd; ++p)
+    // Walk down from the root, into every node whose loose area touches box a: any box that
+    // overlaps a is inside the loose area of its node, so that node is visited.
+    stack.clear();
+    stack.push_back(0);
+    while (!stack.empty())
     {
-        const std::uint32_t a = order[p];
-        for (std::uint32_t q = p + 1; q < node.itemsEnd; ++q)
+        const Node& node = nodes[static_cast<std::size_t>(stack.back())];
+        stack.pop_back();
+        for (std::uint32_t k = node.itemsBegin; k < node.itemsEnd; ++k)
         {
-            const std::uint32_t b = order[q];
-            if (!boxes.allowed(a, b))
+            const std::uint32_t b = order[k];
+            // Each pair once: the box with the lower index reports it.
+            if (b <= a || !boxes.allowed(a, b))
                 continue;
             ++tested;
             if (boxes.overlap(a, b))
-                pairs.push_back({std::min(a, b), std::max(a, b)});
+                pairs.push_back({a, b});
         }
-        for (const std::uint32_t b : ancestors)
+        for (const std::int32_t child : node.children)
         {
-            if (!boxes.allowed(a, b))
+            if (child < 0)
                 continue;
-            ++tested;
-            if (boxes.overlap(a, b))
-                pairs.push_back({std::min(a, b), std::max(a, b)});
+            const Bounds& area = nodes[static_cast<std::size_t>(child)].loose;
+            if (area.minX <= boxes.maxX[a] && boxes.minX[a] <= area.maxX &&
+                area.minY <= boxes.maxY[a] && boxes.minY[a] <= area.maxY)
+                stack.push_back(child);
         }
     }
-    const std::size_t ancestorsBefore = ancestors.size();
-    ancestors.insert(ancestors.end(), order.begin() + node.itemsBegin,
-                     order.begin() + node.itemsEnd);
-    for (const std::int32_t child : node.children)
-    {
-        if (child >= 0)
-            testNode(child, pairs);
-    }
-    ancestors.resize(ancestorsBefore);
 }
 
 void QuadtreeBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
@@ -111,34 +109,38 @@ void QuadtreeBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
 {
     pairs.clear();
     nodes.clear();
-    ancestors.clear();
     tested = 0;
     boxes.load(items);
 
-    // The root covers every usable box; NaN boxes are left out of the tree.
+    // The root covers every usable box exactly; NaN boxes are left out of the tree.
     order.clear();
-    sf::FloatRect root;
+    Bounds root{0.f, 0.f, 0.f, 0.f};
     for (std::uint32_t i = 0; i < boxes.size(); ++i)
     {
         if (!boxes.isUsable(i))
             continue;
         if (order.empty())
-            root = {boxes.minX[i], boxes.minY[i], 0.f, 0.f};
-        const float left = std::min(root.left, boxes.minX[i]);
-        const float top = std::min(root.top, boxes.minY[i]);
-        const float right = std::max(rightOf(root), boxes.maxX[i]);
-        const float bottom = std::max(bottomOf(root), boxes.maxY[i]);
-        root = {left, top, right - left, bottom - top};
+            root = {boxes.minX[i], boxes.minY[i], boxes.maxX[i], boxes.maxY[i]};
+        root = {std::min(root.minX, boxes.minX[i]), std::min(root.minY, boxes.minY[i]),
+                std::max(root.maxX, boxes.maxX[i]), std::max(root.maxY, boxes.maxY[i])};
         order.push_back(i);
     }
-    if (!order.empty())
+    if (order.empty())
     {
-        build(root, 0, static_cast<std::uint32_t>(order.size()), 0);
-        testNode(0, pairs);
+        lastStats = {};
+        return;
     }
-    std::sort(pairs.begin(), pairs.end(),
-              [](const Pair& p, const Pair& q)
-              { return p.first != q.first ? p.first < q.first : p.second < q.second; });
+    build(root, root, 0, static_cast<std::uint32_t>(order.size()), 0);
+    for (std::uint32_t a = 0; a < boxes.size(); ++a)
+    {
+        if (!boxes.isUsable(a))
+            continue;
+        const std::size_t firstOfA = pairs.size();
+        findPairsOf(a, pairs);
+        // a's pairs come out in tree order: put them in order of `second`.
+        std::sort(pairs.begin() + static_cast<std::ptrdiff_t>(firstOfA), pairs.end(),
+                  [](const Pair& p, const Pair& q) { return p.second < q.second; });
+    }
     lastStats.pairsTested = tested;
     lastStats.pairsFound = pairs.size();
 }
@@ -146,7 +148,11 @@ void QuadtreeBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
 void QuadtreeBroadphase::drawDebug(DebugRenderer& debug) const
 {
     for (const Node& node : nodes)
-        debug.box(node.region, DebugRenderer::hintColor);
+    {
+        debug.box({node.region.minX, node.region.minY, node.region.maxX - node.region.minX,
+                   node.region.maxY - node.region.minY},
+                  DebugRenderer::hintColor);
+    }
 }
 
 } // namespace hitbox

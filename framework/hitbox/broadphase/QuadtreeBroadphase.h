@@ -2,10 +2,11 @@
 // (seed 003: "a quadtree divides the map into regions so an object is only checked
 // against objects in its own region").
 //
-// Rebuilt every frame. Each box lives in the smallest node that holds it whole, so a box
-// lying across a split line stays in the bigger node above. Two boxes can only share area if
-// one's node is the other's node or one of its ancestors, so each box is tested against the
-// boxes of its own node and of the nodes above it.
+// Rebuilt every frame. A box goes down to the quarter that holds its centre, as long as it
+// fits inside that quarter grown by half its size on every side (a "loose" quadtree). Without
+// the growth, every box lying across a split line would have to stay in the big node above,
+// and with many boxes those nodes fill up. Then, for each box, walk down only into the nodes
+// whose (grown) area touches the box, and test the boxes stored there.
 #pragma once
 
 #include "hitbox/broadphase/BoxArrays.h"
@@ -27,24 +28,29 @@ public:
     void drawDebug(DebugRenderer& debug) const override;
 
 private:
+    struct Bounds
+    {
+        float minX, minY, maxX, maxY;
+    };
     struct Node
     {
-        sf::FloatRect region;
+        Bounds region;                // the node's own quarter of its parent
+        Bounds loose;                 // the region grown by half its size: boxes stored here
         std::uint32_t itemsBegin = 0; // this node's own boxes: order[itemsBegin .. itemsEnd)
         std::uint32_t itemsEnd = 0;
         std::int32_t children[4] = {-1, -1, -1, -1};
     };
 
-    std::int32_t build(const sf::FloatRect& region, std::uint32_t begin, std::uint32_t end,
-                       int depth);
-    void testNode(std::int32_t nodeIndex, std::vector<Pair>& pairs);
+    std::int32_t build(const Bounds& region, const Bounds& loose, std::uint32_t begin,
+                       std::uint32_t end, int depth);
+    void findPairsOf(std::uint32_t item, std::vector<Pair>& pairs);
 
     std::size_t nodeCapacity;
     int maxDepth;
     BoxArrays boxes;
-    std::vector<std::uint32_t> order;     // item indices, grouped by node
-    std::vector<Node> nodes;              // nodes[0] is the root
-    std::vector<std::uint32_t> ancestors; // boxes of the nodes above, while testing
+    std::vector<std::uint32_t> order; // item indices, grouped by node
+    std::vector<Node> nodes;          // nodes[0] is the root
+    std::vector<std::int32_t> stack;  // nodes still to visit, while searching
     std::size_t tested = 0;
     BroadphaseStats lastStats;
 };
