@@ -46,9 +46,11 @@ TEST_P(EveryBroadphase, OverlappingBoxesPairOnce)
 TEST_P(EveryBroadphase, TouchingEdgesAndCornersDoNotPair)
 {
     const std::vector<BroadphaseItem> items = {{{0.f, 0.f, 10.f, 10.f}},
-                                               {{10.f, 0.f, 10.f, 10.f}},     // right edge
-                                               {{0.f, 10.f, 10.f, 10.f}},     // bottom edge
-                                               {{-10.f, -10.f, 10.f, 10.f}}}; // corner
+                                               {{10.f, 0.f, 10.f, 10.f}},    // right edge
+                                               {{0.f, 10.f, 10.f, 10.f}},    // bottom edge
+                                               {{-10.f, -10.f, 10.f, 10.f}}, // corner
+                                               {{-10.f, 0.f, 10.f, 10.f}},   // left edge
+                                               {{0.f, -10.f, 10.f, 10.f}}};  // top edge
     EXPECT_EQ(pairsFound(GetParam(), items), PairList{});
 }
 
