@@ -20,8 +20,7 @@ sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
 } // namespace
 
 // [slide:pong-swept-ball]
-BallStep moveBall(Ball& ball, Paddle& left, Paddle& right, const Arena& arena,
-                  float dt)
+BallStep moveBall(Ball& ball, Paddle& left, Paddle& right, const Arena& arena, float dt)
 {
     BallStep step;
     float timeLeft = 1.f; // the fraction of this step the ball has not moved through yet

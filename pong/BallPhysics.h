@@ -29,5 +29,4 @@ struct BallStep
 
 // Moves `ball` by velocity * dt, bouncing off the walls and off the paddles' planned moves
 // (Paddle::planMove must have been called this step; the paddles themselves do not move).
-BallStep moveBall(Ball& ball, Paddle& left, Paddle& right, const Arena& arena,
-                  float dt);
+BallStep moveBall(Ball& ball, Paddle& left, Paddle& right, const Arena& arena, float dt);

@@ -41,11 +41,11 @@ OpponentSkill skillFor(Difficulty difficulty)
     switch (difficulty)
     {
     case Difficulty::Easy:
-        return {0.30f, 0.55f, 70.f, false};
+        return {0.30f, 0.55f, 40.f, false};
     case Difficulty::Hard:
-        return {0.05f, 1.00f, 30.f, true};
+        return {0.05f, 1.00f, 20.f, true};
     default:
-        return {0.15f, 0.80f, 45.f, true};
+        return {0.15f, 0.80f, 30.f, true};
     }
 }
 
@@ -62,8 +62,7 @@ float Opponent::randomBetween(float low, float high)
     return low + (high - low) * unit;
 }
 
-float Opponent::predictArrivalY(const Ball& ball, const Paddle& paddle,
-                                const Arena& arena) const
+float Opponent::predictArrivalY(const Ball& ball, const Paddle& paddle, const Arena& arena) const
 {
     const sf::Vector2f position = ball.getPosition();
     const sf::Vector2f velocity = ball.getVelocity();
@@ -96,8 +95,13 @@ float Opponent::decide(const Ball& ball, const Paddle& paddle, const Arena& aren
         {
             // The ball has just turned towards us: pick this shot's mistake (which also
             // decides where on the paddle it lands, and so the angle it goes back at).
+            // A faster ball is harder to judge: the mistake grows with the ball's speed.
             if (!wasComingTowardsMe)
-                aimOffset = randomBetween(-skill.aimError, skill.aimError);
+            {
+                const float speedFactor = ball.getSpeed() / ball.getSettings().serveSpeed;
+                const float error = skill.aimError * speedFactor;
+                aimOffset = randomBetween(-error, error);
+            }
             targetY = predictArrivalY(ball, paddle, arena) + aimOffset;
         }
         else

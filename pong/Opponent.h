@@ -29,7 +29,8 @@ struct OpponentSkill
 {
     float reactionSeconds; // how long between looks at the ball
     float topSpeed;        // fraction of the paddle's full speed it uses
-    float aimError;        // how far off (pixels) its guess of the arrival point may be
+    float aimError;        // how far off its guess of the arrival point may be: pixels
+                           // at serve speed, growing with the speed of the ball
     bool readsBounces;     // works out where the ball arrives after bouncing off walls
 };
 

@@ -27,11 +27,11 @@ void Paddle::placeAtStart(const Arena& arena)
 void Paddle::planMove(float intent, const Arena& arena, float dt)
 {
     intent = std::max(-1.f, std::min(1.f, intent));
-    // Clamp the target so the paddle stops at the walls rather than going into them.
-    const float halfHeight = settings.size.y / 2.f;
+    // Clamp the target so the paddle stops short of the walls (see wallGap).
+    const float reach = settings.size.y / 2.f + settings.wallGap;
     const float wantedY = getPosition().y + intent * settings.speed * dt;
     const float allowedY =
-        std::max(arena.playTop() + halfHeight, std::min(arena.playBottom() - halfHeight, wantedY));
+        std::max(arena.playTop() + reach, std::min(arena.playBottom() - reach, wantedY));
     plannedMove = {0.f, allowedY - getPosition().y};
     setVelocity(dt > 0.f ? plannedMove / dt : sf::Vector2f());
 }

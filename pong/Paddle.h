@@ -15,8 +15,13 @@
 struct PaddleSettings
 {
     sf::Vector2f size{16.f, 96.f};
-    float speed = 620.f;      // pixels per second at full intent
+    float speed = 620.f;           // pixels per second at full intent
     float distanceFromEdge = 48.f; // gap between the screen edge and the paddle
+    // The paddle stops this far short of each wall, leaving room for the ball to pass
+    // between its end and the wall. With no room, a ball could be pinned there, bouncing
+    // between paddle and wall forever. (The 1972 original's paddles did not reach the top
+    // either.) Keep it larger than the ball.
+    float wallGap = 20.f;
 };
 
 class Paddle : public GameObject

@@ -109,10 +109,14 @@ void PongLevel::startAttractMode()
 void PongLevel::showWinScreen(int leftPoints, int rightPoints)
 {
     score = Score(settings.pointsToWin);
-    for (int i = 0; i < leftPoints; ++i)
-        score.addPoint(Side::Left);
-    for (int i = 0; i < rightPoints; ++i)
-        score.addPoint(Side::Right);
+    // The loser's points first: once the winner reaches the target, points stop counting.
+    const Side loser = leftPoints < rightPoints ? Side::Left : Side::Right;
+    const Side winner = opponentOf(loser);
+    const int loserPoints = loser == Side::Left ? leftPoints : rightPoints;
+    for (int i = 0; i < loserPoints; ++i)
+        score.addPoint(loser);
+    for (int i = 0; i < leftPoints + rightPoints - loserPoints; ++i)
+        score.addPoint(winner);
     screen = Screen::Win;
     secondsOnWinScreen = 0.f;
     ball.placeAt({arena.centerX(), arena.centerY()});
@@ -210,8 +214,7 @@ void PongLevel::update(float dt)
         secondsOnWinScreen += dt;
         // Computer against computer goes on by itself (an attract loop, or an hour-long
         // --headless run); people choose when to play again.
-        if (mode == Mode::ComputerVsComputer &&
-            secondsOnWinScreen >= settings.secondsBeforeRematch)
+        if (mode == Mode::ComputerVsComputer && secondsOnWinScreen >= settings.secondsBeforeRematch)
         {
             const bool wasAttract = attractMode;
             startMatch(Mode::ComputerVsComputer);

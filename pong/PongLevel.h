@@ -85,7 +85,7 @@ public:
     Mode getMode() const;
     Difficulty getDifficulty() const;
     bool isAttractMode() const;
-    bool isServing() const; // the ball waits in the middle
+    bool isServing() const;    // the ball waits in the middle
     Side getServeSide() const; // who the next serve goes towards
     bool isMuted() const;
     const Score& getScore() const;
@@ -124,13 +124,13 @@ private:
     float rightIntent = 0.f;
     float serveSecondsLeft = 0.f;
     Side serveSide = Side::Left;
-    float idleSeconds = 0.f;      // title screen: time since the last key
+    float idleSeconds = 0.f; // title screen: time since the last key
     float secondsOnWinScreen = 0.f;
     float secondsSinceContact = 99.f; // for the debug view's "touching" colour
 
     std::vector<GameEvent> events;
-    hitbox::Hit lastHit;          // the ball's last contact, for the debug view
-    sf::Vector2f ballStepStart;   // where the ball began the last step (debug view)
+    hitbox::Hit lastHit;        // the ball's last contact, for the debug view
+    sf::Vector2f ballStepStart; // where the ball began the last step (debug view)
     long long stepCount = 0;
     int matchesFinished = 0;
     int leftMatchesWon = 0;

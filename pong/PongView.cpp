@@ -87,13 +87,13 @@ void PongLevel::render(sf::RenderTarget& target) const
         const sf::FloatRect panel{centerX - 330.f, 110.f, 660.f, 420.f};
         drawPanel(target, panel);
         drawCentered(target, font, "PONG", 96, centerX, 140.f, scoreColor);
-        drawCentered(target, font, "first to " + std::to_string(settings.pointsToWin) +
-                                       "   -   computer: " + nameOf(settings.difficulty),
+        drawCentered(target, font,
+                     "first to " + std::to_string(settings.pointsToWin) +
+                         "   -   computer: " + nameOf(settings.difficulty),
                      22, centerX, 260.f, highlightColor);
-        const std::string menu[] = {"1   one player against the computer",
-                                    "2   two players (W/S and Up/Down)",
-                                    "3   watch computer against computer",
-                                    "D   difficulty     Left/Right   points to win"};
+        const std::string menu[] = {
+            "1   one player against the computer", "2   two players (W/S and Up/Down)",
+            "3   watch computer against computer", "D   difficulty     Left/Right   points to win"};
         float y = 315.f;
         for (const std::string& line : menu)
         {
@@ -112,6 +112,11 @@ void PongLevel::render(sf::RenderTarget& target) const
                  36.f, scoreColor);
     const std::string status =
         attractMode ? "DEMO  -  press any key to play" : describeMode(mode, settings.difficulty);
+    // On a dark strip, so the net does not run through the words.
+    sf::RectangleShape strip({440.f, 30.f});
+    strip.setPosition(centerX - 220.f, arena.playBottom() - 40.f);
+    strip.setFillColor(sf::Color(18, 20, 28));
+    target.draw(strip);
     drawCentered(target, font, status, 18, centerX, arena.playBottom() - 34.f,
                  attractMode ? highlightColor : dimTextColor);
     if (muted)

@@ -74,7 +74,6 @@ std::unique_ptr<hitbox::Level> makePong(const hitbox::Options& options)
 
 int main(int argc, char* argv[])
 {
-    return hitbox::run(argc, argv,
-                       {"Pong", {"--mode", "--difficulty", "--points-to-win", "--screen"}},
-                       makePong);
+    return hitbox::run(
+        argc, argv, {"Pong", {"--mode", "--difficulty", "--points-to-win", "--screen"}}, makePong);
 }
