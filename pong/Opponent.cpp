@@ -36,8 +36,8 @@ Difficulty nextDifficulty(Difficulty difficulty)
 
 OpponentSkill skillFor(Difficulty difficulty)
 {
-    // Measured with tests/pong/OpponentTests.cpp: a steady human-like player beats Easy,
-    // and Hard beats a sloppy one.
+    // Tuned against scripted players (tests/pong/OpponentTests.cpp): Easy is an even match
+    // for a weak player, Normal beats the weak one, Hard is an even match for a decent one.
     switch (difficulty)
     {
     case Difficulty::Easy:

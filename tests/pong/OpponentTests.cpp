@@ -54,6 +54,25 @@ void weakPlayer(const PongLevel& pong, Input& input)
     }
 }
 
+// A decent player: reads the bounce, but looks only every quarter of a second, and
+// misjudges the arrival point more the faster the ball goes.
+struct DecentPlayer
+{
+    float target = 0.f;
+
+    void operator()(const PongLevel& pong, Input& input)
+    {
+        const long long stepNumber = pong.getStepCount();
+        if (stepNumber % 30 == 0)
+        {
+            const float wobble = static_cast<float>((stepNumber / 30) % 7 - 3) / 3.f; // -1..1
+            const float error = 20.f * pong.getBall().getSpeed() / 460.f;
+            target = arrivalY(pong) + wobble * error;
+        }
+        pongtest::steerTowards(input, pong.getPaddle(Side::Left).getPosition().y, target, 8.f);
+    }
+};
+
 int matchesWonByThePlayer(Difficulty difficulty, const pongtest::Player& player, int matches)
 {
     int won = 0;
@@ -84,16 +103,25 @@ TEST(Difficulty, TheHardComputerBeatsAWeakPlayer)
     EXPECT_EQ(matchesWonByThePlayer(Difficulty::Hard, weakPlayer, 5), 0);
 }
 
-TEST(Difficulty, TheWeakPlayerStillWinsPointsOffTheEasyComputer)
+// Measured (seeds 100-102): the weak player against Easy 8-11, 11-10, 10-11; the decent
+// player against Hard 11-6, 10-11, 11-5. Each difficulty can be beaten and can win.
+TEST(Difficulty, TheEasyComputerIsAnEvenMatchForAWeakPlayer)
 {
-    // Easy really is easier: the same weak player scores against it.
-    PongSettings settings;
-    settings.difficulty = Difficulty::Easy;
-    PongLevel pong(settings);
-    pong.startMatch(Mode::OnePlayer);
-    bool finished = false;
-    playMatch(pong, weakPlayer, 3600.f, finished);
-    EXPECT_GT(pong.getScore().pointsOf(Side::Left), 0);
+    const int won = matchesWonByThePlayer(Difficulty::Easy, weakPlayer, 3);
+    EXPECT_GE(won, 1);
+    EXPECT_LE(won, 2);
+}
+
+TEST(Difficulty, TheHardComputerIsAnEvenMatchForADecentPlayer)
+{
+    const int won = matchesWonByThePlayer(Difficulty::Hard, DecentPlayer(), 3);
+    EXPECT_GE(won, 1);
+    EXPECT_LE(won, 2);
+}
+
+TEST(Difficulty, ADecentPlayerBeatsTheNormalComputer)
+{
+    EXPECT_EQ(matchesWonByThePlayer(Difficulty::Normal, DecentPlayer(), 3), 3);
 }
 
 TEST(Difficulty, NamesReadBackAndUnknownNamesAreRefused)

@@ -32,8 +32,7 @@ void playAndCheckEveryStep(float seconds, unsigned seed)
         const Ball& ball = pong.getBall();
         const sf::FloatRect box = ball.getCollisionBox();
         const Score& score = pong.getScore();
-        ASSERT_TRUE(hitbox::isFinite(box) && hitbox::isFinite(ball.getVelocity()))
-            << "step " << i;
+        ASSERT_TRUE(hitbox::isFinite(box) && hitbox::isFinite(ball.getVelocity())) << "step " << i;
         ASSERT_GE(box.top, arena.playTop()) << "step " << i;
         ASSERT_LE(hitbox::bottomOf(box), arena.playBottom()) << "step " << i;
         ASSERT_GT(box.left, -size - oneStep) << "step " << i;
