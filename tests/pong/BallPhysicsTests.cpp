@@ -235,3 +235,18 @@ TEST(BallPaddle, APaddleNeverPushesIntoTheBall)
     EXPECT_FALSE(court.ball.getCollisionBox().intersects(court.left.getCollisionBox()));
     EXPECT_NEAR(hitbox::bottomOf(court.left.getCollisionBox()), paddleBottom + 3.f, 1e-3f);
 }
+
+TEST(BallPaddle, ABallGrazingAPaddleCornerBouncesOnceAndGoesOn)
+{
+    // Found by an hour of computer play (seed 8): after bouncing off the paddle's end the
+    // ball sat a rounding error inside the paddle and was "hit" again every step, forever.
+    Court court;
+    court.right.setPosition(court.right.getPosition().x, 457.152618f);
+    court.place({1125.71973f, 514.053162f}, {923.210205f, -520.848267f});
+    int paddleHits = 0;
+    for (int i = 0; i < 30; ++i)
+        for (GameEvent event : court.step().events)
+            paddleHits += event == GameEvent::PaddleHit ? 1 : 0;
+    EXPECT_EQ(paddleHits, 1);
+    EXPECT_GT(court.ball.getCollisionBox().left, court.arena.size.x); // gone past: a point
+}

@@ -38,6 +38,7 @@ void playAndCheckEveryStep(float seconds, unsigned seed)
         ASSERT_GT(box.left, -size - oneStep) << "step " << i;
         ASSERT_LT(box.left, arena.size.x + oneStep) << "step " << i;
         ASSERT_LE(ball.getSpeed(), ball.getSettings().maxSpeed + 0.5f) << "step " << i;
+        ASSERT_LE(pong.getEvents().size(), 3u) << "the ball is stuck bouncing at step " << i;
         for (Side side : {Side::Left, Side::Right})
         {
             ASSERT_GE(score.pointsOf(side), 0);
@@ -103,6 +104,7 @@ TEST(PongLongRun, TenMinutesOfComputerPlayKeepsEverythingInsideFiniteAndLegal)
 TEST(PongLongRun, AnHourOfComputerPlayKeepsEverythingInsideFiniteAndLegal)
 {
     playAndCheckEveryStep(3600.f, 7);
+    playAndCheckEveryStep(3600.f, 8); // the seed that once trapped the ball on a paddle
 }
 
 TEST(PongReplay, TheSameSeedAndInputsGiveTheSameGameTwice)
