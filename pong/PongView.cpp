@@ -36,7 +36,7 @@ void drawPanel(sf::RenderTarget& target, const sf::FloatRect& area)
 {
     sf::RectangleShape panel({area.width, area.height});
     panel.setPosition(area.left, area.top);
-    panel.setFillColor(sf::Color(10, 12, 18, 225));
+    panel.setFillColor(sf::Color(10, 12, 18));
     panel.setOutlineColor(netColor);
     panel.setOutlineThickness(2.f);
     target.draw(panel);
@@ -113,8 +113,8 @@ void PongLevel::render(sf::RenderTarget& target) const
     const std::string status =
         attractMode ? "DEMO  -  press any key to play" : describeMode(mode, settings.difficulty);
     // On a dark strip, so the net does not run through the words.
-    sf::RectangleShape strip({440.f, 30.f});
-    strip.setPosition(centerX - 220.f, arena.playBottom() - 40.f);
+    sf::RectangleShape strip({440.f, 48.f});
+    strip.setPosition(centerX - 220.f, arena.playBottom() - 48.f);
     strip.setFillColor(sf::Color(18, 20, 28));
     target.draw(strip);
     drawCentered(target, font, status, 18, centerX, arena.playBottom() - 34.f,
