@@ -277,22 +277,25 @@ void PongLevel::playStep(float dt)
         scorePoint(Side::Left);
 }
 
+void PongLevel::finishMatch()
+{
+    events.push_back(GameEvent::MatchWon);
+    ++matchesFinished;
+    ++(score.getWinner() == Side::Left ? leftMatchesWon : rightMatchesWon);
+    screen = Screen::Win;
+    secondsOnWinScreen = 0.f;
+    ball.placeAt({arena.centerX(), arena.centerY()});
+}
+
 // [slide:pong-serve]
 void PongLevel::scorePoint(Side scorer)
 {
     score.addPoint(scorer);
     events.push_back(GameEvent::Point);
     if (score.isMatchOver())
-    {
-        events.push_back(GameEvent::MatchWon);
-        ++matchesFinished;
-        ++(score.getWinner() == Side::Left ? leftMatchesWon : rightMatchesWon);
-        screen = Screen::Win;
-        secondsOnWinScreen = 0.f;
-        ball.placeAt({arena.centerX(), arena.centerY()});
-        return;
-    }
-    prepareServe(Score::serveTowards(scorer)); // towards the player who lost the point
+        finishMatch();
+    else
+        prepareServe(Score::serveTowards(scorer)); // towards the player who lost the point
 }
 
 void PongLevel::prepareServe(Side towards)
@@ -303,7 +306,7 @@ void PongLevel::prepareServe(Side towards)
     serveSecondsLeft = settings.serveDelaySeconds;
 }
 
-void PongLevel::serve()
+void PongLevel::serve() // called when the wait is over
 {
     const float unit = static_cast<float>(random() % 1000001u) / 1000000.f; // 0..1
     const float degrees = (2.f * unit - 1.f) * settings.maxServeDegrees;

@@ -105,6 +105,7 @@ private:
     void prepareServe(Side towards);
     void serve();
     void scorePoint(Side scorer);
+    void finishMatch();
 
     PongSettings settings;
     Arena arena;
