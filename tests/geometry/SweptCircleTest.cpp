@@ -1,8 +1,8 @@
 // SweptCircleTest.cpp - moving circles against circles and boxes (SweptCircle.h): the edge
 // rules one test each, symmetry, translation, and the fast-mover guarantee.
+#include "hitbox/geometry/SweptCircle.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
-#include "hitbox/geometry/SweptCircle.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -193,7 +193,8 @@ TEST(SweepCircleVsCircle, ZeroDisplacementIsTheDiscreteTest)
 
 TEST(SweepCircleVsCircle, TwoPointsNeverHit)
 {
-    EXPECT_FALSE(sweepCircleVsCircle(Circle{{0.f, 0.f}, 0.f}, {10.f, 0.f}, Circle{{5.f, 0.f}, 0.f}));
+    EXPECT_FALSE(
+        sweepCircleVsCircle(Circle{{0.f, 0.f}, 0.f}, {10.f, 0.f}, Circle{{5.f, 0.f}, 0.f}));
 }
 
 TEST(SweepCircleVsCircle, IsSymmetricAndTranslationInvariant)
@@ -212,8 +213,10 @@ TEST(SweepCircleVsCircle, IsSymmetricAndTranslationInvariant)
         const Hit forward = sweepCircleVsCircle(a, move, b);
         const Hit backward = sweepCircleVsCircle(b, -move, a);
         ASSERT_EQ(forward.hit, backward.hit);
-        const sf::Vector2f shift(std::round(coordinate(random)) * 4.f, std::round(coordinate(random)) * 4.f);
-        const Hit shifted = sweepCircleVsCircle(Circle{a.center + shift, a.radius}, move, Circle{b.center + shift, b.radius});
+        const sf::Vector2f shift(std::round(coordinate(random)) * 4.f,
+                                 std::round(coordinate(random)) * 4.f);
+        const Hit shifted = sweepCircleVsCircle(Circle{a.center + shift, a.radius}, move,
+                                                Circle{b.center + shift, b.radius});
         ASSERT_EQ(forward.hit, shifted.hit);
         if (!forward.hit)
             continue;
@@ -326,7 +329,8 @@ TEST(SweepCircleVsBox, ZeroSizeBoxIsAPointToHit)
 {
     const sf::FloatRect point(100.f, 100.f, 0.f, 0.f);
     const Hit box = sweepCircleVsBox(Circle{{0.f, 100.f}, 10.f}, {200.f, 0.f}, point);
-    const Hit circle = sweepCircleVsCircle(Circle{{0.f, 100.f}, 10.f}, {200.f, 0.f}, Circle{{100.f, 100.f}, 0.f});
+    const Hit circle =
+        sweepCircleVsCircle(Circle{{0.f, 100.f}, 10.f}, {200.f, 0.f}, Circle{{100.f, 100.f}, 0.f});
     ASSERT_TRUE(box);
     EXPECT_FLOAT_EQ(box.time, circle.time);
     EXPECT_EQ(box.normal, circle.normal);
@@ -346,7 +350,8 @@ TEST(SweepCircleVsBox, NegativeRadiusNaNOrInfinityNeverHits)
 {
     EXPECT_FALSE(sweepCircleVsBox(Circle{{0.f, 50.f}, -1.f}, {200.f, 0.f}, wall));
     EXPECT_FALSE(sweepCircleVsBox(Circle{{0.f, 50.f}, 10.f}, {notANumber, 0.f}, wall));
-    EXPECT_FALSE(sweepCircleVsBox(Circle{{0.f, 50.f}, 10.f}, {200.f, 0.f}, {0.f, 0.f, infinity, 1.f}));
+    EXPECT_FALSE(
+        sweepCircleVsBox(Circle{{0.f, 50.f}, 10.f}, {200.f, 0.f}, {0.f, 0.f, infinity, 1.f}));
 }
 
 // ---- the fast-mover guarantee ------------------------------------------------------------
@@ -387,8 +392,9 @@ TEST(SweptTests, NeverMissACrossingOfAOnePixelWallAtAnySpeedUpTo1e6PixelsPerSeco
             EXPECT_EQ(round.normal, sf::Vector2f(-1.f, 0.f));
 
             // A 1 px ball standing in the way of a 1 px ball.
-            const Hit balls = sweepCircleVsCircle(Circle{{start.x - 0.5f, 0.f}, 0.5f},
-                                                  sf::Vector2f(move.x, 0.f), Circle{{500.5f, 0.f}, 0.5f});
+            const Hit balls =
+                sweepCircleVsCircle(Circle{{start.x - 0.5f, 0.f}, 0.5f}, sf::Vector2f(move.x, 0.f),
+                                    Circle{{500.5f, 0.f}, 0.5f});
             ASSERT_TRUE(balls) << "balls at " << speed << " px/s";
         }
     }
