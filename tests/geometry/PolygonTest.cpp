@@ -1,7 +1,7 @@
 // PolygonTest.cpp - oriented boxes and convex polygons by the separating axis theorem
 // (Polygon.h): the edge rules one test each. Random agreement is in AgreementTest.cpp.
-#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Polygon.h"
+#include "hitbox/geometry/Overlap.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -38,8 +38,9 @@ Polygon reversed(Polygon polygon)
 
 Polygon diamond(sf::Vector2f centre, float halfDiagonal)
 {
-    return Polygon{{centre + sf::Vector2f(0.f, -halfDiagonal), centre + sf::Vector2f(halfDiagonal, 0.f),
-                    centre + sf::Vector2f(0.f, halfDiagonal), centre + sf::Vector2f(-halfDiagonal, 0.f)}};
+    return Polygon{
+        {centre + sf::Vector2f(0.f, -halfDiagonal), centre + sf::Vector2f(halfDiagonal, 0.f),
+         centre + sf::Vector2f(0.f, halfDiagonal), centre + sf::Vector2f(-halfDiagonal, 0.f)}};
 }
 } // namespace
 
@@ -105,18 +106,23 @@ TEST(PolygonVsPolygon, AgreesWithBoxVsBoxContactOnAxisAlignedBoxes)
     int hits = 0;
     for (int i = 0; i < 20000; ++i)
     {
-        const sf::FloatRect a(float(coordinate(random)), float(coordinate(random)), float(size(random)), float(size(random)));
-        const sf::FloatRect b(float(coordinate(random)), float(coordinate(random)), float(size(random)), float(size(random)));
-        const bool bothFlat = (a.width == 0.f || a.height == 0.f) && (b.width == 0.f || b.height == 0.f);
+        const sf::FloatRect a(float(coordinate(random)), float(coordinate(random)),
+                              float(size(random)), float(size(random)));
+        const sf::FloatRect b(float(coordinate(random)), float(coordinate(random)),
+                              float(size(random)), float(size(random)));
+        const bool bothFlat =
+            (a.width == 0.f || a.height == 0.f) && (b.width == 0.f || b.height == 0.f);
         if (bothFlat)
             continue; // boxVsBox lets two crossing lines collide; polygons with no area never do
         const Contact boxes = hitbox::boxVsBoxContact(a, b);
         const Contact polygons = polygonVsPolygon(toPolygon(a), toPolygon(b));
-        ASSERT_EQ(boxes.hit, polygons.hit) << ::testing::PrintToString(a) << " " << ::testing::PrintToString(b);
+        ASSERT_EQ(boxes.hit, polygons.hit)
+            << ::testing::PrintToString(a) << " " << ::testing::PrintToString(b);
         if (!boxes.hit)
             continue;
         ++hits;
-        EXPECT_EQ(boxes.normal, polygons.normal) << ::testing::PrintToString(a) << " " << ::testing::PrintToString(b);
+        EXPECT_EQ(boxes.normal, polygons.normal)
+            << ::testing::PrintToString(a) << " " << ::testing::PrintToString(b);
         EXPECT_EQ(boxes.depth, polygons.depth);
     }
     EXPECT_GT(hits, 1000);
@@ -174,7 +180,8 @@ TEST(PolygonVsPolygon, SwappingTheShapesReversesTheNormal)
 TEST(PolygonVsPolygon, APolygonInsideAnotherLeavesTheShortWay)
 {
     // A small box inside the floor, 3 px from its left side.
-    const Contact contact = polygonVsPolygon(toPolygon(sf::FloatRect(3.f, 110.f, 5.f, 5.f)), ground);
+    const Contact contact =
+        polygonVsPolygon(toPolygon(sf::FloatRect(3.f, 110.f, 5.f, 5.f)), ground);
     ASSERT_TRUE(contact);
     EXPECT_EQ(contact.normal, sf::Vector2f(-1.f, 0.f));
     EXPECT_FLOAT_EQ(contact.depth, 8.f); // its right side must clear x = 0
@@ -207,8 +214,9 @@ TEST(PolygonVsPolygon, APointCollidesOnlyStrictlyInside)
 TEST(PolygonVsPolygon, ASegmentCollidesWhenItReachesInside)
 {
     EXPECT_TRUE(polygonVsPolygon(Polygon{{{-10.f, 120.f}, {10.f, 120.f}}}, ground));
-    EXPECT_FALSE(polygonVsPolygon(Polygon{{{-10.f, 100.f}, {300.f, 100.f}}}, ground)); // along the edge
-    EXPECT_FALSE(polygonVsPolygon(Polygon{{{-10.f, 120.f}, {0.f, 120.f}}}, ground));   // ends on it
+    EXPECT_FALSE(
+        polygonVsPolygon(Polygon{{{-10.f, 100.f}, {300.f, 100.f}}}, ground)); // along the edge
+    EXPECT_FALSE(polygonVsPolygon(Polygon{{{-10.f, 120.f}, {0.f, 120.f}}}, ground)); // ends on it
 }
 
 TEST(PolygonVsPolygon, ShapesWithNoAreaNeverCollideWithEachOther)
@@ -217,7 +225,8 @@ TEST(PolygonVsPolygon, ShapesWithNoAreaNeverCollideWithEachOther)
     const Polygon down{{{0.f, 10.f}, {10.f, 0.f}}};
     EXPECT_FALSE(polygonVsPolygon(across, down)); // crossing segments
     EXPECT_FALSE(polygonVsPolygon(Polygon{{{5.f, 5.f}}}, across));
-    EXPECT_FALSE(polygonVsPolygon(toPolygon(sf::FloatRect(0.f, 5.f, 10.f, 0.f)), toPolygon(sf::FloatRect(5.f, 0.f, 0.f, 10.f))));
+    EXPECT_FALSE(polygonVsPolygon(toPolygon(sf::FloatRect(0.f, 5.f, 10.f, 0.f)),
+                                  toPolygon(sf::FloatRect(5.f, 0.f, 0.f, 10.f))));
 }
 
 TEST(PolygonVsPolygon, RepeatedPointsAreIgnored)
@@ -239,9 +248,11 @@ TEST(PolygonVsPolygon, RepeatedPointsAreIgnored)
 TEST(PolygonVsPolygon, EmptyOrNaNNeverCollides)
 {
     EXPECT_FALSE(polygonVsPolygon(Polygon{}, ground));
-    EXPECT_FALSE(polygonVsPolygon(Polygon{{{notANumber, 110.f}, {10.f, 120.f}, {20.f, 110.f}}}, ground));
-    EXPECT_FALSE(hitbox::orientedBoxVsOrientedBox(OrientedBox{{10.f, 110.f}, {5.f, 5.f}, notANumber},
-                                                  OrientedBox{{10.f, 110.f}, {5.f, 5.f}, 0.f}));
+    EXPECT_FALSE(
+        polygonVsPolygon(Polygon{{{notANumber, 110.f}, {10.f, 120.f}, {20.f, 110.f}}}, ground));
+    EXPECT_FALSE(
+        hitbox::orientedBoxVsOrientedBox(OrientedBox{{10.f, 110.f}, {5.f, 5.f}, notANumber},
+                                         OrientedBox{{10.f, 110.f}, {5.f, 5.f}, 0.f}));
 }
 
 TEST(OrientedBoxVsOrientedBox, TurningABoxCanMakeItCollide)
@@ -249,7 +260,7 @@ TEST(OrientedBoxVsOrientedBox, TurningABoxCanMakeItCollide)
     // A plank lying level just below a crate (2 px gap), then turned 30 degrees: its left
     // end swings up (clockwise on screen) into the crate.
     const OrientedBox crate{{0.f, 0.f}, {10.f, 10.f}, 0.f}; // y -10..10
-    OrientedBox plank{{20.f, 14.f}, {20.f, 2.f}, 0.f};     // y 12..16
+    OrientedBox plank{{20.f, 14.f}, {20.f, 2.f}, 0.f};      // y 12..16
     EXPECT_FALSE(hitbox::orientedBoxVsOrientedBox(plank, crate));
     plank.angleDegrees = 30.f;
     EXPECT_TRUE(hitbox::orientedBoxVsOrientedBox(plank, crate));
@@ -259,7 +270,8 @@ TEST(OrientedBoxVsOrientedBox, TurningABoxCanMakeItCollide)
 
 TEST(FindSeparatingAxis, ApartGivesTheWidestGapPointingTowardsA)
 {
-    const Polygon right = toPolygon(sf::FloatRect(210.f, 100.f, 20.f, 20.f)); // 10 px right of the floor
+    const Polygon right =
+        toPolygon(sf::FloatRect(210.f, 100.f, 20.f, 20.f)); // 10 px right of the floor
     const AxisReport report = hitbox::findSeparatingAxis(right, ground);
     EXPECT_TRUE(report.separated);
     EXPECT_EQ(report.axis, sf::Vector2f(1.f, 0.f));
@@ -270,7 +282,8 @@ TEST(FindSeparatingAxis, ApartGivesTheWidestGapPointingTowardsA)
 
 TEST(FindSeparatingAxis, TouchingIsSeparatedWithAZeroGap)
 {
-    const AxisReport report = hitbox::findSeparatingAxis(toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 40.f)), ground);
+    const AxisReport report =
+        hitbox::findSeparatingAxis(toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 40.f)), ground);
     EXPECT_TRUE(report.separated);
     EXPECT_EQ(report.gap, 0.f);
     EXPECT_EQ(report.axis, sf::Vector2f(0.f, -1.f));
@@ -331,7 +344,8 @@ TEST(CircleVsPolygon, AZeroRadiusCircleIsAPoint)
 {
     EXPECT_TRUE(hitbox::circleVsPolygon(Circle{{50.f, 110.f}, 0.f}, ground));
     EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{50.f, 100.f}, 0.f}, ground));
-    EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{50.f, 100.f}, 0.f}, Polygon{{{0.f, 100.f}, {90.f, 100.f}}}));
+    EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{50.f, 100.f}, 0.f},
+                                         Polygon{{{0.f, 100.f}, {90.f, 100.f}}}));
 }
 
 TEST(CircleVsPolygon, APolygonWithNoAreaCollidesWhenItReachesInside)

@@ -97,7 +97,9 @@ sf::Vector2f closestPointOnSegment(sf::Vector2f point, sf::Vector2f start, sf::V
     // How far along the segment the point's shadow falls (0 = start, 1 = end), kept on it.
     const double t =
         (double(point.x - start.x) * along.x + double(point.y - start.y) * along.y) / lengthSquared;
-    return start + along * static_cast<float>(clamp01(t));
+    const double kept = clamp01(t);
+    return {static_cast<float>(start.x + along.x * kept),
+            static_cast<float>(start.y + along.y * kept)};
 }
 
 Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle)
