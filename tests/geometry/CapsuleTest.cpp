@@ -10,8 +10,8 @@
 
 using hitbox::Capsule;
 using hitbox::Circle;
-using hitbox::Contact;
 using hitbox::closestPointOnSegment;
+using hitbox::Contact;
 
 namespace
 {
@@ -21,9 +21,12 @@ const Capsule bar{{0.f, 0.f}, {100.f, 0.f}, 10.f}; // lying along the x axis
 
 TEST(ClosestPointOnSegment, IsTheShadowKeptOnTheSegment)
 {
-    EXPECT_EQ(closestPointOnSegment({30.f, 40.f}, {0.f, 0.f}, {100.f, 0.f}), sf::Vector2f(30.f, 0.f));
-    EXPECT_EQ(closestPointOnSegment({-30.f, 40.f}, {0.f, 0.f}, {100.f, 0.f}), sf::Vector2f(0.f, 0.f));
-    EXPECT_EQ(closestPointOnSegment({130.f, -5.f}, {0.f, 0.f}, {100.f, 0.f}), sf::Vector2f(100.f, 0.f));
+    EXPECT_EQ(closestPointOnSegment({30.f, 40.f}, {0.f, 0.f}, {100.f, 0.f}),
+              sf::Vector2f(30.f, 0.f));
+    EXPECT_EQ(closestPointOnSegment({-30.f, 40.f}, {0.f, 0.f}, {100.f, 0.f}),
+              sf::Vector2f(0.f, 0.f));
+    EXPECT_EQ(closestPointOnSegment({130.f, -5.f}, {0.f, 0.f}, {100.f, 0.f}),
+              sf::Vector2f(100.f, 0.f));
 }
 
 TEST(ClosestPointOnSegment, ASegmentWithNoLengthIsItsStart)
@@ -33,14 +36,16 @@ TEST(ClosestPointOnSegment, ASegmentWithNoLengthIsItsStart)
 
 TEST(ClosestPointsOfSegments, CrossingSegmentsMeetAtTheCrossing)
 {
-    const auto points = hitbox::closestPointsOfSegments({0.f, 0.f}, {10.f, 10.f}, {0.f, 10.f}, {10.f, 0.f});
+    const auto points =
+        hitbox::closestPointsOfSegments({0.f, 0.f}, {10.f, 10.f}, {0.f, 10.f}, {10.f, 0.f});
     EXPECT_NEAR(points.first.x, 5.f, 1e-5f);
     EXPECT_NEAR(points.second.y, 5.f, 1e-5f);
 }
 
 TEST(ClosestPointsOfSegments, AnEndAgainstTheMiddleOfTheOther)
 {
-    const auto points = hitbox::closestPointsOfSegments({50.f, 5.f}, {50.f, 30.f}, {0.f, 0.f}, {100.f, 0.f});
+    const auto points =
+        hitbox::closestPointsOfSegments({50.f, 5.f}, {50.f, 30.f}, {0.f, 0.f}, {100.f, 0.f});
     EXPECT_EQ(points.first, sf::Vector2f(50.f, 5.f));
     EXPECT_EQ(points.second, sf::Vector2f(50.f, 0.f));
 }
@@ -86,20 +91,25 @@ TEST(CapsuleVsCircle, ZeroRadiusMeansASegmentOrAPoint)
     EXPECT_FALSE(hitbox::capsuleVsCircle(stick, Circle{{50.f, 5.f}, 5.f}));
     EXPECT_FALSE(hitbox::capsuleVsCircle(stick, Circle{{50.f, 0.f}, 0.f})); // no area either side
     // A capsule with no length is a circle.
-    EXPECT_TRUE(hitbox::capsuleVsCircle(Capsule{{0.f, 0.f}, {0.f, 0.f}, 5.f}, Circle{{9.f, 0.f}, 5.f}));
-    EXPECT_FALSE(hitbox::capsuleVsCircle(Capsule{{0.f, 0.f}, {0.f, 0.f}, 5.f}, Circle{{10.f, 0.f}, 5.f}));
+    EXPECT_TRUE(
+        hitbox::capsuleVsCircle(Capsule{{0.f, 0.f}, {0.f, 0.f}, 5.f}, Circle{{9.f, 0.f}, 5.f}));
+    EXPECT_FALSE(
+        hitbox::capsuleVsCircle(Capsule{{0.f, 0.f}, {0.f, 0.f}, 5.f}, Circle{{10.f, 0.f}, 5.f}));
 }
 
 TEST(CapsuleVsCircle, NegativeRadiusOrNaNNeverCollides)
 {
-    EXPECT_FALSE(hitbox::capsuleVsCircle(Capsule{{0.f, 0.f}, {100.f, 0.f}, -1.f}, Circle{{50.f, 0.f}, 5.f}));
-    EXPECT_FALSE(hitbox::capsuleVsCircle(Capsule{{notANumber, 0.f}, {100.f, 0.f}, 5.f}, Circle{{50.f, 0.f}, 5.f}));
+    EXPECT_FALSE(
+        hitbox::capsuleVsCircle(Capsule{{0.f, 0.f}, {100.f, 0.f}, -1.f}, Circle{{50.f, 0.f}, 5.f}));
+    EXPECT_FALSE(hitbox::capsuleVsCircle(Capsule{{notANumber, 0.f}, {100.f, 0.f}, 5.f},
+                                         Circle{{50.f, 0.f}, 5.f}));
     EXPECT_FALSE(hitbox::capsuleVsCircle(bar, Circle{{50.f, notANumber}, 5.f}));
 }
 
 TEST(CapsuleVsCapsule, ParallelCapsulesPushApartAcross)
 {
-    const Contact contact = hitbox::capsuleVsCapsule(Capsule{{20.f, 15.f}, {80.f, 15.f}, 10.f}, bar);
+    const Contact contact =
+        hitbox::capsuleVsCapsule(Capsule{{20.f, 15.f}, {80.f, 15.f}, 10.f}, bar);
     ASSERT_TRUE(contact);
     EXPECT_EQ(contact.normal, sf::Vector2f(0.f, 1.f));
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
@@ -130,13 +140,15 @@ TEST(CapsuleVsCapsule, CrossingCoresArePushedClearOfTheOther)
     ASSERT_TRUE(contact);
     EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f)); // A's middle is above B's line
     EXPECT_FLOAT_EQ(contact.depth, 15.f + 20.f);        // its lower end is 20 px below
-    const Capsule moved{crossing.start + contact.normal * contact.depth, crossing.end + contact.normal * contact.depth, 5.f};
+    const Capsule moved{crossing.start + contact.normal * contact.depth,
+                        crossing.end + contact.normal * contact.depth, 5.f};
     EXPECT_FALSE(hitbox::capsuleVsCapsule(moved, bar));
 }
 
 TEST(CapsuleVsCapsule, TwoSegmentsNeverCollide)
 {
-    EXPECT_FALSE(hitbox::capsuleVsCapsule(Capsule{{50.f, -30.f}, {50.f, 30.f}, 0.f}, Capsule{{0.f, 0.f}, {100.f, 0.f}, 0.f}));
+    EXPECT_FALSE(hitbox::capsuleVsCapsule(Capsule{{50.f, -30.f}, {50.f, 30.f}, 0.f},
+                                          Capsule{{0.f, 0.f}, {100.f, 0.f}, 0.f}));
 }
 
 TEST(CapsuleVsCapsule, SwappingReversesTheNormal)
@@ -154,7 +166,8 @@ TEST(CapsuleVsCapsule, SwappingReversesTheNormal)
 TEST(CapsuleVsPolygon, ResolvesAgainstAFace)
 {
     const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
-    const Contact contact = hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, 8.f}, floor);
+    const Contact contact =
+        hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, 8.f}, floor);
     ASSERT_TRUE(contact);
     EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 3.f);
@@ -165,7 +178,8 @@ TEST(CapsuleVsPolygon, ARoundEndNearACornerUsesTheCornerDirection)
 {
     const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
     // End 5 px from the corner (0, 100) along (-0.6, -0.8), radius 8: 3 px in.
-    const Contact contact = hitbox::capsuleVsPolygon(Capsule{{-3.f, 96.f}, {-60.f, 96.f}, 8.f}, floor);
+    const Contact contact =
+        hitbox::capsuleVsPolygon(Capsule{{-3.f, 96.f}, {-60.f, 96.f}, 8.f}, floor);
     ASSERT_TRUE(contact);
     EXPECT_NEAR(contact.normal.x, -0.6f, 1e-5f);
     EXPECT_NEAR(contact.normal.y, -0.8f, 1e-5f);
@@ -182,15 +196,18 @@ TEST(CapsuleVsPolygon, ZeroRadiusIsASegmentThatMustReachInside)
 {
     const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
     EXPECT_TRUE(hitbox::capsuleVsPolygon(Capsule{{50.f, 90.f}, {50.f, 110.f}, 0.f}, floor));
-    EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{0.f, 100.f}, {300.f, 100.f}, 0.f}, floor)); // along an edge
-    EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{50.f, 90.f}, {50.f, 110.f}, 0.f},
-                                          hitbox::Polygon{{{0.f, 100.f}, {100.f, 100.f}}})); // no area
+    EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{0.f, 100.f}, {300.f, 100.f}, 0.f},
+                                          floor)); // along an edge
+    EXPECT_FALSE(
+        hitbox::capsuleVsPolygon(Capsule{{50.f, 90.f}, {50.f, 110.f}, 0.f},
+                                 hitbox::Polygon{{{0.f, 100.f}, {100.f, 100.f}}})); // no area
 }
 
 TEST(CapsuleVsPolygon, EmptyNaNOrNegativeRadiusNeverCollides)
 {
     const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
-    EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, 8.f}, hitbox::Polygon{}));
+    EXPECT_FALSE(
+        hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, 8.f}, hitbox::Polygon{}));
     EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, -8.f}, floor));
     EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{notANumber, 95.f}, {80.f, 95.f}, 8.f}, floor));
 }

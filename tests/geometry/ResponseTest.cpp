@@ -1,6 +1,6 @@
 // ResponseTest.cpp - slide, bounce, push out and elastic collisions (Response.h).
-#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Response.h"
+#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
 #include "support/Printers.h"
 
@@ -27,8 +27,8 @@ TEST(SlideVelocity, KeepsTheMotionAlongTheSurfaceAndStopsAtIt)
 {
     // Falling at 100 px/s onto a floor reached a quarter of the way into the step.
     const sf::Vector2f slid = hitbox::slideVelocity({40.f, 100.f}, floorHitAt(0.25f));
-    EXPECT_FLOAT_EQ(slid.x, 40.f);  // along the floor: untouched
-    EXPECT_FLOAT_EQ(slid.y, 25.f);  // only the part before the impact is left
+    EXPECT_FLOAT_EQ(slid.x, 40.f); // along the floor: untouched
+    EXPECT_FLOAT_EQ(slid.y, 25.f); // only the part before the impact is left
 }
 
 TEST(SlideVelocity, MovingByTheResultEndsTouchingTheSurface)
@@ -105,7 +105,8 @@ TEST(ElasticCollision, KeepsMomentumAndEnergy)
 {
     const sf::Vector2f normal(-0.6f, -0.8f);
     const auto after = hitbox::elasticCollision({120.f, 90.f}, 2.f, {-10.f, -30.f}, 5.f, normal);
-    const sf::Vector2f momentumBefore = sf::Vector2f(120.f, 90.f) * 2.f + sf::Vector2f(-10.f, -30.f) * 5.f;
+    const sf::Vector2f momentumBefore =
+        sf::Vector2f(120.f, 90.f) * 2.f + sf::Vector2f(-10.f, -30.f) * 5.f;
     const sf::Vector2f momentumAfter = after.first * 2.f + after.second * 5.f;
     EXPECT_NEAR(momentumAfter.x, momentumBefore.x, 1e-3f);
     EXPECT_NEAR(momentumAfter.y, momentumBefore.y, 1e-3f);
@@ -117,7 +118,8 @@ TEST(ElasticCollision, KeepsMomentumAndEnergy)
 TEST(ElasticCollision, AnInfiniteMassIsAWall)
 {
     const float infinite = std::numeric_limits<float>::infinity();
-    const auto after = hitbox::elasticCollision({100.f, 20.f}, 1.f, {0.f, 0.f}, infinite, {-1.f, 0.f});
+    const auto after =
+        hitbox::elasticCollision({100.f, 20.f}, 1.f, {0.f, 0.f}, infinite, {-1.f, 0.f});
     EXPECT_EQ(after.first, sf::Vector2f(-100.f, 20.f));
     EXPECT_EQ(after.second, sf::Vector2f(0.f, 0.f));
 }
@@ -128,13 +130,15 @@ TEST(ElasticCollision, SeparatingOrInvalidMassesChangeNothing)
     EXPECT_EQ(apart.first, sf::Vector2f(-100.f, 0.f));
     const auto zero = hitbox::elasticCollision({100.f, 0.f}, 0.f, {-50.f, 0.f}, 1.f, {-1.f, 0.f});
     EXPECT_EQ(zero.first, sf::Vector2f(100.f, 0.f));
-    const auto nan = hitbox::elasticCollision({100.f, 0.f}, std::numeric_limits<float>::quiet_NaN(), {-50.f, 0.f}, 1.f, {-1.f, 0.f});
+    const auto nan = hitbox::elasticCollision({100.f, 0.f}, std::numeric_limits<float>::quiet_NaN(),
+                                              {-50.f, 0.f}, 1.f, {-1.f, 0.f});
     EXPECT_EQ(nan.second, sf::Vector2f(-50.f, 0.f));
 }
 
 TEST(ElasticCollision, RestitutionZeroLeavesThemMovingTogether)
 {
-    const auto after = hitbox::elasticCollision({100.f, 0.f}, 1.f, {0.f, 0.f}, 1.f, {-1.f, 0.f}, 0.f);
+    const auto after =
+        hitbox::elasticCollision({100.f, 0.f}, 1.f, {0.f, 0.f}, 1.f, {-1.f, 0.f}, 0.f);
     EXPECT_FLOAT_EQ(after.first.x, 50.f);
     EXPECT_FLOAT_EQ(after.second.x, 50.f);
 }
