@@ -1,7 +1,7 @@
 // ResolveTest.cpp - moving a box through solid boxes with sliding (Resolve.h): time order
 // fixes the seam snag, nothing ends inside a solid, and the per-axis method's limits.
-#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Resolve.h"
+#include "hitbox/geometry/Overlap.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +35,8 @@ float shortestStep(bool sortByTime)
     float shortest = 1e9f;
     for (int step = 0; step < 100; ++step)
     {
-        const MoveResult result = hitbox::moveBoxAndSlide(box, {-240.f, 60.f}, dt, tiles, sortByTime);
+        const MoveResult result =
+            hitbox::moveBoxAndSlide(box, {-240.f, 60.f}, dt, tiles, sortByTime);
         shortest = std::fmin(shortest, box.left - result.box.left);
         box = result.box;
     }
@@ -57,9 +58,10 @@ TEST(MoveBoxAndSlide, ResolvedInStorageOrderTheSeamsSnag)
 
 TEST(MoveBoxAndSlide, StaysOnTopOfTheFloorAndLosesTheFallingSpeed)
 {
-    const MoveResult result = hitbox::moveBoxAndSlide({100.f, 70.f, 20.f, 20.f}, {60.f, 3000.f}, dt, tiledFloor());
-    EXPECT_EQ(result.box.top, 80.f);           // 10 px gap closed, resting on the floor
-    EXPECT_FLOAT_EQ(result.box.left, 100.5f);  // the sideways motion is kept
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({100.f, 70.f, 20.f, 20.f}, {60.f, 3000.f}, dt, tiledFloor());
+    EXPECT_EQ(result.box.top, 80.f);          // 10 px gap closed, resting on the floor
+    EXPECT_FLOAT_EQ(result.box.left, 100.5f); // the sideways motion is kept
     EXPECT_EQ(result.velocity, sf::Vector2f(60.f, 0.f));
     ASSERT_FALSE(result.hits.empty());
     EXPECT_EQ(result.hits[0].normal, sf::Vector2f(0.f, -1.f));
@@ -68,7 +70,8 @@ TEST(MoveBoxAndSlide, StaysOnTopOfTheFloorAndLosesTheFallingSpeed)
 TEST(MoveBoxAndSlide, StopsTouchingAWall)
 {
     const std::vector<sf::FloatRect> wall{{200.f, 0.f, 20.f, 200.f}};
-    const MoveResult result = hitbox::moveBoxAndSlide({150.f, 50.f, 20.f, 20.f}, {6000.f, 0.f}, dt, wall);
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({150.f, 50.f, 20.f, 20.f}, {6000.f, 0.f}, dt, wall);
     EXPECT_EQ(result.box.left, 180.f);
     EXPECT_EQ(result.velocity, sf::Vector2f(0.f, 0.f));
     EXPECT_FALSE(hitbox::boxVsBox(result.box, wall[0]));
@@ -78,7 +81,8 @@ TEST(MoveBoxAndSlide, AnInsideCornerStopsBothWays)
 {
     std::vector<sf::FloatRect> solids = tiledFloor();
     solids.push_back({200.f, 0.f, 20.f, 100.f}); // a wall standing on the floor
-    const MoveResult result = hitbox::moveBoxAndSlide({170.f, 70.f, 20.f, 20.f}, {3000.f, 3000.f}, dt, solids);
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({170.f, 70.f, 20.f, 20.f}, {3000.f, 3000.f}, dt, solids);
     EXPECT_EQ(result.box.left, 180.f);
     EXPECT_EQ(result.box.top, 80.f);
     EXPECT_EQ(result.velocity, sf::Vector2f(0.f, 0.f));
@@ -87,21 +91,24 @@ TEST(MoveBoxAndSlide, AnInsideCornerStopsBothWays)
 TEST(MoveBoxAndSlide, AOneMillionPixelsPerSecondBoxStopsAtAOnePixelWall)
 {
     const std::vector<sf::FloatRect> paper{{500.f, 0.f, 1.f, 200.f}};
-    const MoveResult result = hitbox::moveBoxAndSlide({0.f, 50.f, 4.f, 4.f}, {1.0e6f, 0.f}, dt, paper);
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({0.f, 50.f, 4.f, 4.f}, {1.0e6f, 0.f}, dt, paper);
     EXPECT_EQ(result.box.left, 496.f);
 }
 
 TEST(MoveBoxAndSlide, StartingInsideASolidIsPushedOut)
 {
     const std::vector<sf::FloatRect> wall{{200.f, 0.f, 20.f, 200.f}};
-    const MoveResult result = hitbox::moveBoxAndSlide({195.f, 50.f, 20.f, 20.f}, {0.f, 0.f}, dt, wall);
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({195.f, 50.f, 20.f, 20.f}, {0.f, 0.f}, dt, wall);
     EXPECT_EQ(result.box.left, 180.f);
     EXPECT_FALSE(hitbox::boxVsBox(result.box, wall[0]));
 }
 
 TEST(MoveBoxAndSlide, NothingInTheWayMovesTheWholeStep)
 {
-    const MoveResult result = hitbox::moveBoxAndSlide({0.f, 0.f, 10.f, 10.f}, {120.f, -240.f}, dt, {});
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({0.f, 0.f, 10.f, 10.f}, {120.f, -240.f}, dt, {});
     EXPECT_EQ(result.box, sf::FloatRect(1.f, -2.f, 10.f, 10.f));
     EXPECT_TRUE(result.hits.empty());
 }
@@ -111,7 +118,9 @@ TEST(MoveBoxAndSlide, NoTimeOrNaNMeansNoMove)
     const sf::FloatRect box(0.f, 0.f, 10.f, 10.f);
     EXPECT_EQ(hitbox::moveBoxAndSlide(box, {120.f, 0.f}, 0.f, {}).box, box);
     EXPECT_EQ(hitbox::moveBoxAndSlide(box, {120.f, 0.f}, -dt, {}).box, box);
-    EXPECT_EQ(hitbox::moveBoxAndSlide(box, {std::numeric_limits<float>::quiet_NaN(), 0.f}, dt, {}).box, box);
+    EXPECT_EQ(
+        hitbox::moveBoxAndSlide(box, {std::numeric_limits<float>::quiet_NaN(), 0.f}, dt, {}).box,
+        box);
 }
 
 TEST(MoveBoxAndSlide, NeverEndsInsideASolid)
@@ -135,10 +144,12 @@ TEST(MoveBoxAndSlide, NeverEndsInsideASolid)
             continue;
         for (int step = 0; step < 10; ++step)
         {
-            const MoveResult result = hitbox::moveBoxAndSlide(box, {speed(random), speed(random)}, dt, solids);
+            const MoveResult result =
+                hitbox::moveBoxAndSlide(box, {speed(random), speed(random)}, dt, solids);
             for (const sf::FloatRect& solid : solids)
                 ASSERT_FALSE(hitbox::boxVsBox(result.box, solid))
-                    << ::testing::PrintToString(box) << " -> " << ::testing::PrintToString(result.box) << " inside "
+                    << ::testing::PrintToString(box) << " -> "
+                    << ::testing::PrintToString(result.box) << " inside "
                     << ::testing::PrintToString(solid);
             blocked += !result.hits.empty();
             box = result.box;
@@ -150,7 +161,8 @@ TEST(MoveBoxAndSlide, NeverEndsInsideASolid)
 TEST(MoveBoxPerAxis, StopsAgainstAWallAndKeepsSliding)
 {
     const std::vector<sf::FloatRect> wall{{200.f, 0.f, 20.f, 200.f}};
-    const MoveResult result = hitbox::moveBoxPerAxis({175.f, 50.f, 20.f, 20.f}, {1200.f, 600.f}, dt, wall);
+    const MoveResult result =
+        hitbox::moveBoxPerAxis({175.f, 50.f, 20.f, 20.f}, {1200.f, 600.f}, dt, wall);
     EXPECT_EQ(result.box.left, 180.f);
     EXPECT_EQ(result.box.top, 55.f);
     EXPECT_EQ(result.velocity, sf::Vector2f(0.f, 600.f));
@@ -185,7 +197,8 @@ TEST(MoveBoxPerAxis, EndsExactlyTouchingDespiteRounding)
 {
     // Sizes that do not add up exactly in float: the box must still end outside.
     const std::vector<sf::FloatRect> wall{{100.1f, 0.f, 20.f, 200.f}};
-    const MoveResult result = hitbox::moveBoxPerAxis({50.f, 50.f, 20.3f, 20.f}, {6000.f, 0.f}, dt, wall);
+    const MoveResult result =
+        hitbox::moveBoxPerAxis({50.f, 50.f, 20.3f, 20.f}, {6000.f, 0.f}, dt, wall);
     EXPECT_FALSE(hitbox::boxVsBox(result.box, wall[0]));
     EXPECT_NEAR(result.box.left + result.box.width, 100.1f, 1e-4f);
 }

@@ -1,7 +1,7 @@
 // TunnellingTest.cpp - when a discrete test can miss, swept bounds, speculative contacts
 // (Tunnelling.h).
-#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Tunnelling.h"
+#include "hitbox/geometry/Overlap.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -22,8 +22,9 @@ const float notANumber = std::numeric_limits<float>::quiet_NaN();
 
 TEST(CanTunnel, AStepLongerThanBothWidthsCanJumpTheWall)
 {
-    EXPECT_TRUE(canTunnel(bullet, {120.f, 0.f}, paper));   // 120 px a step
-    EXPECT_TRUE(canTunnel(bullet, {5.f, 0.f}, {404.f, 0.f, 1.f, 100.f})); // exactly 4 + 1: touching to touching
+    EXPECT_TRUE(canTunnel(bullet, {120.f, 0.f}, paper)); // 120 px a step
+    EXPECT_TRUE(canTunnel(bullet, {5.f, 0.f},
+                          {404.f, 0.f, 1.f, 100.f})); // exactly 4 + 1: touching to touching
     EXPECT_FALSE(canTunnel(bullet, {4.9f, 0.f}, {404.f, 0.f, 1.f, 100.f}));
 }
 
@@ -35,7 +36,7 @@ TEST(CanTunnel, ASlowStepCannot)
 TEST(CanTunnel, AWallOutsideTheSweptBoundsCannotBeTunnelled)
 {
     EXPECT_FALSE(canTunnel(bullet, {120.f, 0.f}, {500.f, 200.f, 1.f, 100.f})); // below the path
-    EXPECT_FALSE(canTunnel(bullet, {-120.f, 0.f}, paper));                    // going away
+    EXPECT_FALSE(canTunnel(bullet, {-120.f, 0.f}, paper));                     // going away
 }
 
 TEST(CanTunnel, CirclesCompareTheStepWithBothDiameters)
@@ -44,8 +45,9 @@ TEST(CanTunnel, CirclesCompareTheStepWithBothDiameters)
     const Circle target{{50.f, 0.f}, 5.f};
     EXPECT_TRUE(canTunnel(ball, {100.f, 0.f}, target));
     EXPECT_FALSE(canTunnel(ball, {19.f, 0.f}, Circle{{10.f, 0.f}, 5.f}));
-    EXPECT_FALSE(canTunnel(ball, {100.f, 0.f}, Circle{{50.f, 10.f}, 5.f})); // passes beside, touching
-    EXPECT_TRUE(canTunnel(ball, {120.f, 0.f}, paper) == false);            // box far away
+    EXPECT_FALSE(
+        canTunnel(ball, {100.f, 0.f}, Circle{{50.f, 10.f}, 5.f})); // passes beside, touching
+    EXPECT_TRUE(canTunnel(ball, {120.f, 0.f}, paper) == false);    // box far away
     EXPECT_TRUE(canTunnel(Circle{{400.f, 50.f}, 2.f}, {120.f, 0.f}, paper));
 }
 
@@ -69,13 +71,14 @@ TEST(CanTunnel, WarnsBeforeEveryStraightMissOfADiscreteTest)
     {
         const sf::FloatRect mover(place(random), place(random), size(random), size(random));
         const sf::FloatRect target(place(random), place(random), size(random), size(random));
-        const sf::Vector2f step = i % 2 ? sf::Vector2f(move(random), 0.f) : sf::Vector2f(0.f, move(random));
+        const sf::Vector2f step =
+            i % 2 ? sf::Vector2f(move(random), 0.f) : sf::Vector2f(0.f, move(random));
         if (hitbox::discreteTestMisses(mover, step, target))
         {
             ++misses;
-            ASSERT_TRUE(canTunnel(mover, step, target)) << ::testing::PrintToString(mover) << " "
-                                                       << ::testing::PrintToString(step) << " "
-                                                       << ::testing::PrintToString(target);
+            ASSERT_TRUE(canTunnel(mover, step, target))
+                << ::testing::PrintToString(mover) << " " << ::testing::PrintToString(step) << " "
+                << ::testing::PrintToString(target);
         }
     }
     EXPECT_GT(misses, 100);
@@ -88,8 +91,10 @@ TEST(DiscreteTestMisses, TheBulletThroughPaper)
     EXPECT_TRUE(hitbox::discreteTestMisses(atTheStart, step, paper));
     // Slow enough and the discrete test sees it at the end of some step.
     EXPECT_FALSE(hitbox::discreteTestMisses({497.f, 48.f, 4.f, 4.f}, {2.f, 0.f}, paper));
-    EXPECT_TRUE(hitbox::discreteTestMisses(Circle{{0.f, 0.f}, 1.f}, {100.f, 0.f}, Circle{{50.f, 0.f}, 1.f}));
-    EXPECT_FALSE(hitbox::discreteTestMisses(Circle{{0.f, 0.f}, 1.f}, {49.f, 0.f}, Circle{{50.f, 0.f}, 1.f}));
+    EXPECT_TRUE(hitbox::discreteTestMisses(Circle{{0.f, 0.f}, 1.f}, {100.f, 0.f},
+                                           Circle{{50.f, 0.f}, 1.f}));
+    EXPECT_FALSE(
+        hitbox::discreteTestMisses(Circle{{0.f, 0.f}, 1.f}, {49.f, 0.f}, Circle{{50.f, 0.f}, 1.f}));
 }
 
 TEST(SweptBounds, HoldsTheStartAndTheEnd)
@@ -98,7 +103,8 @@ TEST(SweptBounds, HoldsTheStartAndTheEnd)
     EXPECT_EQ(bounds, sf::FloatRect(300.f, 48.f, 104.f, 34.f));
     EXPECT_EQ(hitbox::sweptBounds(bullet, {0.f, 0.f}), bullet);
     EXPECT_EQ(hitbox::sweptBounds(sf::FloatRect(404.f, 52.f, -4.f, -4.f), {0.f, 0.f}), bullet);
-    EXPECT_EQ(hitbox::sweptBounds(Circle{{10.f, 10.f}, 5.f}, {20.f, 0.f}), sf::FloatRect(5.f, 5.f, 30.f, 10.f));
+    EXPECT_EQ(hitbox::sweptBounds(Circle{{10.f, 10.f}, 5.f}, {20.f, 0.f}),
+              sf::FloatRect(5.f, 5.f, 30.f, 10.f));
 }
 
 TEST(SpeculativeVelocity, ShortensTheMoveToEndTouching)
@@ -118,7 +124,10 @@ TEST(SpeculativeVelocity, TheNearestSolidDecides)
 
 TEST(SpeculativeVelocity, NoHitOrStartingInsideKeepsTheVelocity)
 {
-    EXPECT_EQ(hitbox::speculativeVelocity(bullet, {-1.0e4f, 0.f}, dt, {paper}), sf::Vector2f(-1.0e4f, 0.f));
-    EXPECT_EQ(hitbox::speculativeVelocity({499.f, 48.f, 4.f, 4.f}, {1.0e4f, 0.f}, dt, {paper}), sf::Vector2f(1.0e4f, 0.f));
-    EXPECT_EQ(hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, 0.f, {paper}), sf::Vector2f(1.0e4f, 0.f));
+    EXPECT_EQ(hitbox::speculativeVelocity(bullet, {-1.0e4f, 0.f}, dt, {paper}),
+              sf::Vector2f(-1.0e4f, 0.f));
+    EXPECT_EQ(hitbox::speculativeVelocity({499.f, 48.f, 4.f, 4.f}, {1.0e4f, 0.f}, dt, {paper}),
+              sf::Vector2f(1.0e4f, 0.f));
+    EXPECT_EQ(hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, 0.f, {paper}),
+              sf::Vector2f(1.0e4f, 0.f));
 }

@@ -72,7 +72,6 @@ float sharedLengthOf(const Hit& hit, const sf::FloatRect& mover, sf::Vector2f mo
 
 } // namespace
 
-// [slide:resolve-time-order]
 MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
                            const std::vector<sf::FloatRect>& solids, bool sortByTime)
 {
@@ -95,6 +94,7 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
         }
         if (candidates.empty())
             break;
+        // [slide:resolve-time-order]
         // 2. Nearest first (seed 004): the floor under the box (t = 0) is resolved before
         //    the next tile's corner, so the seam between tiles never stops the box. At the
         //    same time, a face touched along its length goes before a corner just touched.
@@ -118,6 +118,7 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
             result.hits.push_back(hit);
             resolved.push_back(candidate);
         }
+        // [/slide]
     }
     result.box = movedBy(result.box, stepVelocity * dt);
     // Float rounding can leave the box a hair inside a surface it slid to; put it exactly
@@ -130,7 +131,6 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
     }
     return result;
 }
-// [/slide]
 
 MoveResult moveBoxPerAxis(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
                           const std::vector<sf::FloatRect>& solids)
