@@ -97,25 +97,31 @@ sf::Vector2f closestPointOnSegment(sf::Vector2f point, sf::Vector2f start, sf::V
     // How far along the segment the point's shadow falls (0 = start, 1 = end), kept on it.
     const double t =
         (double(point.x - start.x) * along.x + double(point.y - start.y) * along.y) / lengthSquared;
-    return start + along * static_cast<float>(clamp01(t));
+    const double kept = clamp01(t);
+    return {static_cast<float>(start.x + along.x * kept),
+            static_cast<float>(start.y + along.y * kept)};
 }
 
 Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle)
 {
-    if (!isUsable(capsule))
-        return Contact{};
-    // The capsule is a circle slid along its segment: use the circle at the nearest point.
-    const sf::Vector2f nearest = closestPointOnSegment(circle.center, capsule.start, capsule.end);
-    const float radiusSum = capsule.radius + circle.radius;
-    if (nearlySame(nearest, circle.center) && lengthOf(nearest - circle.center) < radiusSum)
-        return crossingContact(capsule, Capsule{circle.center, circle.center, circle.radius},
-                               circle.center);
-    return circleVsCircleContact(Circle{nearest, capsule.radius}, circle);
+    // A circle is a capsule whose segment has no length. The capsule test finds the nearest
+    // point of each core (closestPointOnSegment, for a point) and treats them as two circles.
+    return capsuleVsCapsule(capsule, Capsule{circle.center, circle.center, circle.radius});
 }
 // [/slide]
 
-SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
-                                      sf::Vector2f end2)
+namespace
+{
+
+// How far along each segment (0..1) the closest pair lies.
+struct SegmentTimes
+{
+    double s;
+    double t;
+};
+
+SegmentTimes closestTimes(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
+                          sf::Vector2f end2)
 {
     // Write the points as start1 + s * d1 and start2 + t * d2 and minimise the distance over
     // s and t in [0, 1] (the usual derivation: set both derivatives to zero, then clamp).
@@ -128,7 +134,7 @@ SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf
     double s = 0.0;
     double t = 0.0;
     if (a == 0.0 && e == 0.0)
-        return {start1, start2}; // two points
+        return {0.0, 0.0}; // two points
     if (a == 0.0)
     {
         t = clamp01(f / e); // the first is a point
@@ -159,7 +165,27 @@ SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf
             }
         }
     }
-    return {start1 + d1 * static_cast<float>(s), start2 + d2 * static_cast<float>(t)};
+    return {s, t};
+}
+
+// The point at `time` along start..end, in double precision.
+void pointAt(sf::Vector2f start, sf::Vector2f end, double time, double& x, double& y)
+{
+    x = start.x + (double(end.x) - start.x) * time;
+    y = start.y + (double(end.y) - start.y) * time;
+}
+
+} // namespace
+
+SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
+                                      sf::Vector2f end2)
+{
+    const SegmentTimes times = closestTimes(start1, end1, start2, end2);
+    double x1, y1, x2, y2;
+    pointAt(start1, end1, times.s, x1, y1);
+    pointAt(start2, end2, times.t, x2, y2);
+    return {{static_cast<float>(x1), static_cast<float>(y1)},
+            {static_cast<float>(x2), static_cast<float>(y2)}};
 }
 
 Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
@@ -176,8 +202,23 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
             return Contact{}; // two segments with no area, or apart by more than the radii
         return crossingContact(a, b, closest.second);
     }
-    // Otherwise it is two circles: one at each closest point.
-    return circleVsCircleContact(Circle{closest.first, a.radius}, Circle{closest.second, b.radius});
+    // Otherwise it is two circles, one at each closest point. The direction between them is
+    // worked out in double: when the cores nearly touch, float rounding would tilt it.
+    const SegmentTimes times = closestTimes(a.start, a.end, b.start, b.end);
+    double ax, ay, bx, by;
+    pointAt(a.start, a.end, times.s, ax, ay);
+    pointAt(b.start, b.end, times.t, bx, by);
+    const double distance = std::hypot(ax - bx, ay - by);
+    if (!(distance < double(radiusSum)))
+        return Contact{};
+    Contact contact;
+    contact.hit = true;
+    contact.normal = {static_cast<float>((ax - bx) / distance),
+                      static_cast<float>((ay - by) / distance)};
+    contact.depth = static_cast<float>(radiusSum - distance);
+    contact.point =
+        sf::Vector2f(static_cast<float>(bx), static_cast<float>(by)) + contact.normal * b.radius;
+    return contact;
 }
 
 Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)

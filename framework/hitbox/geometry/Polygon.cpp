@@ -84,11 +84,13 @@ AxisOverlap overlapOnAxis(const std::vector<sf::Vector2f>& a, const std::vector<
     const Shadow shadowB = shadowOn(b, axis);
     const float pushPositive = shadowB.max - shadowA.min; // move A along +axis to clear B
     const float pushNegative = shadowA.max - shadowB.min; // or along -axis
-    const float length = lengthOf(axis);
     // Equal pushes go the negative way (left or up), as boxVsBoxContact does.
-    if (pushNegative <= pushPositive)
-        return {pushNegative <= 0.f, pushNegative / length, -axis / length};
-    return {pushPositive <= 0.f, pushPositive / length, axis / length};
+    const bool negative = pushNegative <= pushPositive;
+    const float push = negative ? pushNegative : pushPositive;
+    const sf::Vector2f unit = axis / lengthOf(axis);
+    // (+ 0.f turns a -0 into 0, so an axis-aligned normal prints and compares cleanly.)
+    const sf::Vector2f towardsA = negative ? sf::Vector2f(-unit.x + 0.f, -unit.y + 0.f) : unit;
+    return {push <= 0.f, push / lengthOf(axis), towardsA};
 }
 // [/slide]
 
@@ -126,8 +128,12 @@ void tryEdgesOf(const std::vector<sf::Vector2f>& owner, bool ownerIsB,
             }
             search.separated = true;
         }
-        else if (first || result.overlap < search.leastOverlap) // ties: the first axis wins
+        else if (first || result.overlap < search.leastOverlap ||
+                 (result.overlap == search.leastOverlap &&
+                  std::fabs(result.towardsA.x) > std::fabs(search.overlapAxis.x)))
         {
+            // Ties go to the more horizontal axis (the x axis, as in boxVsBoxContact), then
+            // to the axis tried first.
             search.leastOverlap = result.overlap;
             search.overlapAxis = result.towardsA;
             search.overlapAxisFromB = ownerIsB;

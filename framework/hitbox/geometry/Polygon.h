@@ -20,10 +20,10 @@
 //     note boxVsBox differs for two crossing zero-size boxes). An empty polygon never
 //     collides.
 //   - NaN or infinite coordinates, or a NaN angle: never collide.
-//   - Ties: among axes with the same overlap, the first tried wins (A's edges in order, then
-//     B's). toPolygon lists a box's points so that its first edge's axis is the x axis, so
-//     two axis-aligned boxes get boxVsBoxContact's answer (ties to x). On one axis, equal
-//     pushes either way go to the negative direction (left, up), as boxVsBoxContact does.
+//   - Ties: among axes with the same overlap, the more horizontal axis wins (so the x axis,
+//     as in boxVsBoxContact), then the first tried (A's edges in order, then B's). On one
+//     axis, equal pushes either way go to the negative direction (left, up). So two
+//     axis-aligned boxes get exactly boxVsBoxContact's normal and depth.
 //   - Contact normal: out of B towards A (Shapes.h), unit length; depth in pixels.
 //     Contact point: the vertex that reaches deepest, moved onto B's surface (approximate for
 //     edge-to-edge contact: one point of the touching stretch, not its middle).

@@ -56,11 +56,22 @@ struct Candidate
 {
     std::size_t solid;
     float time;
+    float sharedLength; // how much of the face they touch along at that time (0 for a corner)
 };
+
+// How long the stretch of surface is along which the moved mover touches the solid.
+float sharedLengthOf(const Hit& hit, const sf::FloatRect& mover, sf::Vector2f move,
+                     const sf::FloatRect& solid)
+{
+    const sf::FloatRect then(mover.left + move.x * hit.time, mover.top + move.y * hit.time,
+                             mover.width, mover.height);
+    if (hit.normal.x != 0.f)
+        return std::fmin(bottomOf(then), bottomOf(solid)) - std::fmax(then.top, solid.top);
+    return std::fmin(rightOf(then), rightOf(solid)) - std::fmax(then.left, solid.left);
+}
 
 } // namespace
 
-// [slide:resolve-time-order]
 MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
                            const std::vector<sf::FloatRect>& solids, bool sortByTime)
 {
@@ -77,16 +88,22 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
         {
             const Hit hit = sweepBoxVsBox(result.box, stepVelocity * dt, solids[i]);
             if (hit.hit)
-                candidates.push_back({i, hit.time});
+                candidates.push_back(
+                    {i, hit.time,
+                     sharedLengthOf(hit, result.box, stepVelocity * dt, normalised(solids[i]))});
         }
         if (candidates.empty())
             break;
+        // [slide:resolve-time-order]
         // 2. Nearest first (seed 004): the floor under the box (t = 0) is resolved before
-        //    the next tile's corner, so the seam between tiles never stops the box.
+        //    the next tile's corner, so the seam between tiles never stops the box. At the
+        //    same time, a face touched along its length goes before a corner just touched.
         if (sortByTime)
             std::stable_sort(candidates.begin(), candidates.end(),
-                             [](const Candidate& a, const Candidate& b)
-                             { return a.time < b.time; });
+                             [](const Candidate& a, const Candidate& b) {
+                                 return a.time < b.time ||
+                                        (a.time == b.time && a.sharedLength > b.sharedLength);
+                             });
         // 3. Resolve in that order, sweeping again with the velocity as changed so far.
         for (const Candidate& candidate : candidates)
         {
@@ -101,6 +118,7 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
             result.hits.push_back(hit);
             resolved.push_back(candidate);
         }
+        // [/slide]
     }
     result.box = movedBy(result.box, stepVelocity * dt);
     // Float rounding can leave the box a hair inside a surface it slid to; put it exactly
@@ -113,7 +131,6 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
     }
     return result;
 }
-// [/slide]
 
 MoveResult moveBoxPerAxis(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
                           const std::vector<sf::FloatRect>& solids)

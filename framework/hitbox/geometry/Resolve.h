@@ -32,9 +32,11 @@ struct MoveResult
 };
 
 // Sweeps `box` by velocity * dt against every solid and slides (Response.h's slideVelocity)
-// off each hit in time order. A box that starts overlapping a solid is first pushed out of
-// it (the push-out of boxVsBoxContact). Up to three rounds, so that a slide that turns into
-// another solid (an inside corner) is caught too. dt <= 0, NaN or infinite input: no move.
+// off each hit in time order; hits at the same time go in order of how much face they touch
+// (so a box exactly over a seam rests on the tile under it before the next tile's corner). A box
+// that starts overlapping a solid is first pushed out of it (the push-out of boxVsBoxContact). Up
+// to three rounds, so that a slide that turns into another solid (an inside corner) is caught too.
+// dt <= 0, NaN or infinite input: no move.
 MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
                            const std::vector<sf::FloatRect>& solids, bool sortByTime = true);
 

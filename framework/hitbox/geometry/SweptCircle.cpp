@@ -100,7 +100,6 @@ Hit sweepCircleVsMovingCircle(const Circle& mover, sf::Vector2f moverDisplacemen
     return hit;
 }
 
-// [slide:swept-circle-box]
 Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& box)
 {
     if (!isUsable(mover) || !isFinite(box) || !isFinite(displacement))
@@ -109,6 +108,7 @@ Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::F
     if (circleVsBox(mover, b))
         return fromContact(circleVsBoxContact(mover, b));
 
+    // [slide:swept-circle-box]
     // The rounded box is the union of a wide slab, a tall slab and four corner circles. The
     // centre's first entry into the union is the earliest entry into any one of them.
     const float r = mover.radius;
@@ -129,7 +129,7 @@ Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::F
     if (best.hit)
         best.point = start + displacement * best.time - best.normal * r; // on the box
     return best;
+    // [/slide]
 }
-// [/slide]
 
 } // namespace hitbox
