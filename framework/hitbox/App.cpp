@@ -140,7 +140,10 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
     }
     catch (const std::invalid_argument& error)
     {
-        std::cerr << info.title << ": " << error.what() << "\n" << usage << std::endl;
+        std::cerr << info.title << ": " << error.what() << "\n" << usage;
+        for (const std::string& extra : info.extraOptions)
+            std::cerr << "  " << extra << " VALUE";
+        std::cerr << std::endl;
         return 2;
     }
     if (!options.headless && !hasDisplay())
@@ -160,9 +163,15 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
             return saveScreenshot(*level, options, info);
         return runWindow(*level, options, info);
     }
+    catch (const std::invalid_argument& error)
+    {
+        // A level rejected the value of one of its own options (e.g. --mode sideways).
+        std::cerr << info.title << ": " << error.what() << std::endl;
+        return 2;
+    }
     catch (const std::exception& error)
     {
-        std::cerr << error.what() << std::endl;
+        std::cerr << info.title << ": " << error.what() << std::endl;
         return 1;
     }
 }

@@ -1,0 +1,137 @@
+# The lab machinery: one solution source, two programs.
+#
+# In a lab folder (labs/NN_name/CMakeLists.txt):
+#
+#   hitbox_add_lab(lab02_bouncing_balls
+#       MAIN main.cpp
+#       SOURCES BallsLevel.cpp BallsLevel.h Ball.cpp Ball.h)
+#
+# builds, from the solution sources in the folder:
+#   lab02_bouncing_balls_level            library: every SOURCES file (no main)
+#   lab02_bouncing_balls                  the solution program
+# and from the exercise sources that HitboxMakeExercise.cmake generates in the build tree
+# (task blocks replaced by "// TASK n: ... — see README.md" and the starter code):
+#   lab02_bouncing_balls_exercise_level
+#   lab02_bouncing_balls_exercise         what a student starts from
+#
+# In the lab's grading-test folder (tests/labs/NN_name/CMakeLists.txt):
+#
+#   hitbox_add_lab_tests(lab02_bouncing_balls SOURCES BallsGradingTests.cpp)
+#
+# builds lab02_bouncing_balls_tests (against the solution; registered with ctest, label
+# `lab`, names prefixed "lab02_bouncing_balls.") and lab02_bouncing_balls_exercise_tests
+# (against the exercise; built but not registered: scripts/check-exercises.sh runs it to
+# prove every task has a test that fails until the student does the task).
+#
+# Writing a lab: the exercise is compiled with the same warnings as the solution (errors in
+# the debug preset), so starter code must compile cleanly: e.g. "// (void)dt;" in a STARTER
+# block for a parameter only the solution uses. Grading tests can include
+# "labs/LabTesting.h" (EXPECT_VEC_NEAR). scripts/check-exercises.sh checks that each task
+# has a test (suite Task<n>...) that fails on the exercise.
+#
+# In a student handout (scripts/make-handout.sh writes framework/cmake/HitboxHandout.cmake,
+# which sets HITBOX_HANDOUT) the lab folders already hold the exercise, so there is only one
+# version: <lab>_level, <lab> and <lab>_tests build and test the student's own code.
+include_guard(GLOBAL)
+include(GoogleTest)
+include(HitboxHandout OPTIONAL)
+
+# Global properties, not variables: the include guard means only the first folder that
+# includes this file (labs/) would see variables set here, and tests/labs/ needs them too.
+set_property(GLOBAL PROPERTY HITBOX_LAB_HANDOUT "${HITBOX_HANDOUT}")
+set_property(GLOBAL PROPERTY HITBOX_LAB_GENERATOR "${CMAKE_CURRENT_LIST_DIR}/HitboxMakeExercise.cmake")
+
+# Compiler settings every lab target shares.
+function(_hitbox_lab_target_settings target)
+    hitbox_warnings(${target})
+    get_property(handout GLOBAL PROPERTY HITBOX_LAB_HANDOUT)
+    if(handout AND NOT MSVC)
+        # A student's half-finished code (an unused variable) should warn, not stop the build.
+        target_compile_options(${target} PRIVATE -Wno-error)
+    endif()
+endfunction()
+
+function(hitbox_add_lab name)
+    cmake_parse_arguments(PARSE_ARGV 1 LAB "" "MAIN" "SOURCES")
+    if(NOT LAB_MAIN OR NOT LAB_SOURCES)
+        message(FATAL_ERROR "hitbox_add_lab(${name} MAIN <main.cpp> SOURCES <files...>): "
+                            "give the main file and at least one source")
+    endif()
+    if(LAB_UNPARSED_ARGUMENTS)
+        message(FATAL_ERROR "hitbox_add_lab(${name}): unknown arguments ${LAB_UNPARSED_ARGUMENTS}")
+    endif()
+    set(lab_dir "${CMAKE_CURRENT_SOURCE_DIR}")
+    get_property(handout GLOBAL PROPERTY HITBOX_LAB_HANDOUT)
+    get_property(generator GLOBAL PROPERTY HITBOX_LAB_GENERATOR)
+
+    # The solution (or, in a handout, the student's code): the sources as they are.
+    add_library(${name}_level STATIC ${LAB_SOURCES})
+    target_include_directories(${name}_level PUBLIC "${lab_dir}")
+    target_link_libraries(${name}_level PUBLIC hitbox)
+    _hitbox_lab_target_settings(${name}_level)
+    add_executable(${name} ${LAB_MAIN})
+    target_link_libraries(${name} PRIVATE ${name}_level)
+    _hitbox_lab_target_settings(${name})
+    if(handout)
+        return()
+    endif()
+
+    # The exercise: each file regenerated whenever its solution file (or the generator)
+    # changes. The folder layout is kept, so the lab's own includes find each other.
+    set(exercise_dir "${CMAKE_CURRENT_BINARY_DIR}/exercise")
+    set(exercise_sources "")
+    set(exercise_main "")
+    foreach(source IN LISTS LAB_SOURCES LAB_MAIN)
+        get_filename_component(source_path "${source}" ABSOLUTE BASE_DIR "${lab_dir}")
+        file(RELATIVE_PATH relative "${lab_dir}" "${source_path}")
+        set(exercise_file "${exercise_dir}/${relative}")
+        add_custom_command(OUTPUT "${exercise_file}"
+            COMMAND "${CMAKE_COMMAND}" "-DINPUT=${source_path}" "-DOUTPUT=${exercise_file}"
+                    -P "${generator}"
+            DEPENDS "${source_path}" "${generator}"
+            COMMENT "Writing the exercise version of ${name}/${relative}"
+            VERBATIM)
+        if(source STREQUAL LAB_MAIN)
+            set(exercise_main "${exercise_file}")
+        else()
+            list(APPEND exercise_sources "${exercise_file}")
+        endif()
+    endforeach()
+
+    add_library(${name}_exercise_level STATIC ${exercise_sources})
+    target_include_directories(${name}_exercise_level PUBLIC "${exercise_dir}")
+    target_link_libraries(${name}_exercise_level PUBLIC hitbox)
+    _hitbox_lab_target_settings(${name}_exercise_level)
+    add_executable(${name}_exercise ${exercise_main})
+    target_link_libraries(${name}_exercise PRIVATE ${name}_exercise_level)
+    _hitbox_lab_target_settings(${name}_exercise)
+endfunction()
+
+function(hitbox_add_lab_tests name)
+    cmake_parse_arguments(PARSE_ARGV 1 LAB "" "" "SOURCES")
+    if(NOT LAB_SOURCES)
+        message(FATAL_ERROR "hitbox_add_lab_tests(${name} SOURCES <files...>): give the test sources")
+    endif()
+    if(NOT TARGET ${name}_level)
+        message(WARNING "hitbox_add_lab_tests(${name}): there is no lab ${name} "
+                        "(no hitbox_add_lab(${name} ...) in labs/); its tests are skipped")
+        return()
+    endif()
+
+    add_executable(${name}_tests ${LAB_SOURCES})
+    target_link_libraries(${name}_tests PRIVATE ${name}_level hitbox_test_support)
+    _hitbox_lab_target_settings(${name}_tests)
+    gtest_discover_tests(${name}_tests
+        TEST_PREFIX "${name}."
+        DISCOVERY_TIMEOUT 60
+        PROPERTIES LABELS lab ENVIRONMENT "ALSOFT_DRIVERS=null")
+    get_property(handout GLOBAL PROPERTY HITBOX_LAB_HANDOUT)
+    if(handout)
+        return()
+    endif()
+
+    # The same tests against the exercise. Not a ctest test: most of them fail on purpose.
+    add_executable(${name}_exercise_tests ${LAB_SOURCES})
+    target_link_libraries(${name}_exercise_tests PRIVATE ${name}_exercise_level hitbox_test_support)
+    _hitbox_lab_target_settings(${name}_exercise_tests)
+endfunction()

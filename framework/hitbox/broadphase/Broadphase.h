@@ -1,0 +1,75 @@
+// Broadphase.h - find every pair of boxes that overlap, without testing every pair.
+//
+// Seed 002 counts the cost of the obvious way: n objects need n(n-1)/2 tests, so 100 objects
+// need 4,950 and 10,000 need about 50 million. A broadphase is the cheap first step of the
+// plan in seed 003 ("reduce the checks, quick test, thorough test, resolve"): it looks only at
+// the axis-aligned boxes and hands the pairs it finds to the exact shape tests.
+//
+// Every method answers exactly the same question, so tests compare them with brute force:
+//   - two boxes pair only when they SHARE AREA (the edge rule in geometry/Overlap.h):
+//     touching edges do not pair, a zero-size box pairs when strictly inside another,
+//     negative sizes span backwards, NaN or infinite boxes never pair;
+//   - game rules filter first: layers and masks (see below).
+#pragma once
+
+#include "hitbox/DebugRenderer.h"
+
+#include <SFML/Graphics/Rect.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace hitbox
+{
+
+// One collider as the broadphase sees it: its world box and which layers it is on / hits.
+struct BroadphaseItem
+{
+    sf::FloatRect box;
+    std::uint32_t layer = 1;
+    std::uint32_t mask = 0xFFFFFFFF;
+};
+
+// A pair is considered only if (a.layer & b.mask) && (b.layer & a.mask).
+struct Pair
+{
+    std::uint32_t first;
+    std::uint32_t second;
+}; // indices into items, first < second
+
+enum class BroadphaseMethod
+{
+    BruteForce,
+    SortAndSweep,
+    Grid,
+    Quadtree
+};
+
+// What the last findPairs did: how many box-box tests it ran, how many pairs it reported.
+struct BroadphaseStats
+{
+    std::size_t pairsTested = 0;
+    std::size_t pairsFound = 0;
+};
+
+class Broadphase
+{
+public:
+    virtual ~Broadphase() = default;
+    // Every pair of items whose boxes share area (the framework's edge rule) and whose
+    // layers/masks allow it, each once, sorted by (first, second). Reuses `pairs`' memory.
+    virtual void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) = 0;
+    virtual const char* name() const = 0;
+    virtual BroadphaseStats stats() const = 0; // of the last findPairs
+    // Grid cells / quadtree nodes / sweep axis of the last findPairs.
+    virtual void drawDebug(DebugRenderer& /*debug*/) const {}
+};
+
+// A broadphase with good defaults (the grid picks its cell size from the items' sizes).
+std::unique_ptr<Broadphase> makeBroadphase(BroadphaseMethod method);
+// "BruteForce", "SortAndSweep", "Grid", "Quadtree".
+const char* toString(BroadphaseMethod method);
+
+} // namespace hitbox

@@ -1,0 +1,284 @@
+#include "hitbox/broadphase/GridBroadphase.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hitbox
+{
+namespace
+{
+
+// Cell size = this times the average box side. Measured in tests/benchmarks (see
+// docs/performance.md): smaller cells list big boxes many times, bigger cells test more pairs.
+constexpr float kCellSizePerAverageSide = 3.0f;
+// Never more than this many cells per item, so empty space (or one far-away object) cannot
+// make the grid huge: the cell size grows instead.
+constexpr double kMaxCellsPerItem = 4.0;
+
+} // namespace
+
+GridBroadphase::GridBroadphase(float cellSize) : fixedCellSize(cellSize) {}
+
+void GridBroadphase::chooseGrid()
+{
+    const std::size_t count = boxes.size();
+    // A box edge can be +-infinity when left + width overflowed; the grid only needs
+    // finite numbers (boxes beyond it land in its edge cells).
+    const float largest = std::numeric_limits<float>::max();
+    auto finite = [largest](float value) { return std::clamp(value, -largest, largest); };
+    float left = 0.f, top = 0.f, right = 0.f, bottom = 0.f;
+    double sideSum = 0.0;
+    std::size_t usable = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        if (!boxes.isUsable(i))
+            continue;
+        const float minX = finite(boxes.minX[i]), maxX = finite(boxes.maxX[i]);
+        const float minY = finite(boxes.minY[i]), maxY = finite(boxes.maxY[i]);
+        if (usable == 0)
+        {
+            left = minX;
+            top = minY;
+            right = maxX;
+            bottom = maxY;
+        }
+        left = std::min(left, minX);
+        top = std::min(top, minY);
+        right = std::max(right, maxX);
+        bottom = std::max(bottom, maxY);
+        sideSum += 0.5 * ((double(maxX) - minX) + (double(maxY) - minY));
+        ++usable;
+    }
+    originX = left;
+    originY = top;
+    // Work in double: the extent of boxes at +-1e38 does not fit in a float.
+    const double width = double(right) - left;
+    const double height = double(bottom) - top;
+    double cell = fixedCellSize > 0.f ? fixedCellSize
+                  : usable > 0        ? kCellSizePerAverageSide * sideSum / double(usable)
+                                      : 1.0;
+    if (!(cell > 0.0) || !std::isfinite(cell))
+        cell = std::max({width, height, 1.0}); // every box has zero size: one big cell
+    // [slide:grid-size]
+    // Never more than a few cells per box: a lone box far away (or a tiny cell size) would
+    // otherwise make a grid of mostly empty cells. Grow the cells instead.
+    const double maxCells = kMaxCellsPerItem * double(count) + 16.0;
+    double cellsX = std::max(1.0, std::ceil(width / cell));
+    double cellsY = std::max(1.0, std::ceil(height / cell));
+    if (cellsX * cellsY > maxCells)
+    {
+        cell *= std::sqrt(cellsX * cellsY / maxCells);
+        cellsX = std::max(1.0, std::ceil(width / cell));
+        cellsY = std::max(1.0, std::ceil(height / cell));
+    }
+    // [/slide]
+    columns = static_cast<int>(std::min(cellsX, maxCells));
+    rows = static_cast<int>(std::min(cellsY, std::floor(maxCells / columns) + 1.0));
+    usedCellSize = static_cast<float>(std::min(cell, double(largest)));
+}
+
+void GridBroadphase::assignCells()
+{
+    const std::size_t count = boxes.size();
+    cellX0.resize(count);
+    cellY0.resize(count);
+    cellX1.resize(count);
+    cellY1.resize(count);
+    const float scale = 1.f / usedCellSize;
+    const float lastColumn = static_cast<float>(columns - 1);
+    const float lastRow = static_cast<float>(rows - 1);
+    // [slide:grid-cells]
+    // Which cells does a box cover? Divide by the cell size and round down. Clamping to the
+    // grid keeps the answer monotonic (a box further right never gets a smaller column), so
+    // two overlapping boxes always share a cell, even boxes outside the grid.
+    auto column = [&](float x)
+    { return static_cast<int>(std::clamp((x - originX) * scale, 0.f, lastColumn)); };
+    auto row = [&](float y)
+    { return static_cast<int>(std::clamp((y - originY) * scale, 0.f, lastRow)); };
+    // [/slide]
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        if (!boxes.isUsable(i))
+        {
+            cellX0[i] = cellY0[i] = 1; // an empty range: listed in no cell
+            cellX1[i] = cellY1[i] = 0;
+            continue;
+        }
+        cellX0[i] = column(boxes.minX[i]);
+        cellX1[i] = column(boxes.maxX[i]);
+        cellY0[i] = row(boxes.minY[i]);
+        cellY1[i] = row(boxes.maxY[i]);
+    }
+}
+
+void GridBroadphase::listCells()
+{
+    const std::size_t count = boxes.size();
+    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
+    // [slide:grid-insert]
+    // A counting sort: count each cell's boxes, turn the counts into start positions, then
+    // drop each box into its cells. No hashing and no list per cell: one array holds every
+    // cell's boxes back to back, reused every frame (no allocation after the first frames).
+    cellStart.assign(cellCount + 1, 0);
+    for (std::size_t i = 0; i < count; ++i)
+        for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
+            for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
+                ++cellStart[std::size_t(cy) * columns + cx];
+    for (std::size_t c = 1; c <= cellCount; ++c)
+        cellStart[c] += cellStart[c - 1]; // now cellStart[c] = end of cell c
+    entries.resize(cellStart[cellCount]);
+    // Fill from the last box back, each cell from its end back: afterwards cellStart[c] is
+    // the start of cell c, and every cell's boxes are in item order.
+    for (std::size_t i = count; i-- > 0;)
+        for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
+            for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
+                entries[--cellStart[std::size_t(cy) * columns + cx]] = {
+                    boxes.minX[i], boxes.maxX[i], boxes.minY[i], boxes.maxY[i],
+                    std::uint32_t(i) | std::uint32_t(cx == cellX0[i]) << 30 |
+                        std::uint32_t(cy == cellY0[i]) << 31};
+    // [/slide]
+}
+
+void GridBroadphase::testCells()
+{
+    std::size_t found = 0;
+    std::size_t tested = 0;
+    std::vector<Pair>& cellPairs = cellOrderPairs;
+    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
+    for (std::size_t cell = 0; cell < cellCount; ++cell)
+    {
+        const std::uint32_t begin = cellStart[cell];
+        const std::uint32_t end = cellStart[cell + 1];
+        if (end - begin < 2)
+            continue; // most cells: nothing to test, and no hashing to find that out
+        tested += std::size_t(end - begin) * (end - begin - 1) / 2;
+        // [slide:grid-test]
+        for (std::uint32_t p = begin; p < end; ++p)
+        {
+            const Entry a = entries[p];
+            const std::uint32_t first = a.itemAndFirstCell & kItemBits;
+            // Room for every pair this row could find (the loop below writes unchecked).
+            if (cellPairs.size() < found + (end - p))
+                cellPairs.resize(std::max(2 * cellPairs.size(), found + (end - p)));
+            for (std::uint32_t q = p + 1; q < end; ++q)
+            {
+                const Entry& b = entries[q];
+                // Two boxes share several cells? Only the first cell of both (their first
+                // column and first row) reports them, so each pair is reported once.
+                const bool firstSharedCell =
+                    ((a.itemAndFirstCell | b.itemAndFirstCell) & ~kItemBits) == ~kItemBits;
+                const bool overlap =
+                    (a.minX < b.maxX) & (b.minX < a.maxX) & (a.minY < b.maxY) & (b.minY < a.maxY);
+                // Branch-free: always write the pair, keep it (move on) only on a hit.
+                cellPairs[found] = {first, b.itemAndFirstCell & kItemBits};
+                found += firstSharedCell & overlap;
+            }
+        }
+        // [/slide]
+    }
+    cellPairCount = found;
+    lastStats.pairsTested = tested;
+}
+
+void GridBroadphase::dropPairsLayersForbid()
+{
+    // Layers rarely forbid anything (every mask all ones): then skip this pass entirely.
+    const std::size_t count = boxes.size();
+    bool anyRules = false;
+    for (std::size_t i = 0; i < count; ++i)
+        anyRules |= (boxes.mask[i] != 0xFFFFFFFF) | (boxes.layer[i] == 0);
+    if (!anyRules)
+        return;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+    {
+        const Pair pair = cellOrderPairs[k];
+        cellOrderPairs[kept] = pair;
+        kept += boxes.allowed(pair.first, pair.second);
+    }
+    cellPairCount = kept;
+}
+
+void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
+{
+    // Cells find pairs in space order; the interface promises (first, second) order. A
+    // counting sort by `first` is one pass over the pairs (std::sort needs about 17 at
+    // 100,000 pairs); pairs with the same first come from different cells only when a box
+    // covers several cells, so those few are put in order by insertion sort.
+    const std::size_t count = boxes.size();
+    pairStart.assign(count + 1, 0);
+    const Pair* cellPairs = cellOrderPairs.data();
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+        ++pairStart[cellPairs[k].first + 1];
+    for (std::size_t i = 0; i < count; ++i)
+        pairStart[i + 1] += pairStart[i];
+    pairs.resize(cellPairCount);
+    for (std::size_t k = 0; k < cellPairCount; ++k)
+        pairs[pairStart[cellPairs[k].first]++] =
+            cellPairs[k]; // afterwards pairStart[i] = end of i's pairs
+    std::uint32_t begin = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const std::uint32_t end = pairStart[i];
+        for (std::uint32_t k = begin + 1; k < end; ++k)
+        {
+            const Pair moving = pairs[k];
+            std::uint32_t j = k;
+            for (; j > begin && pairs[j - 1].second > moving.second; --j)
+                pairs[j] = pairs[j - 1];
+            pairs[j] = moving;
+        }
+        begin = end;
+    }
+}
+
+void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
+{
+    boxes.load(items);
+    chooseGrid();
+    assignCells();
+    listCells();
+    testCells();
+    dropPairsLayersForbid();
+    sortPairs(pairs);
+    lastStats.pairsFound = pairs.size();
+}
+
+void GridBroadphase::drawDebug(DebugRenderer& debug) const
+{
+    // Too many cells to draw one by one would hide everything else: outline occupied cells
+    // only when there are not too many, otherwise just the grid lines.
+    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
+    if (cellStart.size() != cellCount + 1)
+        return;
+    const float cell = usedCellSize;
+    if (columns <= 400 && rows <= 400)
+    {
+        const float right = originX + cell * static_cast<float>(columns);
+        const float bottom = originY + cell * static_cast<float>(rows);
+        for (int cx = 0; cx <= columns; ++cx)
+        {
+            const float x = originX + cell * static_cast<float>(cx);
+            debug.line({x, originY}, {x, bottom}, DebugRenderer::hintColor);
+        }
+        for (int cy = 0; cy <= rows; ++cy)
+        {
+            const float y = originY + cell * static_cast<float>(cy);
+            debug.line({originX, y}, {right, y}, DebugRenderer::hintColor);
+        }
+    }
+    if (cellCount > 20000)
+        return;
+    for (std::size_t c = 0; c < cellCount; ++c)
+    {
+        const std::uint32_t inCell = cellStart[c + 1] - cellStart[c];
+        if (inCell < 2)
+            continue; // cells with two or more boxes are where the tests happen
+        const float x = originX + cell * static_cast<float>(c % columns);
+        const float y = originY + cell * static_cast<float>(c / columns);
+        debug.box({x, y, cell, cell}, DebugRenderer::touchingColor);
+    }
+}
+
+} // namespace hitbox

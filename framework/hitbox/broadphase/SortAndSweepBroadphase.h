@@ -1,0 +1,33 @@
+// SortAndSweepBroadphase.h - sort the boxes by their left edge, then sweep (seed 002's
+// "sort objects according to their position; only compare objects close in the table").
+//
+// After sorting by left edge, box i can only overlap the boxes that come after it while their
+// left edge is still left of i's right edge: the sweep stops there. Objects move a little
+// each frame, so last frame's order is almost right: insertion sort fixes it in about n steps
+// (temporal coherence). If objects jump far, it falls back to a full sort.
+#pragma once
+
+#include "hitbox/broadphase/BoxArrays.h"
+#include "hitbox/broadphase/Broadphase.h"
+
+namespace hitbox
+{
+
+class SortAndSweepBroadphase : public Broadphase
+{
+public:
+    void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
+    const char* name() const override { return "SortAndSweep"; }
+    BroadphaseStats stats() const override { return lastStats; }
+    // Draws each box's x range on the sweep axis along the top of the world.
+    void drawDebug(DebugRenderer& debug) const override;
+
+private:
+    void sortByLeftEdge();
+
+    BoxArrays boxes;
+    std::vector<std::uint32_t> order; // item indices sorted by minX, kept between frames
+    BroadphaseStats lastStats;
+};
+
+} // namespace hitbox

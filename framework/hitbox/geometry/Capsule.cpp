@@ -1,0 +1,316 @@
+#include "hitbox/geometry/Capsule.h"
+
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/VectorMath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hitbox
+{
+namespace
+{
+
+bool isUsable(const Capsule& capsule)
+{
+    return isFinite(capsule.start) && isFinite(capsule.end) && std::isfinite(capsule.radius) &&
+           capsule.radius >= 0.f;
+}
+
+double clamp01(double value)
+{
+    return std::min(1.0, std::max(0.0, value));
+}
+
+sf::Vector2f middleOf(const Capsule& capsule)
+{
+    return (capsule.start + capsule.end) / 2.f;
+}
+
+// A unit vector at right angles to the segment, on the side of `towards` (or (-y, x) when
+// `towards` is on the line). The zero vector when the segment has no length.
+sf::Vector2f sideNormal(sf::Vector2f start, sf::Vector2f end, sf::Vector2f towards)
+{
+    sf::Vector2f normal = unitOr(perpendicular(end - start), {0.f, 0.f});
+    if (dot(towards - start, normal) < 0.f)
+        normal = -normal;
+    return normal;
+}
+
+// The capsules' cores touch or cross: push A across B's segment (or across A's own segment
+// when B's is a point) far enough that A's whole segment is radiusSum away from that line.
+Contact crossingContact(const Capsule& a, const Capsule& b, sf::Vector2f pointOnB)
+{
+    Contact contact;
+    contact.hit = true;
+    const float radiusSum = a.radius + b.radius;
+    sf::Vector2f normal = sideNormal(b.start, b.end, middleOf(a));
+    if (normal != sf::Vector2f())
+    {
+        const float deepestEnd =
+            std::fmin(dot(a.start - b.start, normal), dot(a.end - b.start, normal));
+        contact.normal = normal;
+        contact.depth = radiusSum - std::fmin(deepestEnd, 0.f);
+    }
+    else
+    {
+        // B is a point lying on A's segment: move A sideways off it.
+        normal = unitOr(perpendicular(a.end - a.start), {-1.f, 0.f});
+        contact.normal = normal;
+        contact.depth = radiusSum;
+    }
+    contact.point = pointOnB + contact.normal * b.radius;
+    return contact;
+}
+
+// Which side of the line a->b the point p is on (double, so the sign is trustworthy).
+double sideOf(sf::Vector2f a, sf::Vector2f b, sf::Vector2f p)
+{
+    return (double(b.x) - a.x) * (double(p.y) - a.y) - (double(b.y) - a.y) * (double(p.x) - a.x);
+}
+
+bool segmentsCross(sf::Vector2f a0, sf::Vector2f a1, sf::Vector2f b0, sf::Vector2f b1)
+{
+    const double first = sideOf(a0, a1, b0) * sideOf(a0, a1, b1);
+    const double second = sideOf(b0, b1, a0) * sideOf(b0, b1, a1);
+    return first < 0.0 && second < 0.0;
+}
+
+// Closest points this near are "the same point" for choosing a direction: the rounding of
+// the closest-point formula is about a millionth of the coordinates' size.
+bool nearlySame(sf::Vector2f a, sf::Vector2f b)
+{
+    const float scale = 1.f + std::fmax(std::fmax(std::fabs(a.x), std::fabs(a.y)),
+                                        std::fmax(std::fabs(b.x), std::fabs(b.y)));
+    return lengthOf(a - b) <= 1e-6f * scale;
+}
+
+} // namespace
+
+// [slide:capsule-closest-point]
+sf::Vector2f closestPointOnSegment(sf::Vector2f point, sf::Vector2f start, sf::Vector2f end)
+{
+    const sf::Vector2f along = end - start;
+    const double lengthSquared = double(along.x) * along.x + double(along.y) * along.y;
+    if (lengthSquared == 0.0)
+        return start; // a segment with no length is a point
+    // How far along the segment the point's shadow falls (0 = start, 1 = end), kept on it.
+    const double t =
+        (double(point.x - start.x) * along.x + double(point.y - start.y) * along.y) / lengthSquared;
+    const double kept = clamp01(t);
+    return {static_cast<float>(start.x + along.x * kept),
+            static_cast<float>(start.y + along.y * kept)};
+}
+
+Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle)
+{
+    // A circle is a capsule whose segment has no length. The capsule test finds the nearest
+    // point of each core (closestPointOnSegment, for a point) and treats them as two circles.
+    return capsuleVsCapsule(capsule, Capsule{circle.center, circle.center, circle.radius});
+}
+// [/slide]
+
+namespace
+{
+
+// How far along each segment (0..1) the closest pair lies.
+struct SegmentTimes
+{
+    double s;
+    double t;
+};
+
+SegmentTimes closestTimes(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
+                          sf::Vector2f end2)
+{
+    // Write the points as start1 + s * d1 and start2 + t * d2 and minimise the distance over
+    // s and t in [0, 1] (the usual derivation: set both derivatives to zero, then clamp).
+    const sf::Vector2f d1 = end1 - start1;
+    const sf::Vector2f d2 = end2 - start2;
+    const sf::Vector2f r = start1 - start2;
+    const double a = double(d1.x) * d1.x + double(d1.y) * d1.y;
+    const double e = double(d2.x) * d2.x + double(d2.y) * d2.y;
+    const double f = double(d2.x) * r.x + double(d2.y) * r.y;
+    double s = 0.0;
+    double t = 0.0;
+    if (a == 0.0 && e == 0.0)
+        return {0.0, 0.0}; // two points
+    if (a == 0.0)
+    {
+        t = clamp01(f / e); // the first is a point
+    }
+    else
+    {
+        const double c = double(d1.x) * r.x + double(d1.y) * r.y;
+        if (e == 0.0)
+        {
+            s = clamp01(-c / a); // the second is a point
+        }
+        else
+        {
+            const double b = double(d1.x) * d2.x + double(d1.y) * d2.y;
+            const double denominator = a * e - b * b; // 0 when parallel
+            s = denominator > 0.0 ? clamp01((b * f - c * e) / denominator) : 0.0;
+            t = (b * s + f) / e;
+            // t off the second segment: clamp it and find s again for that t.
+            if (t < 0.0)
+            {
+                t = 0.0;
+                s = clamp01(-c / a);
+            }
+            else if (t > 1.0)
+            {
+                t = 1.0;
+                s = clamp01((b - c) / a);
+            }
+        }
+    }
+    return {s, t};
+}
+
+// The point at `time` along start..end, in double precision.
+void pointAt(sf::Vector2f start, sf::Vector2f end, double time, double& x, double& y)
+{
+    x = start.x + (double(end.x) - start.x) * time;
+    y = start.y + (double(end.y) - start.y) * time;
+}
+
+} // namespace
+
+SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
+                                      sf::Vector2f end2)
+{
+    const SegmentTimes times = closestTimes(start1, end1, start2, end2);
+    double x1, y1, x2, y2;
+    pointAt(start1, end1, times.s, x1, y1);
+    pointAt(start2, end2, times.t, x2, y2);
+    return {{static_cast<float>(x1), static_cast<float>(y1)},
+            {static_cast<float>(x2), static_cast<float>(y2)}};
+}
+
+Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
+{
+    if (!isUsable(a) || !isUsable(b))
+        return Contact{};
+    const SegmentPoints closest = closestPointsOfSegments(a.start, a.end, b.start, b.end);
+    const float radiusSum = a.radius + b.radius;
+    const bool crossing = segmentsCross(a.start, a.end, b.start, b.end);
+    if (crossing || nearlySame(closest.first, closest.second))
+    {
+        if (!(lengthOf(closest.first - closest.second) < radiusSum) &&
+            !(crossing && radiusSum > 0.f))
+            return Contact{}; // two segments with no area, or apart by more than the radii
+        return crossingContact(a, b, closest.second);
+    }
+    // Otherwise it is two circles, one at each closest point. The direction between them is
+    // worked out in double: when the cores nearly touch, float rounding would tilt it.
+    const SegmentTimes times = closestTimes(a.start, a.end, b.start, b.end);
+    double ax, ay, bx, by;
+    pointAt(a.start, a.end, times.s, ax, ay);
+    pointAt(b.start, b.end, times.t, bx, by);
+    const double distance = std::hypot(ax - bx, ay - by);
+    if (!(distance < double(radiusSum)))
+        return Contact{};
+    Contact contact;
+    contact.hit = true;
+    contact.normal = {static_cast<float>((ax - bx) / distance),
+                      static_cast<float>((ay - by) / distance)};
+    contact.depth = static_cast<float>(radiusSum - distance);
+    contact.point =
+        sf::Vector2f(static_cast<float>(bx), static_cast<float>(by)) + contact.normal * b.radius;
+    return contact;
+}
+
+Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
+{
+    Contact contact;
+    if (!isUsable(capsule) || polygon.points.empty())
+        return contact;
+    for (sf::Vector2f point : polygon.points)
+        if (!isFinite(point))
+            return contact;
+    if (capsule.radius == 0.f && twiceSignedArea(polygon) == 0.f)
+        return contact; // a segment against a polygon with no area: nothing to share
+
+    // Candidate axes (see the header): the polygon's edge normals, the capsule's normal, and
+    // each capsule end to each corner.
+    const std::vector<sf::Vector2f>& corners = polygon.points;
+    std::vector<sf::Vector2f> axes;
+    std::vector<bool> fromPolygonFace;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+    {
+        axes.push_back(perpendicular(corners[(i + 1) % corners.size()] - corners[i]));
+        fromPolygonFace.push_back(true);
+    }
+    axes.push_back(perpendicular(capsule.end - capsule.start));
+    fromPolygonFace.push_back(false);
+    for (sf::Vector2f corner : corners)
+        for (sf::Vector2f end : {capsule.start, capsule.end})
+        {
+            axes.push_back(corner - end);
+            fromPolygonFace.push_back(false);
+        }
+
+    bool found = false;
+    bool bestFromFace = false;
+    for (std::size_t i = 0; i < axes.size(); ++i)
+    {
+        sf::Vector2f axis = unitOr(axes[i], {0.f, 0.f});
+        if (axis == sf::Vector2f())
+            continue; // a repeated corner, or a capsule end on a corner
+        if (axis.x < 0.f || (axis.x == 0.f && axis.y < 0.f))
+            axis = -axis; // point right (or down): ties then go left (or up)
+        float polygonMin = dot(corners[0], axis);
+        float polygonMax = polygonMin;
+        for (sf::Vector2f corner : corners)
+        {
+            polygonMin = std::fmin(polygonMin, dot(corner, axis));
+            polygonMax = std::fmax(polygonMax, dot(corner, axis));
+        }
+        const float capsuleMin =
+            std::fmin(dot(capsule.start, axis), dot(capsule.end, axis)) - capsule.radius;
+        const float capsuleMax =
+            std::fmax(dot(capsule.start, axis), dot(capsule.end, axis)) + capsule.radius;
+        const float pushPositive = polygonMax - capsuleMin;
+        const float pushNegative = capsuleMax - polygonMin;
+        const float overlap = std::fmin(pushPositive, pushNegative);
+        if (overlap <= 0.f)
+            return Contact{}; // a separating axis: apart (touching counts as apart)
+        if (!found || overlap < contact.depth)
+        {
+            found = true;
+            contact.depth = overlap;
+            contact.normal = pushNegative <= pushPositive ? -axis : axis;
+            bestFromFace = fromPolygonFace[i];
+        }
+    }
+    contact.hit = true;
+    if (!found)
+    {
+        // No axis at all: the capsule is a point sitting exactly on a one-point polygon
+        // (radius > 0 here). Push towards -x, as circleVsCircleContact does.
+        contact.normal = {-1.f, 0.f};
+        contact.depth = capsule.radius;
+        contact.point = corners[0];
+        return contact;
+    }
+    const sf::Vector2f n = contact.normal;
+    if (bestFromFace)
+    {
+        // The capsule's deepest point, moved onto the polygon's face.
+        const sf::Vector2f deepestEnd =
+            dot(capsule.start, n) <= dot(capsule.end, n) ? capsule.start : capsule.end;
+        contact.point = deepestEnd - n * capsule.radius + n * contact.depth;
+    }
+    else
+    {
+        // The polygon's corner that reaches deepest into the capsule.
+        contact.point = corners[0];
+        for (sf::Vector2f corner : corners)
+            if (dot(corner, n) > dot(contact.point, n))
+                contact.point = corner;
+    }
+    return contact;
+}
+
+} // namespace hitbox

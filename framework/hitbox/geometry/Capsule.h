@@ -1,0 +1,61 @@
+// Capsule.h - capsules: a segment with a radius (a box with two round ends, seed 003).
+//
+// A capsule is every point within `radius` of the segment from `start` to `end`: a good
+// shape for a character or a sword swing. Every capsule test comes down to one question:
+// how close do the two "cores" (segments, points) get? Closer than the radii added = overlap.
+//
+// Units: pixels. The normal convention is the one of Shapes.h: out of B towards A, where A
+// is the first argument.
+//
+// EDGE RULES (the "share area" rule of Overlap.h):
+//   - Collide only when the distance between the cores is strictly less than the radii
+//     added (exactly touching is not a collision).
+//   - Zero radius: the capsule is a segment (or a point when start == end); it collides when
+//     it reaches strictly inside the other shape. Two shapes with no area never collide.
+//   - Zero-length capsule (start == end): a circle.
+//   - Negative radius, NaN or infinite input: never collide.
+//   - When the cores touch or cross (distance 0, or within rounding: a millionth of the
+//     coordinates' size), there is no single closest direction. The
+//     normal is then at right angles to B's segment (to A's segment if B's is a point), on
+//     the side of A's middle; the depth moves A far enough along it to clear B. It is a
+//     separating move, not always the shortest one. Fully degenerate (both points at the same
+//     place): normal (-1, 0), as circleVsCircleContact.
+#pragma once
+
+#include "hitbox/geometry/Polygon.h"
+#include "hitbox/geometry/Shapes.h"
+
+namespace hitbox
+{
+
+struct Capsule
+{
+    sf::Vector2f start;
+    sf::Vector2f end;
+    float radius = 0.f;
+};
+
+// The point of the segment start..end nearest to `point` (start when the segment has no
+// length). Ties cannot happen: the nearest point of a segment is unique.
+sf::Vector2f closestPointOnSegment(sf::Vector2f point, sf::Vector2f start, sf::Vector2f end);
+
+// The closest pair of points between two segments (first on segment 1, second on 2). For
+// parallel overlapping segments, where many pairs are equally close, one of them.
+struct SegmentPoints
+{
+    sf::Vector2f first;
+    sf::Vector2f second;
+};
+SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
+                                      sf::Vector2f end2);
+
+// A = the capsule, B = the circle. Point: on the circle's rim.
+Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);
+// Point: on B's surface, facing A.
+Contact capsuleVsCapsule(const Capsule& a, const Capsule& b);
+// A = the capsule, B = the convex polygon (Polygon.h's rules for degenerate polygons).
+// Separating axes: the polygon's edge normals, the capsule's own normal, and the directions
+// from each end of the capsule to each corner (the round ends need those).
+Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon);
+
+} // namespace hitbox

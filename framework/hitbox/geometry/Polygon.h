@@ -1,0 +1,92 @@
+// Polygon.h - rotated boxes and convex polygons, tested by the separating axis theorem.
+//
+// An axis-aligned test (Overlap.h) is only right while nothing rotates. For a rotated box,
+// or any convex polygon, the separating axis theorem (seed 002's "axes of separation", seed
+// 003's SAT) decides: two convex shapes are apart exactly when some line separates them, and
+// it is enough to try the lines at right angles to each edge. Project both shapes onto each
+// such axis; if the two shadows do not overlap on one axis, the shapes are apart. If they
+// overlap on every axis, the axis with the smallest overlap gives the minimum translation.
+//
+// Units: pixels; angles in degrees, clockwise on screen (y down), as sf::Transformable uses.
+//
+// EDGE RULES (the "share area" rule of Overlap.h):
+//   - Shapes collide only when they share area: shadows that only touch (overlap 0) on some
+//     axis mean apart. Touching edges and corners do not collide.
+//   - Either winding (clockwise or anticlockwise) works. The polygon must be convex; for a
+//     concave polygon the answers mean nothing.
+//   - Degenerate polygons: repeated points are ignored. A polygon with no area (one point,
+//     or all points on a line) is a point or a segment: it collides when it reaches strictly
+//     inside the other polygon. Two polygons with no area never collide (nothing to share;
+//     note boxVsBox differs for two crossing zero-size boxes). An empty polygon never
+//     collides.
+//   - NaN or infinite coordinates, or a NaN angle: never collide.
+//   - Ties: among axes with the same overlap, the more horizontal axis wins (so the x axis,
+//     as in boxVsBoxContact), then the first tried (A's edges in order, then B's). On one
+//     axis, equal pushes either way go to the negative direction (left, up). So two
+//     axis-aligned boxes get exactly boxVsBoxContact's normal and depth.
+//   - Contact normal: out of B towards A (Shapes.h), unit length; depth in pixels.
+//     Contact point: the vertex that reaches deepest, moved onto B's surface (approximate for
+//     edge-to-edge contact: one point of the touching stretch, not its middle).
+#pragma once
+
+#include "hitbox/geometry/Shapes.h"
+
+#include <vector>
+
+namespace hitbox
+{
+
+// A box rotated about its centre. halfSize is half the width and half the height before
+// rotating; angleDegrees turns it clockwise on screen, like sf::Transformable::setRotation.
+struct OrientedBox
+{
+    sf::Vector2f center;
+    sf::Vector2f halfSize;
+    float angleDegrees = 0.f;
+};
+
+// A convex polygon: its corners in order around the edge (either way round). World pixels.
+struct Polygon
+{
+    std::vector<sf::Vector2f> points;
+};
+
+// The four corners, starting with the box's own top-left and going down its left side first
+// (so the first edge's axis is the box's x axis). A negative half size is read as positive.
+Polygon toPolygon(const OrientedBox& box);
+// The four corners of an axis-aligned box, in the same order (negative sizes normalised).
+Polygon toPolygon(const sf::FloatRect& box);
+
+// Twice the signed area (positive when the points run clockwise on screen, y down).
+float twiceSignedArea(const Polygon& polygon);
+
+// What the search for a separating axis found, for drawing: when separated, the axis with
+// the LARGEST gap (the clearest view of the separation) and that gap in pixels (>= 0; 0 when
+// touching); otherwise the axis of LEAST overlap, with gap = -depth. `axis` is a unit vector
+// pointing from B's side towards A's side. Nothing to test (an empty polygon, NaN, two points)
+// gives separated == true, axis (0, 0), gap 0.
+struct AxisReport
+{
+    bool separated = true;
+    sf::Vector2f axis;
+    float gap = 0.f;
+};
+AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
+
+// The separating axis theorem with the minimum translation: moving A by normal * depth
+// leaves the two exactly touching.
+Contact polygonVsPolygon(const Polygon& a, const Polygon& b);
+Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b);
+
+// A = the polygon, B = the circle: the normal points out of the circle towards the polygon.
+// The circle's centre's closest point on the polygon decides; a centre inside the polygon
+// leaves through the nearest edge. Zero radius: a point, collides when strictly inside.
+// A polygon with no area collides when it reaches strictly inside the circle.
+Contact polygonVsCircle(const Polygon& polygon, const Circle& circle);
+// The same test seen from the circle: A = the circle, so the normal is reversed.
+Contact circleVsPolygon(const Circle& circle, const Polygon& polygon);
+
+// True when `point` is strictly inside the convex polygon (on an edge is outside).
+bool pointInPolygon(sf::Vector2f point, const Polygon& polygon);
+
+} // namespace hitbox

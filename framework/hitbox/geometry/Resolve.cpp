@@ -1,0 +1,185 @@
+#include "hitbox/geometry/Resolve.h"
+
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Response.h"
+#include "hitbox/geometry/VectorMath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hitbox
+{
+namespace
+{
+
+constexpr int maxRounds = 3;
+
+sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
+{
+    box.left += offset.x;
+    box.top += offset.y;
+    return box;
+}
+
+// The velocity to keep after touching a surface: the part into it goes entirely.
+sf::Vector2f withoutPartInto(sf::Vector2f velocity, sf::Vector2f normal)
+{
+    const float into = dot(velocity, normal);
+    return into < 0.f ? velocity - normal * into : velocity;
+}
+
+// `start` such that start + size ends exactly at `edge` or before it (float rounding can
+// put start + size one step past the edge, which would count as an overlap).
+float startEndingAt(float edge, float size)
+{
+    float start = edge - size;
+    while (start + size > edge)
+        start = std::nextafter(start, -INFINITY);
+    return start;
+}
+
+// Moves `box` out of `solid` through the face with normal `normal` (an axis direction).
+sf::FloatRect placedAgainst(sf::FloatRect box, const sf::FloatRect& solid, sf::Vector2f normal)
+{
+    if (normal.x < 0.f)
+        box.left = startEndingAt(solid.left, box.width);
+    else if (normal.x > 0.f)
+        box.left = rightOf(solid);
+    else if (normal.y < 0.f)
+        box.top = startEndingAt(solid.top, box.height);
+    else if (normal.y > 0.f)
+        box.top = bottomOf(solid);
+    return box;
+}
+
+struct Candidate
+{
+    std::size_t solid;
+    float time;
+    float sharedLength; // how much of the face they touch along at that time (0 for a corner)
+};
+
+// How long the stretch of surface is along which the moved mover touches the solid.
+float sharedLengthOf(const Hit& hit, const sf::FloatRect& mover, sf::Vector2f move,
+                     const sf::FloatRect& solid)
+{
+    const sf::FloatRect then(mover.left + move.x * hit.time, mover.top + move.y * hit.time,
+                             mover.width, mover.height);
+    if (hit.normal.x != 0.f)
+        return std::fmin(bottomOf(then), bottomOf(solid)) - std::fmax(then.top, solid.top);
+    return std::fmin(rightOf(then), rightOf(solid)) - std::fmax(then.left, solid.left);
+}
+
+} // namespace
+
+MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
+                           const std::vector<sf::FloatRect>& solids, bool sortByTime)
+{
+    MoveResult result{normalised(box), velocity, {}};
+    if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
+        return result;
+    sf::Vector2f stepVelocity = velocity; // used for this step's move (seed 004's slide)
+    std::vector<Candidate> resolved;      // for the rounding clean-up at the end
+    for (int round = 0; round < maxRounds; ++round)
+    {
+        // 1. Which solids would this move hit, and when?
+        std::vector<Candidate> candidates;
+        for (std::size_t i = 0; i < solids.size(); ++i)
+        {
+            const Hit hit = sweepBoxVsBox(result.box, stepVelocity * dt, solids[i]);
+            if (hit.hit)
+                candidates.push_back(
+                    {i, hit.time,
+                     sharedLengthOf(hit, result.box, stepVelocity * dt, normalised(solids[i]))});
+        }
+        if (candidates.empty())
+            break;
+        // [slide:resolve-time-order]
+        // 2. Nearest first (seed 004): the floor under the box (t = 0) is resolved before
+        //    the next tile's corner, so the seam between tiles never stops the box. At the
+        //    same time, a face touched along its length goes before a corner just touched.
+        if (sortByTime)
+            std::stable_sort(candidates.begin(), candidates.end(),
+                             [](const Candidate& a, const Candidate& b) {
+                                 return a.time < b.time ||
+                                        (a.time == b.time && a.sharedLength > b.sharedLength);
+                             });
+        // 3. Resolve in that order, sweeping again with the velocity as changed so far.
+        for (const Candidate& candidate : candidates)
+        {
+            const Hit hit = sweepBoxVsBox(result.box, stepVelocity * dt, solids[candidate.solid]);
+            if (!hit.hit)
+                continue; // an earlier slide already took this one away
+            if (hit.startedInside)
+                result.box =
+                    placedAgainst(result.box, normalised(solids[candidate.solid]), hit.normal);
+            stepVelocity = slideVelocity(stepVelocity, hit);
+            result.velocity = withoutPartInto(result.velocity, hit.normal);
+            result.hits.push_back(hit);
+            resolved.push_back(candidate);
+        }
+        // [/slide]
+    }
+    result.box = movedBy(result.box, stepVelocity * dt);
+    // Float rounding can leave the box a hair inside a surface it slid to; put it exactly
+    // against that surface, so that touching stays touching (the edge rule).
+    for (std::size_t i = 0; i < resolved.size(); ++i)
+    {
+        const sf::FloatRect solid = normalised(solids[resolved[i].solid]);
+        if (boxVsBox(result.box, solid))
+            result.box = placedAgainst(result.box, solid, result.hits[i].normal);
+    }
+    return result;
+}
+
+MoveResult moveBoxPerAxis(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
+                          const std::vector<sf::FloatRect>& solids)
+{
+    MoveResult result{normalised(box), velocity, {}};
+    if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
+        return result;
+    const sf::Vector2f move = velocity * dt;
+    for (int axis = 0; axis < 2; ++axis)
+    {
+        const float step = axis == 0 ? move.x : move.y;
+        const sf::FloatRect before = result.box;
+        if (axis == 0)
+            result.box.left += step;
+        else
+            result.box.top += step;
+        for (const sf::FloatRect& solidBox : solids)
+        {
+            const sf::FloatRect solid = normalised(solidBox);
+            if (!boxVsBox(result.box, solid))
+                continue;
+            // Push back against this axis's motion. Not moving on this axis: leave it to the
+            // other axis, unless nothing moves at all.
+            sf::Vector2f normal;
+            if (step != 0.f)
+                normal = axis == 0 ? sf::Vector2f(step > 0.f ? -1.f : 1.f, 0.f)
+                                   : sf::Vector2f(0.f, step > 0.f ? -1.f : 1.f);
+            else if (axis == 1 && move.x == 0.f)
+                normal = boxVsBoxContact(result.box, solid).normal;
+            else
+                continue;
+            const Contact overlap = boxVsBoxContact(result.box, solid);
+            result.box = placedAgainst(result.box, solid, normal);
+            if (axis == 0)
+                result.velocity.x = normal.x != 0.f ? 0.f : result.velocity.x;
+            else
+                result.velocity.y = normal.y != 0.f ? 0.f : result.velocity.y;
+            Hit hit;
+            hit.hit = true;
+            const float kept =
+                axis == 0 ? result.box.left - before.left : result.box.top - before.top;
+            hit.time = step != 0.f ? std::fmin(std::fmax(kept / step, 0.f), 1.f) : 0.f;
+            hit.normal = normal;
+            hit.depth = overlap.depth;
+            hit.point = overlap.point;
+            result.hits.push_back(hit);
+        }
+    }
+    return result;
+}
+
+} // namespace hitbox

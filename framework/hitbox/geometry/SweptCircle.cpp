@@ -1,0 +1,135 @@
+#include "hitbox/geometry/SweptCircle.h"
+
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/VectorMath.h"
+
+#include <cmath>
+
+namespace hitbox
+{
+namespace
+{
+
+// The largest float below 1: a time that rounds up to 1 would read as "touching at the end".
+const float latestTime = std::nextafter(1.f, 0.f);
+
+bool isUsable(const Circle& circle)
+{
+    return isFinite(circle) && circle.radius >= 0.f;
+}
+
+Hit fromContact(const Contact& contact)
+{
+    Hit hit;
+    hit.hit = true;
+    hit.startedInside = true;
+    hit.time = 0.f;
+    hit.normal = contact.normal;
+    hit.depth = contact.depth;
+    hit.point = contact.point;
+    return hit;
+}
+
+// [slide:swept-circle-toi]
+// When does a point moving from `start` by `move` first get strictly inside the circle
+// (centre, radius)? |start + t * move - centre| = radius is a quadratic in t (seed 003):
+//   a t^2 + 2 b t + c = 0,  a = move.move,  b = f.move,  c = f.f - radius^2,  f = start - centre.
+// Returns a time in [0, 1), or a negative number for "no hit". The caller has already
+// handled a start strictly inside (c < 0).
+double entryTime(sf::Vector2f start, sf::Vector2f move, sf::Vector2f centre, float radius)
+{
+    const double fx = double(start.x) - centre.x;
+    const double fy = double(start.y) - centre.y;
+    const double a = double(move.x) * move.x + double(move.y) * move.y;
+    const double b = fx * move.x + fy * move.y;
+    const double c = fx * fx + fy * fy - double(radius) * radius;
+    if (a == 0.0 || b >= 0.0)
+        return -1.0; // not moving, or moving away from (or along) the rim: never gets inside
+    const double discriminant = b * b - a * c;
+    if (discriminant <= 0.0)
+        return -1.0; // misses, or only grazes the rim: never shares area
+    // The smaller root. With b < 0 this sum has no cancellation, so it stays accurate.
+    const double time = (-b - std::sqrt(discriminant)) / a;
+    return time < 1.0 ? std::fmax(time, 0.0) : -1.0;
+}
+// [/slide]
+
+// A cast of the point `start` by `move` against one circle, filled in as a Hit.
+Hit castAgainstCircle(sf::Vector2f start, sf::Vector2f move, const Circle& circle)
+{
+    Hit hit;
+    const double time = entryTime(start, move, circle.center, circle.radius);
+    if (time < 0.0)
+        return hit;
+    hit.hit = true;
+    hit.time = std::fmin(static_cast<float>(time), latestTime);
+    const sf::Vector2f centreThen = start + move * hit.time;
+    hit.normal = unitOr(centreThen - circle.center, {-1.f, 0.f});
+    hit.point = circle.center + hit.normal * circle.radius;
+    return hit;
+}
+
+} // namespace
+
+Hit segmentVsCircle(sf::Vector2f start, sf::Vector2f end, const Circle& circle)
+{
+    return sweepCircleVsCircle(Circle{start, 0.f}, end - start, circle);
+}
+
+Hit sweepCircleVsCircle(const Circle& mover, sf::Vector2f displacement, const Circle& target)
+{
+    if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
+        return Hit{};
+    if (circleVsCircle(mover, target))
+        return fromContact(circleVsCircleContact(mover, target));
+    // Grow the target by the mover's radius and cast the mover's centre (a point) at it.
+    const Circle grown{target.center, mover.radius + target.radius};
+    Hit hit = castAgainstCircle(mover.center, displacement, grown);
+    if (hit.hit)
+        hit.point = target.center + hit.normal * target.radius; // on the target's rim
+    return hit;
+}
+
+Hit sweepCircleVsMovingCircle(const Circle& mover, sf::Vector2f moverDisplacement,
+                              const Circle& target, sf::Vector2f targetDisplacement)
+{
+    // Watch from the target: it stands still and the mover makes the relative move.
+    Hit hit = sweepCircleVsCircle(mover, moverDisplacement - targetDisplacement, target);
+    if (hit.hit)
+        hit.point += targetDisplacement * hit.time;
+    return hit;
+}
+
+Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& box)
+{
+    if (!isUsable(mover) || !isFinite(box) || !isFinite(displacement))
+        return Hit{};
+    const sf::FloatRect b = normalised(box);
+    if (circleVsBox(mover, b))
+        return fromContact(circleVsBoxContact(mover, b));
+
+    // [slide:swept-circle-box]
+    // The rounded box is the union of a wide slab, a tall slab and four corner circles. The
+    // centre's first entry into the union is the earliest entry into any one of them.
+    const float r = mover.radius;
+    const sf::Vector2f start = mover.center;
+    const sf::Vector2f end = start + displacement;
+    Hit best = segmentVsBox(start, end, {b.left - r, b.top, b.width + 2.f * r, b.height});
+    const Hit tall = segmentVsBox(start, end, {b.left, b.top - r, b.width, b.height + 2.f * r});
+    if (tall.hit && (!best.hit || tall.time < best.time))
+        best = tall;
+    for (sf::Vector2f corner :
+         {sf::Vector2f(b.left, b.top), sf::Vector2f(rightOf(b), b.top),
+          sf::Vector2f(b.left, bottomOf(b)), sf::Vector2f(rightOf(b), bottomOf(b))})
+    {
+        const Hit round = castAgainstCircle(start, displacement, Circle{corner, r});
+        if (round.hit && (!best.hit || round.time < best.time)) // ties: the face wins
+            best = round;
+    }
+    if (best.hit)
+        best.point = start + displacement * best.time - best.normal * r; // on the box
+    return best;
+    // [/slide]
+}
+
+} // namespace hitbox

@@ -1,0 +1,117 @@
+#include "hitbox/geometry/Tunnelling.h"
+
+#include "hitbox/geometry/Capsule.h"
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Sweep.h"
+#include "hitbox/geometry/SweptCircle.h"
+#include "hitbox/geometry/VectorMath.h"
+
+#include <cmath>
+
+namespace hitbox
+{
+namespace
+{
+
+sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
+{
+    box.left += offset.x;
+    box.top += offset.y;
+    return box;
+}
+
+bool isUsable(const Circle& circle)
+{
+    return isFinite(circle) && circle.radius >= 0.f;
+}
+
+sf::FloatRect boundsOf(const Circle& circle)
+{
+    return {circle.center.x - circle.radius, circle.center.y - circle.radius, 2.f * circle.radius,
+            2.f * circle.radius};
+}
+
+} // namespace
+
+// [slide:tunnelling-check]
+bool canTunnel(const sf::FloatRect& moverBox, sf::Vector2f displacement,
+               const sf::FloatRect& targetBox)
+{
+    if (!isFinite(moverBox) || !isFinite(displacement) || !isFinite(targetBox))
+        return false;
+    const sf::FloatRect mover = normalised(moverBox);
+    const sf::FloatRect target = normalised(targetBox);
+    // To get from touching one side to touching the other, the mover travels its own size
+    // plus the target's. A step at least that long can jump the target completely.
+    const bool longEnough = std::fabs(displacement.x) >= mover.width + target.width ||
+                            std::fabs(displacement.y) >= mover.height + target.height;
+    // Broad phase: the target must lie where this step could take the mover.
+    return longEnough && boxVsBox(sweptBounds(mover, displacement), target);
+}
+// [/slide]
+
+bool canTunnel(const Circle& mover, sf::Vector2f displacement, const Circle& target)
+{
+    if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
+        return false;
+    const bool longEnough = lengthOf(displacement) >= 2.f * (mover.radius + target.radius);
+    // The mover's path is a capsule: does it reach the target at all?
+    const Capsule path{mover.center, mover.center + displacement, mover.radius};
+    return longEnough && capsuleVsCircle(path, target).hit;
+}
+
+bool canTunnel(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& target)
+{
+    if (!isUsable(mover))
+        return false;
+    return canTunnel(boundsOf(mover), displacement, target);
+}
+
+bool discreteTestMisses(const sf::FloatRect& mover, sf::Vector2f displacement,
+                        const sf::FloatRect& target)
+{
+    return sweepBoxVsBox(mover, displacement, target).hit && !boxVsBox(mover, target) &&
+           !boxVsBox(movedBy(mover, displacement), target);
+}
+
+bool discreteTestMisses(const Circle& mover, sf::Vector2f displacement, const Circle& target)
+{
+    const Circle moved{mover.center + displacement, mover.radius};
+    return sweepCircleVsCircle(mover, displacement, target).hit && !circleVsCircle(mover, target) &&
+           !circleVsCircle(moved, target);
+}
+
+sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement)
+{
+    const sf::FloatRect start = normalised(box);
+    const sf::FloatRect end = movedBy(start, displacement);
+    const float left = std::fmin(start.left, end.left);
+    const float top = std::fmin(start.top, end.top);
+    const float right = std::fmax(rightOf(start), rightOf(end));
+    const float bottom = std::fmax(bottomOf(start), bottomOf(end));
+    return {left, top, right - left, bottom - top};
+}
+
+sf::FloatRect sweptBounds(const Circle& circle, sf::Vector2f displacement)
+{
+    return sweptBounds(boundsOf(circle), displacement);
+}
+
+sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f velocity, float dt,
+                                 const std::vector<sf::FloatRect>& solids)
+{
+    if (!isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
+        return velocity;
+    // Seed 000: rather than resolve an overlap afterwards, shorten the move so it never
+    // happens. The earliest time of impact over all solids decides how much of it to keep.
+    float earliest = 1.f;
+    for (const sf::FloatRect& solid : solids)
+    {
+        const Hit hit = sweepBoxVsBox(mover, velocity * dt, solid);
+        if (hit.hit && !hit.startedInside)
+            earliest = std::fmin(earliest, hit.time);
+    }
+    return velocity * earliest;
+}
+
+} // namespace hitbox

@@ -1,0 +1,53 @@
+// Tunnelling.h - when can a discrete test miss a collision, and how to stop it.
+//
+// A discrete test (Overlap.h) looks at where things are at the end of each step. If a step
+// carries the mover from one side of a target to the other, neither look sees an overlap
+// and the mover passes straight through: "bullet through paper" (seed 000). These functions
+// say when that can happen, give the swept bounds a broad phase uses to find what a move
+// could touch (seeds 000 and 004), and clamp a move so it stops at the first surface
+// (seed 000's speculative contacts).
+//
+// Units: pixels, seconds, pixels per second; `displacement` is the whole move of one step.
+// Edge rules: NaN or infinite input never tunnels (false) and never changes a velocity;
+// negative box sizes are read as SFML reads them; a negative radius is not a circle (false).
+#pragma once
+
+#include "hitbox/geometry/Shapes.h"
+
+#include <vector>
+
+namespace hitbox
+{
+
+// True when this step is long enough for the mover to pass right through the target
+// between two discrete tests, and the step's swept bounds reach the target. "Long enough":
+// on some axis the move is at least the two sizes added on that axis (then the mover can go
+// from touching one side to touching the other, and neither end of the step overlaps).
+// Note: clipping a corner diagonally can be missed at any speed; only a sweep catches that.
+bool canTunnel(const sf::FloatRect& mover, sf::Vector2f displacement, const sf::FloatRect& target);
+// Circles: the move is at least the two diameters added, and the mover's path (a capsule)
+// reaches the target.
+bool canTunnel(const Circle& mover, sf::Vector2f displacement, const Circle& target);
+// A circle against a box: the circle counts as its bounding box (2r by 2r).
+bool canTunnel(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& target);
+
+// True when the sweep says the mover hits the target during the step but the discrete
+// test at the start and at the end of the step sees no overlap: the miss actually happens.
+bool discreteTestMisses(const sf::FloatRect& mover, sf::Vector2f displacement,
+                        const sf::FloatRect& target);
+bool discreteTestMisses(const Circle& mover, sf::Vector2f displacement, const Circle& target);
+
+// The smallest box holding the mover at the start and at the end of the step (and so, for a
+// box or a circle moving in a straight line, everywhere between). Broad phase: only targets
+// that overlap these bounds can be hit this step. NaN input: returned as it comes.
+sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement);
+sf::FloatRect sweptBounds(const Circle& circle, sf::Vector2f displacement);
+
+// Speculative contacts (seed 000), simplified: the velocity scaled down so that moving by
+// velocity * dt ends exactly touching the first solid the box would hit (the whole velocity
+// is scaled, so there is no slide; see Resolve.h for that). A box already overlapping a solid
+// keeps its velocity (pushing out is a separate job). No hit: unchanged.
+sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f velocity, float dt,
+                                 const std::vector<sf::FloatRect>& solids);
+
+} // namespace hitbox

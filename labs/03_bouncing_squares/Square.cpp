@@ -1,0 +1,79 @@
+#include "Square.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// Seconds a hit flash takes to fade.
+constexpr float flashSeconds = 0.25f;
+} // namespace
+
+Square::Square(sf::Vector2f center, sf::Vector2f startVelocity, sf::Color color)
+{
+    // [slide:lab03-collision-box]
+    // The shape is the whole picture; its origin, the point getPosition() gives, is the
+    // centre of the picture.
+    setSize({spriteSize, spriteSize});
+    setOrigin(spriteSize / 2.f, spriteSize / 2.f);
+    // BEGIN TASK 1: fit the collision box to the crate
+    // Without this the box is the whole picture, margin and all, and squares bounce off
+    // each other with a visible gap. The box is measured from the origin (the centre):
+    // it starts half a crate up and to the left of it.
+    setCollisionBox(-crateSize / 2.f, -crateSize / 2.f, crateSize, crateSize);
+    // END TASK 1
+    // [/slide]
+    setPosition(center);
+    setFillColor(color);
+    setVelocity(startVelocity);
+}
+
+void Square::update(float dt)
+{
+    move(velocity * dt);
+    flash = std::max(0.f, flash - dt / flashSeconds);
+
+    // BEGIN TASK 2: bounce the collision box off the window edges
+    // Test the collision box, not the picture: the see-through margin may go past the
+    // edge, the crate may not. Move the square back by however far the box is out.
+    const sf::FloatRect box = getCollisionBox();
+    bool hitWall = false;
+    if (box.left < 0.f || box.left + box.width > worldSize.x)
+    {
+        const bool outLeft = box.left < 0.f;
+        move(outLeft ? -box.left : worldSize.x - (box.left + box.width), 0.f);
+        velocity.x = outLeft ? std::abs(velocity.x) : -std::abs(velocity.x);
+        hitWall = true;
+    }
+    if (box.top < 0.f || box.top + box.height > worldSize.y)
+    {
+        const bool outTop = box.top < 0.f;
+        move(0.f, outTop ? -box.top : worldSize.y - (box.top + box.height));
+        velocity.y = outTop ? std::abs(velocity.y) : -std::abs(velocity.y);
+        hitWall = true;
+    }
+    if (hitWall)
+        collisionResponse(nullptr);
+    // END TASK 2
+}
+
+void Square::collisionResponse(GameObject*)
+{
+    ++hitCount;
+    flash = 1.f;
+}
+
+void Square::setWorldSize(sf::Vector2f size)
+{
+    worldSize = size;
+}
+
+int Square::getHitCount() const
+{
+    return hitCount;
+}
+
+float Square::getFlash() const
+{
+    return flash;
+}

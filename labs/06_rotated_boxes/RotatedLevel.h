@@ -1,0 +1,79 @@
+// RotatedLevel.h - rotated boxes (and one capsule) that you drag with the mouse and turn
+// with the mouse wheel, tested by the separating axis theorem (Sat.h).
+//
+// For the shape you hold, the picture shows what SAT found against its nearest neighbour:
+// when apart, the separating line and the two shadows on the axis with the widest gap; when
+// overlapping, the shadows on the axis of least overlap and the minimum translation vector
+// (MTV): the shortest move that gets the held shape out.
+#pragma once
+
+#include "Sat.h"
+
+#include "hitbox/Level.h"
+#include "hitbox/geometry/Capsule.h"
+
+#include <SFML/Graphics/Font.hpp>
+
+#include <vector>
+
+// A box turned about its centre, or a capsule: then body.halfSize.x is half the length of its
+// middle segment and body.halfSize.y its radius.
+struct Shape
+{
+    hitbox::OrientedBox body;
+    bool isCapsule = false;
+
+    hitbox::Polygon polygon() const; // boxes only
+    hitbox::Capsule capsule() const; // capsules only
+};
+
+// How the held shape meets one other shape this step.
+struct PairView
+{
+    std::size_t other = 0;
+    bool overlapping = false;
+    sf::Vector2f axis;          // separating axis, or the MTV direction (out of `other`)
+    float gap = 0.f;            // > = 0 when apart, -depth when overlapping
+    bool boundsOverlap = false; // their axis-aligned bounding boxes overlap
+    bool hasShadows = false;    // box vs box: the shadows below can be drawn
+    Shadow heldShadow;          // the held shape's shadow on `axis`
+    Shadow otherShadow;
+};
+
+class RotatedLevel : public hitbox::Level
+{
+public:
+    RotatedLevel();
+    explicit RotatedLevel(std::vector<Shape> shapes); // shape 0 starts held
+
+    void handleInput(const Input& input, float dt) override;
+    void update(float dt) override;
+    void render(sf::RenderTarget& target) const override;
+    void renderDebug(hitbox::DebugRenderer& debug) const override;
+    std::string getHelpText() const override;
+    std::string describeState() const override;
+
+    // The mouse wheel turns the held shape by this many degrees a notch (task 3).
+    static constexpr float degreesPerNotch = 15.f;
+
+    const std::vector<Shape>& getShapes() const;
+    std::size_t getHeld() const;
+    // How the held shape meets every other shape (filled in by update()).
+    const std::vector<PairView>& getPairs() const;
+    // Is shape i overlapping anything?
+    bool isOverlapping(std::size_t i) const;
+    // The pair drawn with its shadows: the nearest other shape.
+    const PairView* getNearestPair() const;
+
+private:
+    PairView testPair(std::size_t held, std::size_t other) const;
+    void pushHeldOut();
+
+    std::vector<Shape> shapes;
+    std::size_t held = 0;
+    bool dragging = false;
+    sf::Vector2f grabOffset;
+    std::vector<PairView> pairs;
+    std::vector<bool> overlapping;
+    sf::Font font;
+};

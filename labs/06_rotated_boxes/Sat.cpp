@@ -1,0 +1,74 @@
+#include "Sat.h"
+
+#include "hitbox/geometry/VectorMath.h"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace
+{
+// The unit normals of a polygon's edges: the axes its edges could be separated along.
+std::vector<sf::Vector2f> edgeNormals(const hitbox::Polygon& polygon)
+{
+    std::vector<sf::Vector2f> normals;
+    const std::size_t count = polygon.points.size();
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const sf::Vector2f edge = polygon.points[(i + 1) % count] - polygon.points[i];
+        if (edge != sf::Vector2f{})
+            normals.push_back(hitbox::unitOr(hitbox::perpendicular(edge), {1.f, 0.f}));
+    }
+    return normals;
+}
+} // namespace
+
+Shadow projectOnto(const hitbox::Polygon& polygon, sf::Vector2f axis)
+{
+    // BEGIN TASK 1: the shadow of the polygon on the axis
+    // Each corner lands at dot(corner, axis) along the axis; the shadow runs from the
+    // smallest to the largest of those.
+    Shadow onAxis;
+    for (std::size_t i = 0; i < polygon.points.size(); ++i)
+    {
+        const float along = hitbox::dot(polygon.points[i], axis);
+        if (i == 0 || along < onAxis.min)
+            onAxis.min = along;
+        if (i == 0 || along > onAxis.max)
+            onAxis.max = along;
+    }
+    return onAxis;
+    // STARTER TASK 1
+    // static_cast<void>(polygon); // (these two lines only keep the compiler quiet:
+    // static_cast<void>(axis);    //  delete them when you write the projection)
+    // return Shadow{};
+    // END TASK 1
+}
+
+// [slide:lab06-sat-draw]
+SatResult separatingAxisTest(const hitbox::Polygon& a, const hitbox::Polygon& b)
+{
+    std::vector<sf::Vector2f> axes = edgeNormals(a);
+    const std::vector<sf::Vector2f> axesOfB = edgeNormals(b);
+    axes.insert(axes.end(), axesOfB.begin(), axesOfB.end());
+    if (axes.empty())
+        return SatResult{}; // nothing to test (empty polygons): apart
+    // BEGIN TASK 2: try every axis; keep the largest gap (or, with none, the least overlap)
+    SatResult best{false, {}, -std::numeric_limits<float>::infinity()};
+    for (const sf::Vector2f& axis : axes)
+    {
+        const Shadow shadowA = projectOnto(a, axis);
+        const Shadow shadowB = projectOnto(b, axis);
+        // Two ways out along this axis: A forwards past B's end, or backwards past its start.
+        const float forwards = shadowB.max - shadowA.min;
+        const float backwards = shadowA.max - shadowB.min;
+        const float gap = -std::min(forwards, backwards);
+        if (gap > best.gap)
+            best = {gap >= 0.f, forwards < backwards ? axis : -axis, gap};
+    }
+    return best;
+    // STARTER TASK 2
+    // return SatResult{};
+    // END TASK 2
+}
+// [/slide]

@@ -1,0 +1,296 @@
+// ManyObjectsDrawing.cpp - everything ManyObjectsLevel draws: the balls (one batched draw),
+// the pair table, the readout and the debug view. Reads the simulation, changes nothing.
+#include "ManyObjectsLevel.h"
+
+#include "hitbox/Assets.h"
+#include "hitbox/DebugRenderer.h"
+
+#include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Graphics/Text.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace
+{
+const sf::Color plainColor{90, 160, 230};
+const sf::Color touchingColor{240, 100, 80};
+const sf::Color shipColors[] = {{80, 210, 255}, {255, 160, 60}};
+const sf::Color bulletColors[] = {{170, 235, 255}, {255, 215, 150}};
+const sf::Color pickupColor{235, 215, 70};
+
+const sf::Color cellUntested{44, 48, 60};
+const sf::Color cellTested{95, 110, 135};
+const sf::Color cellOverlapping{240, 90, 80};
+const sf::Color cellWasted{210, 60, 210}; // on or below the diagonal, or tested twice
+
+const sf::FloatRect tableArea{660.f, 60.f, 500.f, 500.f};
+
+// Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
+// that size nobody can tell.
+const float squareBelowRadius = 2.5f;
+
+sf::Color colorOf(const Ball& ball)
+{
+    if (ball.responses > 0 && ball.kind != BallKind::Bullet)
+        return touchingColor;
+    switch (ball.kind)
+    {
+    case BallKind::Ship:
+        return shipColors[ball.owner == 0 ? 0 : 1];
+    case BallKind::Bullet:
+        return bulletColors[ball.owner == 0 ? 0 : 1];
+    case BallKind::Pickup:
+        return pickupColor;
+    default:
+        return plainColor;
+    }
+}
+
+void addTriangle(sf::VertexArray& vertices, sf::Vector2f a, sf::Vector2f b, sf::Vector2f c,
+                 sf::Color color)
+{
+    vertices.append({a, color});
+    vertices.append({b, color});
+    vertices.append({c, color});
+}
+
+void addQuad(sf::VertexArray& vertices, const sf::FloatRect& box, sf::Color color)
+{
+    const sf::Vector2f topLeft{box.left, box.top};
+    const sf::Vector2f topRight{box.left + box.width, box.top};
+    const sf::Vector2f bottomLeft{box.left, box.top + box.height};
+    const sf::Vector2f bottomRight{box.left + box.width, box.top + box.height};
+    addTriangle(vertices, topLeft, topRight, bottomRight, color);
+    addTriangle(vertices, topLeft, bottomRight, bottomLeft, color);
+}
+
+void addDisc(sf::VertexArray& vertices, sf::Vector2f center, float radius, sf::Color color)
+{
+    const int segments = radius > 15.f ? 32 : 12;
+    const float step = 2.f * 3.14159265f / static_cast<float>(segments);
+    sf::Vector2f previous = center + sf::Vector2f(radius, 0.f);
+    for (int i = 1; i <= segments; ++i)
+    {
+        const float angle = step * static_cast<float>(i);
+        const sf::Vector2f next = center + sf::Vector2f(std::cos(angle), std::sin(angle)) * radius;
+        addTriangle(vertices, center, previous, next, color);
+        previous = next;
+    }
+}
+
+// 12345678 -> "12,345,678": big counts are the point of this lab, so make them readable.
+std::string withCommas(std::size_t number)
+{
+    std::string digits = std::to_string(number);
+    for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3)
+        digits.insert(static_cast<std::size_t>(at), ",");
+    return digits;
+}
+
+std::string fixed(float value, int decimals)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, static_cast<double>(value));
+    return text;
+}
+
+sf::Text makeText(const std::string& text, const sf::Font& font, unsigned size, sf::Color color)
+{
+    sf::Text label(sf::String::fromUtf8(text.begin(), text.end()), font, size);
+    label.setFillColor(color);
+    return label;
+}
+
+} // namespace
+
+const sf::Font& ManyObjectsLevel::getFont() const
+{
+    // Loaded the first time something is drawn, so tests never need the font file.
+    if (!font)
+        font = std::make_unique<sf::Font>(hitbox::loadFont());
+    return *font;
+}
+
+void ManyObjectsLevel::render(sf::RenderTarget& target) const
+{
+    measureFrame();
+    drawBalls(target);
+    if (scene == Scene::PairTable)
+        drawPairTable(target);
+    drawReadout(target);
+}
+
+// [slide:lab08-batched-draw]
+void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
+{
+    // Every ball goes into ONE vertex array and ONE draw call. 10,000 sf::CircleShape draws
+    // would cost more than all the collision detection.
+    ballVertices.clear();
+    for (const Ball& ball : balls)
+    {
+        if (ball.radius < squareBelowRadius)
+            addQuad(ballVertices, ball.box(), colorOf(ball));
+        else
+            addDisc(ballVertices, ball.position, ball.radius, colorOf(ball));
+    }
+    target.draw(ballVertices);
+}
+// [/slide]
+
+void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
+{
+    const sf::Font& labelFont = getFont();
+    // Numbers on the balls, so a cell (i, j) can be found in the picture.
+    for (std::size_t i = 0; i < balls.size(); ++i)
+    {
+        sf::Text number = makeText(std::to_string(i), labelFont, 20, sf::Color::Black);
+        const sf::FloatRect bounds = number.getLocalBounds();
+        number.setPosition(balls[i].position.x - bounds.width / 2.f - bounds.left,
+                           balls[i].position.y - bounds.height / 2.f - bounds.top);
+        target.draw(number);
+    }
+
+    const std::size_t count = table.size();
+    if (count == 0)
+        return;
+    const float cell =
+        std::min(40.f, std::min(tableArea.width, tableArea.height) / static_cast<float>(count + 1));
+    const sf::Vector2f origin{tableArea.left + cell, tableArea.top + cell};
+    sf::VertexArray cells(sf::Triangles);
+    for (std::uint32_t row = 0; row < count; ++row)
+        for (std::uint32_t column = 0; column < count; ++column)
+        {
+            const int tests = table.timesTested(row, column);
+            const bool aboveDiagonal = column > row;
+            if (!aboveDiagonal && tests == 0)
+                continue;
+            sf::Color color = cellUntested;
+            if (!aboveDiagonal || tests > 1)
+                color = cellWasted;
+            else if (table.isOverlapping(row, column))
+                color = cellOverlapping;
+            else if (tests == 1)
+                color = cellTested;
+            const sf::FloatRect box{origin.x + column * cell + 1.f, origin.y + row * cell + 1.f,
+                                    cell - 2.f, cell - 2.f};
+            addQuad(cells, box, color);
+        }
+    target.draw(cells);
+
+    const unsigned labelSize = static_cast<unsigned>(std::max(9.f, cell * 0.45f));
+    for (std::uint32_t i = 0; i < count; ++i)
+    {
+        sf::Text columnLabel = makeText(std::to_string(i), labelFont, labelSize, sf::Color::White);
+        columnLabel.setPosition(origin.x + i * cell + cell * 0.25f, origin.y - cell * 0.85f);
+        target.draw(columnLabel);
+        sf::Text rowLabel = columnLabel;
+        rowLabel.setPosition(tableArea.left + cell * 0.2f, origin.y + i * cell + cell * 0.15f);
+        target.draw(rowLabel);
+    }
+
+    const std::size_t allPairs = count * (count - 1) / 2;
+    sf::Text title = makeText("The pair table: " + std::to_string(count) + " balls, " +
+                                  std::to_string(count) + "\xc2\xb7" + std::to_string(count - 1) +
+                                  "/2 = " + std::to_string(allPairs) + " pairs",
+                              labelFont, 18, sf::Color::White);
+    title.setPosition(tableArea.left, tableArea.top - 40.f);
+    target.draw(title);
+    sf::Text key = makeText("grey tested   red overlapping   dark skipped by the rules   "
+                            "purple wasted",
+                            labelFont, 13, sf::Color(200, 200, 200));
+    key.setPosition(tableArea.left, tableArea.top - 16.f);
+    target.draw(key);
+}
+
+void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
+{
+    const char* sceneNames[] = {"1 crowd", "2 pair table", "3 layers"};
+    std::string lines = std::string("Scene ") + sceneNames[static_cast<int>(scene)] +
+                        "    balls: " + withCommas(balls.size()) +
+                        "    method: " + methodLabel(method) + "  (M)";
+    if (method == hitbox::BroadphaseMethod::Grid)
+        lines += "    grid cell: " + fixed(gridCellSize, 0) +
+                 " px = " + std::to_string(gridCellWidths) + " ball widths  ([ ])";
+    lines += "\n";
+    sf::Color color = sf::Color::White;
+    if (bruteForceSkipped)
+    {
+        const std::size_t n = balls.size();
+        lines += "brute force would test " + withCommas(n * (n - 1) / 2) +
+                 " pairs every step: not run above " + withCommas(bruteForceBallLimit) +
+                 " balls. Press M.\n";
+        color = sf::Color(255, 190, 90);
+    }
+    else if (stoppedAsTooSlow)
+    {
+        lines += std::string(methodLabel(method)) + " took " + fixed(collisionMilliseconds, 0) +
+                 " ms per step with " + withCommas(balls.size()) +
+                 " balls: stopped, too slow to watch. Press M or Down.\n";
+        color = sf::Color(255, 190, 90);
+    }
+    else
+    {
+        lines += "pairs tested: " + withCommas(getPairsTested()) +
+                 "    boxes overlapping: " + withCommas(candidatePairs.size()) +
+                 "    circles touching: " + withCommas(contacts) + "\n";
+        lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms per step";
+        if (framesDrawn > 1)
+            lines += "    frame: " + fixed(frameMilliseconds, 1) + " ms";
+        lines += "\n";
+    }
+    if (scene == Scene::PairTable)
+        lines += "your loop tested " + withCommas(table.testsMade()) + " pairs, found " +
+                 withCommas(table.overlappingPairs().size()) + " overlapping\n";
+    if (scene == Scene::Layers)
+    {
+        lines += "bullets hitting their own ship: " + withCommas(ownShipHits) +
+                 "    pickups bumping pickups: " + withCommas(pickupBumps) + "\n";
+        if (ownShipHits + pickupBumps > 0)
+            color = sf::Color(255, 150, 130);
+    }
+
+    sf::Text text = makeText(lines, getFont(), 16, color);
+    // Between the arena and the help bar, the full width of the world.
+    const sf::Vector2f world = getWorldSize();
+    const float top = getArena().top + getArena().height;
+    sf::RectangleShape panel({world.x, world.y - top});
+    panel.setPosition(0.f, top);
+    panel.setFillColor(sf::Color(30, 34, 46));
+    target.draw(panel);
+    text.setPosition(10.f, top + 4.f);
+    target.draw(text);
+}
+
+void ManyObjectsLevel::measureFrame() const
+{
+    // Real time between two drawn frames: simulation steps plus drawing, as a player feels it.
+    const float milliseconds = frameClock.restart().asSeconds() * 1000.f;
+    if (framesDrawn > 0)
+        frameMilliseconds += (milliseconds - frameMilliseconds) / (framesDrawn < 10 ? 2.f : 20.f);
+    ++framesDrawn;
+    if (printTimingSeconds > 0.f &&
+        timingLogClock.getElapsedTime().asSeconds() >= printTimingSeconds)
+    {
+        timingLogClock.restart();
+        std::cout << "timing: " << methodLabel(method) << ", " << balls.size()
+                  << " balls: " << getPairsTested() << " pairs tested, " << candidatePairs.size()
+                  << " overlapping, collision " << fixed(collisionMilliseconds, 2)
+                  << " ms/step, frame " << fixed(frameMilliseconds, 1) << " ms"
+                  << (bruteForceSkipped ? " (brute force skipped)" : "")
+                  << (stoppedAsTooSlow ? " (stopped: too slow)" : "") << std::endl;
+    }
+}
+
+void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const
+{
+    if (scene != Scene::PairTable && !bruteForceSkipped && !stoppedAsTooSlow)
+        broadphase->drawDebug(debug);
+    // The boxes the pair loop compares, for the scenes small enough to read them.
+    if (balls.size() <= 300)
+        for (const Ball& ball : balls)
+            debug.box(ball.box(), ball.responses > 0 ? hitbox::DebugRenderer::touchingColor
+                                                     : hitbox::DebugRenderer::freeColor);
+}

@@ -1,0 +1,150 @@
+// ManyObjectsLevel.h - lab 8: thousands of balls, and the broadphase that keeps them fast.
+//
+// Three scenes:
+//   1 crowd       100 to 100,000 balls; switch the broadphase and watch the pair counts and
+//                 the milliseconds: brute force explodes (n^2), the grid stays flat.
+//   2 pair table  a dozen big numbered balls and seed 002's n x n table beside them, filled
+//                 by your brute-force loop (task 1).
+//   3 layers      two ships firing bullets, piles of pickups: layers and masks (task 3) decide
+//                 which pairs are ever tested.
+// The rules run in update(); render() only reads state, so tests run it with no window.
+#pragma once
+
+#include "Ball.h"
+#include "PairTable.h"
+
+#include "hitbox/Level.h"
+#include "hitbox/broadphase/Broadphase.h"
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
+#include <SFML/System/Clock.hpp>
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+enum class Scene
+{
+    Crowd,
+    PairTable,
+    Layers
+};
+
+struct LabSettings
+{
+    Scene scene = Scene::Crowd;
+    int balls = 1000; // crowd: any count; pair table: 2 to 24
+    hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
+    unsigned seed = 1;
+    float printTimingSeconds = 0.f; // > 0: print a timing line this often (window only)
+};
+
+// Above this many balls brute force is not run: 3,000 balls already mean 4.5 million box
+// tests every step, 120 steps a second, and the window would stop answering. A debug build
+// (no optimisation) is about ten times slower, so it stops sooner. The readout says what
+// brute force would have cost.
+#ifdef NDEBUG
+constexpr int bruteForceBallLimit = 3000;
+#else
+constexpr int bruteForceBallLimit = 1000;
+#endif
+
+// Any method whose collision step averages more than this stops until the method or the
+// number of balls changes: at 120 steps a second the window would hardly move. (It cannot
+// happen in a test's few steps: the average starts at 0 and needs a dozen slow steps.)
+constexpr float slowStepMilliseconds = 40.f;
+
+class ManyObjectsLevel : public hitbox::Level
+{
+public:
+    explicit ManyObjectsLevel(const LabSettings& settings = {});
+
+    void handleInput(const Input& input, float dt) override;
+    void update(float dt) override;
+    void render(sf::RenderTarget& target) const override;
+    void renderDebug(hitbox::DebugRenderer& debug) const override;
+    std::string getHelpText() const override;
+    std::string describeState() const override;
+
+    // Start a scene afresh with `balls` balls (ignored by the layers scene).
+    void startScene(Scene scene, int balls);
+    void setMethod(hitbox::BroadphaseMethod method);
+    // Replace the balls, e.g. a test's hand-made scene. Layers and masks are kept as given.
+    void setBalls(std::vector<Ball> newBalls);
+
+    Scene getScene() const;
+    hitbox::BroadphaseMethod getMethod() const;
+    const std::vector<Ball>& getBalls() const;
+    sf::FloatRect getArena() const;
+    // This step: pairs the broadphase compared, pairs whose boxes overlap, and pairs whose
+    // circles really touched (each one got one response).
+    std::size_t getPairsTested() const;
+    std::size_t getPairsOverlapping() const;
+    std::size_t getContacts() const;
+    bool isBruteForceSkipped() const;
+    // True when the method was stopped for being too slow (see slowStepMilliseconds).
+    bool isStoppedAsTooSlow() const;
+    // The table your loop filled this step (pair table scene only).
+    const PairTable& getPairTable() const;
+    // Since the scene started: responses the rules forbid (both must stay 0 with task 3).
+    std::size_t getOwnShipHits() const;
+    std::size_t getPickupBumps() const;
+    // The grid's cell width in pixels (grid method only).
+    float getGridCellSize() const;
+
+private:
+    void spawnCrowd(int count);
+    void spawnPairTableBalls(int count);
+    void spawnLayersScene();
+    Ball makeBall(sf::Vector2f position, sf::Vector2f velocity, float radius, BallKind kind,
+                  int owner) const;
+    void applyLayersSceneRules(float dt);
+    void moveBalls(float dt);
+    void rebuildBroadphase();
+    void findPairsAndRespond();
+    void respond(Ball& a, Ball& b, const hitbox::Contact& contact);
+
+    void drawBalls(sf::RenderTarget& target) const;
+    void drawPairTable(sf::RenderTarget& target) const;
+    void drawReadout(sf::RenderTarget& target) const;
+    void measureFrame() const;
+    const sf::Font& getFont() const;
+
+    Scene scene = Scene::Crowd;
+    hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
+    std::unique_ptr<hitbox::Broadphase> broadphase;
+    std::mt19937 random;
+    std::vector<Ball> balls;
+    std::vector<hitbox::BroadphaseItem> items; // balls[i].item(), rebuilt every step
+    std::vector<hitbox::Pair> candidatePairs;  // the broadphase's answer this step
+    PairTable table;
+    std::size_t contacts = 0;
+    bool bruteForceSkipped = false;
+    bool stoppedAsTooSlow = false;
+    std::size_t ownShipHits = 0;
+    std::size_t pickupBumps = 0;
+    int gridCellWidths = 8; // grid cell = this many average ball widths
+    float gridCellSize = 0.f;
+    float fireTimer = 0.f;
+    float fireAngle = 0.f;
+    float collisionMilliseconds = 0.f; // time in findPairsAndRespond, averaged over steps
+    float printTimingSeconds = 0.f;
+
+    // Drawing caches and frame timing: render() is const, these only help it draw.
+    mutable sf::VertexArray ballVertices{sf::Triangles};
+    mutable std::unique_ptr<sf::Font> font;
+    mutable sf::Clock frameClock;
+    mutable sf::Clock timingLogClock;
+    mutable float frameMilliseconds = 0.f;
+    mutable int framesDrawn = 0;
+};
+
+// "brute force", "sort and sweep", "grid", "quadtree": the readout's words.
+const char* methodLabel(hitbox::BroadphaseMethod method);
+// Reads "brute", "sweep", "grid" or "quadtree" (also the full names); throws
+// std::invalid_argument otherwise.
+hitbox::BroadphaseMethod parseMethod(const std::string& text);
+// Reads "crowd", "table" or "layers"; throws std::invalid_argument otherwise.
+Scene parseScene(const std::string& text);

@@ -1,0 +1,369 @@
+#include "PlatformerLevel.h"
+
+#include "hitbox/DebugRenderer.h"
+#include "hitbox/Input.h"
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Sweep.h"
+
+#include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Graphics/Text.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+const sf::Color tileColor{70, 96, 150};
+const sf::Color tileEdgeColor{100, 130, 190};
+const sf::Color playerColor{240, 180, 70};
+const sf::Color groundedColor{90, 230, 120};
+const float helpBarHeight = 24.f; // the App's help line sits under the map, not on it
+const float hudTextSize = 18.f;
+
+// The smallest box holding both boxes.
+sf::FloatRect unionOf(const sf::FloatRect& a, const sf::FloatRect& b)
+{
+    const float left = std::min(a.left, b.left);
+    const float top = std::min(a.top, b.top);
+    const float right = std::max(hitbox::rightOf(a), hitbox::rightOf(b));
+    const float bottom = std::max(hitbox::bottomOf(a), hitbox::bottomOf(b));
+    return {left, top, right - left, bottom - top};
+}
+
+void addQuad(sf::VertexArray& quads, const sf::FloatRect& box, sf::Color color)
+{
+    const sf::Vector2f corners[4] = {{box.left, box.top},
+                                     {box.left + box.width, box.top},
+                                     {box.left + box.width, box.top + box.height},
+                                     {box.left, box.top + box.height}};
+    for (int index : {0, 1, 2, 0, 2, 3})
+        quads.append(sf::Vertex(corners[index], color));
+}
+} // namespace
+
+// [slide:platformer-collision-points]
+// Seed 001's points: A bottom, B top, C left, D right, then the four corners, checked in
+// this order. With a player at most 1.5 tiles tall no tile can slip between two points.
+const std::array<CollisionPoint, 8> PlatformerLevel::collisionPoints = {{
+    {"bottom", {0.f, 1.f}},
+    {"top", {0.f, -1.f}},
+    {"left", {-1.f, 0.f}},
+    {"right", {1.f, 0.f}},
+    {"left top", {-1.f, -1.f}},
+    {"right top", {1.f, -1.f}},
+    {"left bottom", {-1.f, 1.f}},
+    {"right bottom", {1.f, 1.f}},
+}};
+
+sf::Vector2f PlatformerLevel::pointOn(const sf::FloatRect& box, const CollisionPoint& point)
+{
+    return {box.left + box.width * (point.side.x + 1.f) / 2.f,
+            box.top + box.height * (point.side.y + 1.f) / 2.f};
+}
+// [/slide]
+
+hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector2f where,
+                                         const sf::FloatRect& tile)
+{
+    // How far the point went into the tile, measured from the tile edge on the point's side
+    // of the player (a left point came in through the tile's right edge, and so on).
+    const float depthX = point.side.x < 0.f ? hitbox::rightOf(tile) - where.x : where.x - tile.left;
+    const float depthY = point.side.y < 0.f ? hitbox::bottomOf(tile) - where.y : where.y - tile.top;
+    const float edgeX = point.side.x < 0.f ? hitbox::rightOf(tile) : tile.left;
+    const float edgeY = point.side.y < 0.f ? hitbox::bottomOf(tile) : tile.top;
+    const hitbox::Contact pushX{true, {-point.side.x, 0.f}, depthX, {edgeX, where.y}};
+    const hitbox::Contact pushY{true, {0.f, -point.side.y}, depthY, {where.x, edgeY}};
+
+    if (point.side.y == 0.f)
+        return pushX; // a side point: straight back out through its own side
+    if (point.side.x == 0.f)
+        return pushY;
+
+    // [slide:platformer-least-penetration]
+    // BEGIN TASK 2: push a corner out along the axis of least penetration
+    // A corner cannot tell whether it came in from above or from the side. The shallower
+    // way out is nearly always the way it came in (seed 001). Ties: the x axis.
+    return depthY < depthX ? pushY : pushX;
+    // STARTER TASK 2
+    // return hitbox::Contact{}; // for now a corner inside a tile is ignored
+    // END TASK 2
+    // [/slide]
+}
+
+PlatformerLevel::PlatformerLevel(TileMap levelMap)
+    : map(std::move(levelMap)), font(hitbox::loadFont())
+{
+    respawn();
+    for (int row = 0; row < map.getRows(); ++row)
+        for (int column = 0; column < map.getColumns(); ++column)
+            if (map.isSolid(column, row))
+            {
+                const sf::FloatRect box = map.tileBox(column, row);
+                addQuad(tileQuads, box, tileEdgeColor);
+                addQuad(tileQuads,
+                        {box.left + 2.f, box.top + 2.f, box.width - 4.f, box.height - 4.f},
+                        tileColor);
+            }
+}
+
+void PlatformerLevel::handleInput(const Input& input, float)
+{
+    holdingLeft = input.isKeyDown(sf::Keyboard::A) || input.isKeyDown(sf::Keyboard::Left);
+    holdingRight = input.isKeyDown(sf::Keyboard::D) || input.isKeyDown(sf::Keyboard::Right);
+    // A press is kept until a step uses it, whatever the frame rate.
+    if (input.isPressed(sf::Keyboard::Space) || input.isPressed(sf::Keyboard::W) ||
+        input.isPressed(sf::Keyboard::Up))
+        jumpPressed = true;
+    if (input.isPressed(sf::Keyboard::S) || input.isPressed(sf::Keyboard::Down))
+        divePressed = true;
+    if (input.isPressed(sf::Keyboard::C))
+        speedCapOn = !speedCapOn;
+    if (input.isPressed(sf::Keyboard::X))
+        speculative = !speculative;
+    if (input.isPressed(sf::Keyboard::R))
+        respawn();
+}
+
+// [slide:platformer-fixed-step]
+// Frame-rate independence: whatever dt the caller passes (a 30 Hz laptop, a 240 Hz
+// monitor), the level simulates whole steps of exactly Player::fixedStep, so the same
+// key presses give the same jump everywhere. Leftover time waits for the next call.
+void PlatformerLevel::update(float dt)
+{
+    unsimulatedTime += std::min(dt, 0.25f); // after a long stall, skip time rather than freeze
+    while (unsimulatedTime >= Player::fixedStep)
+    {
+        step();
+        unsimulatedTime -= Player::fixedStep;
+    }
+}
+// [/slide]
+
+void PlatformerLevel::step()
+{
+    PlayerControls controls{holdingLeft, holdingRight, jumpPressed, divePressed};
+    if (demo) // run right, jump every half second
+        controls = {false, true, stepCount % 60 == 0, false};
+    jumpPressed = false;
+    divePressed = false;
+    player.steer(controls, grounded, speedCapOn, Player::fixedStep);
+
+    const sf::FloatRect before = player.getBox();
+    contacts.clear();
+    pushingTiles.clear();
+    pointWasInside.fill(false);
+    grounded = false;
+    if (speculative)
+        moveWithSpeculativeContacts(before);
+    else
+        moveThenResolve(before);
+    ++stepCount;
+
+    // Fell out of the bottom of the map (through a hole, or through a floor too fast).
+    if (player.getPosition().y > map.getSizeInPixels().y + 4.f * TileMap::tileSize)
+    {
+        ++fallsOutOfWorld;
+        respawn();
+    }
+}
+
+void PlatformerLevel::moveThenResolve(const sf::FloatRect& before)
+{
+    player.setPosition(player.getPosition() + player.getVelocity() * Player::fixedStep);
+    resolvePenetration(before);
+}
+
+std::vector<sf::FloatRect> PlatformerLevel::solidTilesIn(const TileRegion& region) const
+{
+    std::vector<sf::FloatRect> solids;
+    for (int row = region.firstRow; row <= region.lastRow; ++row)
+        for (int column = region.firstColumn; column <= region.lastColumn; ++column)
+            if (map.isSolid(column, row))
+                solids.push_back(map.tileBox(column, row));
+    return solids;
+}
+
+void PlatformerLevel::resolvePenetration(const sf::FloatRect& before)
+{
+    // [slide:platformer-resolve]
+    sweptBounds = before;
+    for (passesUsed = 1; passesUsed <= maxResolvePasses; ++passesUsed)
+    {
+        // Broad phase: only the tiles under where the player was and where it is now.
+        sweptBounds = unionOf(sweptBounds, player.getBox());
+        testedRegion = map.tilesUnder(sweptBounds);
+        bool pushed = false;
+        for (std::size_t index = 0; index < collisionPoints.size(); ++index)
+            for (const sf::FloatRect& tile : solidTilesIn(testedRegion))
+            {
+                const sf::Vector2f where = pointOn(player.getBox(), collisionPoints[index]);
+                if (!hitbox::pointInBox(where, tile))
+                    continue;
+                pointWasInside[index] = true;
+                const hitbox::Contact push = pushOut(collisionPoints[index], where, tile);
+                if (push.hit)
+                {
+                    applyPush(push);
+                    pushingTiles.push_back(tile);
+                    pushed = true;
+                }
+            }
+        if (!pushed)
+            return; // nothing is inside any more: done for this step
+    }
+    // [/slide]
+    passesUsed = maxResolvePasses;
+}
+
+// [slide:platformer-grounded]
+void PlatformerLevel::applyPush(const hitbox::Contact& push)
+{
+    player.setPosition(player.getPosition() + push.normal * push.depth);
+    // Stop the part of the velocity that goes into the surface (so gravity does not build up
+    // while standing), and keep the part along it (so the player slides along walls).
+    sf::Vector2f velocity = player.getVelocity();
+    const float intoSurface = velocity.x * push.normal.x + velocity.y * push.normal.y;
+    if (intoSurface < 0.f)
+        velocity -= push.normal * intoSurface;
+    player.setVelocity(velocity);
+    // Pushed up = something under the feet: a floor. This is the only way to be grounded
+    // (seed 001: the bottom point, or a bottom corner resolved along y).
+    if (push.normal.y < 0.f)
+        grounded = true;
+    contacts.push_back(push);
+}
+// [/slide]
+
+hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2f move) const
+{
+    const sf::FloatRect moved{box.left + move.x, box.top + move.y, box.width, box.height};
+    hitbox::Hit first;
+    for (const sf::FloatRect& tile : solidTilesIn(map.tilesUnder(unionOf(box, moved))))
+    {
+        const hitbox::Hit hit = hitbox::sweepBoxVsBox(box, move, tile);
+        if (hit && !hit.startedInside && hit.time < first.time)
+            first = hit;
+    }
+    return first;
+}
+
+// [slide:platformer-speculative]
+// Speculative contacts (seed 000): instead of moving and then repairing, sweep the player's
+// box along its move and stop it where it would first touch a tile. The rest of the move
+// slides along the surface. A fast player can no longer pass through a thin floor.
+void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
+{
+    sf::Vector2f move = player.getVelocity() * Player::fixedStep;
+    for (int pass = 0; pass < maxResolvePasses && (move.x != 0.f || move.y != 0.f); ++pass)
+    {
+        const hitbox::Hit first = firstHitAlong(player.getBox(), move);
+        if (!first.hit)
+        {
+            player.setPosition(player.getPosition() + move);
+            break;
+        }
+        player.setPosition(player.getPosition() + move * first.time); // just touching
+        applyPush({true, first.normal, 0.f, first.point});
+        // What is left of the move, minus the part that would go into the surface.
+        move *= 1.f - first.time;
+        const float intoSurface = move.x * first.normal.x + move.y * first.normal.y;
+        if (intoSurface < 0.f)
+            move -= first.normal * intoSurface;
+    }
+    resolvePenetration(before); // anything that started inside is pushed out as usual
+}
+// [/slide]
+
+void PlatformerLevel::placePlayer(sf::Vector2f topLeft)
+{
+    player = Player(topLeft);
+    grounded = false;
+}
+
+void PlatformerLevel::respawn()
+{
+    // Stand on the bottom of the 'P' tile, in the middle of it.
+    const sf::Vector2f start = map.getPlayerStart();
+    placePlayer({start.x + (TileMap::tileSize - Player::width) / 2.f,
+                 start.y + TileMap::tileSize - Player::height});
+}
+
+void PlatformerLevel::render(sf::RenderTarget& target) const
+{
+    target.draw(tileQuads);
+
+    sf::RectangleShape body({Player::width, Player::height});
+    body.setPosition(player.getPosition());
+    body.setFillColor(playerColor);
+    target.draw(body);
+    // Eyes on the side the player runs towards, so its direction is easy to follow.
+    sf::RectangleShape eye({5.f, 9.f});
+    eye.setFillColor(sf::Color(40, 30, 20));
+    const float facing = player.getVelocity().x < 0.f ? 3.f : Player::width - 9.f;
+    eye.setPosition(player.getPosition() + sf::Vector2f(facing, 12.f));
+    target.draw(eye);
+
+    std::ostringstream hud;
+    hud << (grounded ? "GROUNDED" : "in the air")
+        << "    speed cap [C]: " << (speedCapOn ? "on" : "OFF")
+        << "    speculative contacts [X]: " << (speculative ? "ON" : "off")
+        << "    tiles tested: " << testedRegion.tileCount() << "    fell out: " << fallsOutOfWorld;
+    // On a dark strip over the top row, so it never hides the player.
+    sf::RectangleShape strip({map.getSizeInPixels().x, hudTextSize + 14.f});
+    strip.setFillColor(sf::Color(0, 0, 0, 170));
+    target.draw(strip);
+    sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
+    text.setPosition(10.f, 5.f);
+    text.setFillColor(grounded ? groundedColor : sf::Color::White);
+    target.draw(text);
+}
+
+void PlatformerLevel::renderDebug(hitbox::DebugRenderer& debug) const
+{
+    using hitbox::DebugRenderer;
+    // The tiles the broad phase handed to the collision points, and the swept bounds.
+    for (int row = testedRegion.firstRow; row <= testedRegion.lastRow; ++row)
+        for (int column = testedRegion.firstColumn; column <= testedRegion.lastColumn; ++column)
+            debug.box(map.tileBox(column, row), map.isSolid(column, row)
+                                                    ? DebugRenderer::freeColor
+                                                    : DebugRenderer::hintColor);
+    for (const sf::FloatRect& tile : pushingTiles)
+        debug.box(tile, DebugRenderer::touchingColor);
+    debug.box(sweptBounds, DebugRenderer::hintColor);
+
+    const sf::FloatRect box = player.getBox();
+    debug.box(box, contacts.empty() ? DebugRenderer::freeColor : DebugRenderer::touchingColor);
+    debug.arrow(hitbox::centerOf(box), hitbox::centerOf(box) + player.getVelocity() * 0.25f,
+                DebugRenderer::velocityColor);
+    // The collision points: red if the point was inside a solid tile this step.
+    for (std::size_t index = 0; index < collisionPoints.size(); ++index)
+        debug.cross(pointOn(box, collisionPoints[index]), 10.f,
+                    pointWasInside[index] ? DebugRenderer::touchingColor
+                                          : DebugRenderer::freeColor);
+    for (const hitbox::Contact& contact : contacts)
+        debug.contact(contact);
+    if (grounded) // a bar under the feet: "standing on something"
+        debug.line({box.left - 4.f, hitbox::bottomOf(box) + 4.f},
+                   {hitbox::rightOf(box) + 4.f, hitbox::bottomOf(box) + 4.f}, groundedColor);
+}
+
+sf::Vector2f PlatformerLevel::getWorldSize() const
+{
+    return map.getSizeInPixels() + sf::Vector2f(0.f, helpBarHeight);
+}
+
+std::string PlatformerLevel::getHelpText() const
+{
+    return "A/D run  Space jump  S dive  C speed cap  X speculative  R restart";
+}
+
+std::string PlatformerLevel::describeState() const
+{
+    std::ostringstream out;
+    out << "player at (" << player.getPosition().x << ", " << player.getPosition().y << ")"
+        << (grounded ? " grounded" : " in the air") << ", fell out " << fallsOutOfWorld
+        << " times, last step tested " << testedRegion.tileCount() << " tiles";
+    return out.str();
+}

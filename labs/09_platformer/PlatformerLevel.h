@@ -1,0 +1,126 @@
+// PlatformerLevel.h - Lab 9: a player running and jumping through a tile level.
+//
+// Each fixed step (seeds 000 and 001):
+//   1. the controls change the velocity (Player::steer: run, brake, gravity, jump, speed cap);
+//   2. the player moves by velocity * step;
+//   3. broad phase: only the tiles under the SWEPT BOUNDS (the box covering where the player
+//      was and where it is now) are looked at, never the whole map;
+//   4. eight collision points around the player are tested against those tiles in a fixed
+//      order; a point inside a solid tile pushes the player out (corners along the axis of
+//      least penetration); a push upwards means the feet are on a floor: grounded.
+// Key X switches to speculative contacts: the move is cut short where the player would
+// first touch a tile, so it stops even when it is too fast for step 4 (bullet through paper).
+#pragma once
+
+#include "Player.h"
+#include "TileMap.h"
+
+#include "hitbox/Level.h"
+#include "hitbox/geometry/Shapes.h"
+#include "hitbox/geometry/Sweep.h"
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+// A point on the player's box that is tested against the tiles (seed 001's A, B, C, D and
+// corners). `side` says which sides of the box it lies on: x -1 left, +1 right, 0 middle;
+// y -1 top, +1 bottom, 0 middle. A point is pushed out towards the inside of the box.
+struct CollisionPoint
+{
+    const char* name;
+    sf::Vector2f side;
+};
+
+class PlatformerLevel : public hitbox::Level
+{
+public:
+    // The collision points in the order they are checked (seed 001): bottom, top, left,
+    // right, then the corners. The sides first, so that a corner is only used when no side
+    // point already settled the collision.
+    static const std::array<CollisionPoint, 8> collisionPoints;
+    // Resolving one point can push another into a tile: repeat up to this many times per
+    // step, stopping early when nothing is inside (seed 000's iterative resolution).
+    static constexpr int maxResolvePasses = 3;
+
+    explicit PlatformerLevel(TileMap map);
+
+    void handleInput(const Input& input, float dt) override;
+    void update(float dt) override;
+    void render(sf::RenderTarget& target) const override;
+    void renderDebug(hitbox::DebugRenderer& debug) const override;
+    sf::Vector2f getWorldSize() const override;
+    std::string getHelpText() const override;
+    std::string describeState() const override;
+
+    // Where a collision point lies on a box, in world pixels.
+    static sf::Vector2f pointOn(const sf::FloatRect& box, const CollisionPoint& point);
+    // The push that takes `point` (at `where`, inside `tile`) out of the tile: side points
+    // straight back through their own side, corners along the axis of least penetration.
+    static hitbox::Contact pushOut(const CollisionPoint& point, sf::Vector2f where,
+                                   const sf::FloatRect& tile);
+
+    // Put the player somewhere (top-left corner of its box), standing still. For tests and
+    // for restarting; the next step starts from there.
+    void placePlayer(sf::Vector2f topLeft);
+
+    const Player& getPlayer() const { return player; }
+    const TileMap& getMap() const { return map; }
+    bool isGrounded() const { return grounded; }
+    bool isSpeedCapOn() const { return speedCapOn; }
+    void setSpeedCap(bool on) { speedCapOn = on; }
+    // Demo mode (for lectures and screenshots): the player runs right and jumps by itself.
+    void setDemo(bool on) { demo = on; }
+    bool usesSpeculativeContacts() const { return speculative; }
+    void setSpeculativeContacts(bool on) { speculative = on; }
+    // The tiles looked at in the last step (the swept-bounds region), solid or not.
+    const TileRegion& getTestedRegion() const { return testedRegion; }
+    const sf::FloatRect& getSweptBounds() const { return sweptBounds; }
+    // The pushes made in the last step, in the order they were made.
+    const std::vector<hitbox::Contact>& getContacts() const { return contacts; }
+    int getResolvePassesLastStep() const { return passesUsed; }
+    long long getStepCount() const { return stepCount; }
+    int getFallsOutOfWorld() const { return fallsOutOfWorld; }
+
+private:
+    void step();
+    void moveThenResolve(const sf::FloatRect& before);
+    void moveWithSpeculativeContacts(const sf::FloatRect& before);
+    void resolvePenetration(const sf::FloatRect& before);
+    void applyPush(const hitbox::Contact& push);
+    // The boxes of the solid tiles in a region.
+    std::vector<sf::FloatRect> solidTilesIn(const TileRegion& region) const;
+    // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
+    hitbox::Hit firstHitAlong(const sf::FloatRect& box, sf::Vector2f move) const;
+    void respawn();
+
+    TileMap map;
+    Player player;
+    sf::VertexArray tileQuads{sf::Triangles}; // built once: the tiles never change
+    sf::Font font;
+
+    // Controls: held keys, and presses kept until the next step uses them.
+    bool holdingLeft = false;
+    bool holdingRight = false;
+    bool jumpPressed = false;
+    bool divePressed = false;
+
+    bool speedCapOn = true;
+    bool speculative = false;
+    bool demo = false;
+    float unsimulatedTime = 0.f; // seconds handed to update() but not yet simulated
+    long long stepCount = 0;
+    int fallsOutOfWorld = 0;
+
+    // What the last step found (the debug view and the tests read these).
+    bool grounded = false;
+    TileRegion testedRegion;
+    sf::FloatRect sweptBounds;
+    std::vector<hitbox::Contact> contacts;
+    std::vector<sf::FloatRect> pushingTiles;
+    std::array<bool, 8> pointWasInside{};
+    int passesUsed = 0;
+};

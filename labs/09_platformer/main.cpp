@@ -1,0 +1,27 @@
+// Lab 9 - Platformer: a player against a tile level.
+// Teaches: platformer movement in a fixed step (acceleration, braking, top speed, gravity,
+// a jump only from the ground); collision points around the player tested against solid
+// tiles in a fixed order; corners pushed out along the axis of least penetration; knowing
+// when the player is grounded; the swept-bounds broad phase (only nearby tiles are tested);
+// a speed cap against tunnelling, and speculative contacts as the other cure (seeds 000, 001).
+// Keys: A/D or arrows run, Space/W jump, S dive (very fast, downwards), C speed cap on/off,
+//       X speculative contacts on/off, R restart, plus the shared keys (F1 debug view).
+// Options: --level levels/NAME.txt loads another level from assets/;
+//          --demo 1 makes the player run right and jump by itself (lectures, screenshots).
+#include "PlatformerLevel.h"
+
+#include "hitbox/App.h"
+
+#include <memory>
+
+int main(int argc, char* argv[])
+{
+    return hitbox::run(argc, argv, {"Lab 9 - Platformer", {"--level", "--demo"}},
+                       [](const hitbox::Options& options)
+                       {
+                           auto level = std::make_unique<PlatformerLevel>(
+                               TileMap::load(options.get("--level", "levels/platformer.txt")));
+                           level->setDemo(options.get("--demo", "0") != "0");
+                           return level;
+                       });
+}

@@ -1,0 +1,121 @@
+// TopDownLevel.h - Lab 10: a Zelda-like scene seen from above (seed 003).
+//
+// The player walks among walls, rocks, trees and a few slimes. Seed 003's ideas, each
+// somewhere you can find it:
+//   - a hitbox smaller than the sprite: only the feet collide (Actor.h);
+//   - per-axis move-then-resolve: move along x, push out of walls along x; then the same
+//     along y. Walking diagonally into a wall slides along it (moveAndSlide);
+//   - enemies with a notice radius (start chasing) and an attack radius (hit), tested as
+//     "is the player's feet point inside this circle?" (chooseEnemyState);
+//   - a hit knocks the victim back and makes it invulnerable for a while, blinking (hurt);
+//   - depth sorting: actors are drawn in order of their feet's y, so the one further down
+//     the screen covers the one behind it (drawOrder).
+#pragma once
+
+#include "Actor.h"
+
+#include "hitbox/Level.h"
+
+#include <SFML/Graphics/Font.hpp>
+
+#include <string>
+#include <vector>
+
+enum class EnemyState
+{
+    Idle,   // the player is out of sight: stay
+    Chase,  // inside the notice radius: walk towards the player
+    Attack, // inside the attack radius: stop and strike
+};
+
+struct Enemy
+{
+    Actor body;
+    EnemyState state = EnemyState::Idle;
+    float attackCooldown = 0.f; // seconds until it can strike again
+};
+
+// Something to draw, in the order drawOrder() returns.
+struct DrawItem
+{
+    enum Kind
+    {
+        Tree,
+        Enemy,
+        Player
+    } kind;
+    int index; // into getTrees() / getEnemies(); 0 for the player
+};
+
+class TopDownLevel : public hitbox::Level
+{
+public:
+    // Tuning, in pixels and seconds.
+    static constexpr float playerSpeed = 240.f;
+    static constexpr float enemySpeed = 130.f;
+    static constexpr float noticeRadius = 260.f;
+    static constexpr float attackRadius = 56.f;
+    static constexpr float enemyAttackInterval = 0.8f;
+    static constexpr float knockbackSpeed = 700.f;    // px/s just after a hit
+    static constexpr float knockbackFade = 3500.f;    // px/s^2: gone after 0.2 s, 70 px
+    static constexpr float playerInvulnerable = 1.0f; // s after the player is hit
+    static constexpr float enemyInvulnerable = 0.4f;  // s after an enemy is hit
+    static constexpr float swordSeconds = 0.15f;      // how long a swing can hit
+    static constexpr int playerHealth = 5;
+    static constexpr int enemyHealth = 3;
+
+    TopDownLevel();
+
+    void handleInput(const Input& input, float dt) override;
+    void update(float dt) override;
+    void render(sf::RenderTarget& target) const override;
+    void renderDebug(hitbox::DebugRenderer& debug) const override;
+    std::string getHelpText() const override;
+    std::string describeState() const override;
+
+    // What an enemy at `enemyFeet` does about a player at `playerFeet` (circle tests).
+    static EnemyState chooseEnemyState(sf::Vector2f enemyFeet, sf::Vector2f playerFeet);
+    // A hit on `victim` from something at `from`. Returns false when the hit did nothing
+    // (the victim was still invulnerable).
+    static bool hurt(Actor& victim, sf::Vector2f from, float invulnerableSeconds);
+    // Moves an actor by `move` pixels, stopping it at every wall and tree trunk.
+    void moveAndSlide(Actor& actor, sf::Vector2f move) const;
+    // Everything that walks or stands, back to front: sorted by Actor::depth().
+    std::vector<DrawItem> drawOrder() const;
+    // Drawn faded this frame? (blinking while invulnerable: 10 blinks a second)
+    static bool isBlinkedOut(const Actor& actor);
+
+    // For tests: empty the scene but for its outer walls, then add things.
+    void clearScene();
+    void addWall(const sf::FloatRect& wall);
+    void addTree(sf::Vector2f trunkFeet);
+    void addEnemy(sf::Vector2f feet);
+    void placePlayer(sf::Vector2f feet);
+
+    const Actor& getPlayer() const { return player; }
+    const std::vector<Enemy>& getEnemies() const { return enemies; }
+    const std::vector<Actor>& getTrees() const { return trees; }
+    const std::vector<sf::FloatRect>& getWalls() const { return walls; }
+    bool isSwinging() const { return swordTimeLeft > 0.f; }
+    sf::FloatRect swordBox() const;
+    int getDefeats() const { return defeats; }
+
+private:
+    void updatePlayer(float dt);
+    void updateEnemy(Enemy& enemy, float dt);
+    void fadeKnockback(Actor& actor, float dt) const;
+    void buildScene();
+
+    Actor player;
+    std::vector<Enemy> enemies;
+    std::vector<Actor> trees;
+    std::vector<sf::FloatRect> walls;  // walls and rocks
+    std::vector<sf::FloatRect> solids; // walls and tree trunks: what blocks feet
+    sf::Font font;
+
+    sf::Vector2f heldDirection; // from the keys, each axis -1, 0 or 1
+    sf::Vector2f facing{0.f, 1.f};
+    bool swingPressed = false;
+    float swordTimeLeft = 0.f;
+    int defeats = 0;
+};

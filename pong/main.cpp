@@ -1,0 +1,79 @@
+// Pong - the Hitbox sample game: a complete game built on the framework.
+// Teaches: GameObjects that collide, a swept ball that never tunnels through a paddle at any
+// speed (BallPhysics.cpp), collision responses with a contact normal (Ball.cpp), and rules
+// kept apart from drawing so a whole match runs in a test.
+// Keys: title 1/2/3 choose the mode, D difficulty, Left/Right points to win;
+// in play W/S (left) and Up/Down (right), M mute, Esc back to the title; plus the shared
+// keys F1 debug boxes, P pause, N step, F12 screenshot.
+// Command line: --mode 1p|2p|cvc  --difficulty easy|normal|hard  --points-to-win N
+// --screen title|play|win, and the shared --headless --seconds --screenshot --seed.
+#include "PongLevel.h"
+
+#include "hitbox/App.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace
+{
+int parsePointsToWin(const std::string& text)
+{
+    std::size_t used = 0;
+    int points = 0;
+    try
+    {
+        points = std::stoi(text, &used);
+    }
+    catch (const std::exception&)
+    {
+        used = 0;
+    }
+    if (used != text.size() || points < 1 || points > 99)
+        throw std::invalid_argument("--points-to-win needs a whole number from 1 to 99, not '" +
+                                    text + "'");
+    return points;
+}
+
+std::unique_ptr<hitbox::Level> makePong(const hitbox::Options& options)
+{
+    PongSettings settings;
+    settings.seed = options.seed;
+    settings.difficulty = difficultyFromName(options.get("--difficulty", "normal"));
+    settings.pointsToWin = parsePointsToWin(options.get("--points-to-win", "11"));
+    // With no window nobody can press a key, so headless runs play computer vs computer.
+    const std::string defaultMode = options.headless ? "cvc" : "1p";
+    settings.mode = modeFromName(options.get("--mode", defaultMode));
+    auto pong = std::make_unique<PongLevel>(settings);
+
+    const bool picture = !options.screenshotPath.empty();
+    const std::string screen = options.get("--screen", "");
+    if (screen == "title")
+        pong->showTitle();
+    else if (screen == "play")
+        pong->startMatch(settings.mode);
+    else if (screen == "win")
+        pong->showWinScreen(settings.pointsToWin, settings.pointsToWin * 2 / 3);
+    else if (!screen.empty())
+        throw std::invalid_argument("--screen must be title, play or win, not '" + screen + "'");
+    else if (picture)
+    {
+        // A picture with no screen named shows the attract mode, a few seconds into a rally
+        // (unless --frames says how far).
+        pong->startAttractMode();
+        if (options.frames < 0)
+            hitbox::simulate(*pong, 480);
+    }
+    else if (options.headless || options.extra.count("--mode") > 0)
+        pong->startMatch(settings.mode); // a mode was chosen: skip the title
+    if (!options.headless && !picture)
+        pong->enableSound();
+    return pong;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    return hitbox::run(
+        argc, argv, {"Pong", {"--mode", "--difficulty", "--points-to-win", "--screen"}}, makePong);
+}

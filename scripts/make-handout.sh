@@ -1,0 +1,164 @@
+#!/usr/bin/env bash
+# Writes the student handout: a standalone tree with the framework, the EXERCISE version of
+# every lab (task blocks replaced by "// TASK n: ... — see README.md" and the starter code),
+# the lab sheets, the grading tests and scripts/grade.sh. No solution code goes in it.
+#
+# Usage: scripts/make-handout.sh OUT_DIR      (OUT_DIR must not exist, or be empty)
+#
+# (HANDOUT_SOLVED_TASKS=1,2 in the environment keeps those tasks solved: only for testing
+# that the leak check below catches solution code.)
+#
+# In the handout, `cmake --preset debug` then `cmake --build --preset debug --target <lab>`
+# builds the student's program, <lab>_tests tests the student's code, and
+# `./scripts/grade.sh` grades it. scripts/check-handout.sh checks all of that.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/lab-tests.sh
+
+if [[ $# -ne 1 || $1 == -h || $1 == --help ]]; then
+    echo "usage: $0 OUT_DIR" >&2
+    exit 2
+fi
+out=$1
+if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) ]]; then
+    echo "make-handout: $out exists and is not empty; give a new folder (or delete it first)." >&2
+    exit 2
+fi
+generator=framework/cmake/HitboxMakeExercise.cmake
+
+# The files of this tree (tracked or new, not ignored), so a lab being written is included.
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    mapfile -t files < <(git ls-files --cached --others --exclude-standard | sort -u)
+else
+    mapfile -t files < <(find . -type f -not -path './build*' -not -path './.git/*' | sed 's|^\./||' | sort)
+fi
+
+# What a student gets. Everything else (the README for instructors, CI, Pong, benchmarks,
+# the slides, the other scripts) stays out.
+keep() {
+    case $1 in
+        framework/* | assets/* | tests/support/* | tests/geometry/* | tests/framework/* | tests/labs/*) return 0 ;;
+        CMakeLists.txt | CMakePresets.json | .clang-format | .gitignore | tests/CMakeLists.txt) return 0 ;;
+        scripts/grade.sh | scripts/lab-tests.sh | scripts/install-deps.sh) return 0 ;;
+        labs/CMakeLists.txt | labs/[0-9][0-9]_*/*) return 0 ;;
+    esac
+    return 1
+}
+
+mkdir -p "$out"
+copied=0
+generated=0
+for file in "${files[@]}"; do
+    [[ -f $file ]] || continue # deleted but not yet committed
+    keep "$file" || continue
+    mkdir -p "$out/$(dirname "$file")"
+    case $file in
+        labs/[0-9][0-9]_*/*.cpp | labs/[0-9][0-9]_*/*.h | labs/[0-9][0-9]_*/*.hpp)
+            cmake "-DINPUT=$file" "-DOUTPUT=$out/$file" "-DSOLVED_TASKS=${HANDOUT_SOLVED_TASKS:-}" -P "$generator"
+            generated=$((generated + 1))
+            ;;
+        *)
+            cp -p "$file" "$out/$file"
+            copied=$((copied + 1))
+            ;;
+    esac
+done
+
+# Tells HitboxLab.cmake that the lab folders hold the student's code: one version per lab.
+cat >"$out/framework/cmake/HitboxHandout.cmake" <<'EOF'
+# Written by make-handout.sh: this tree is a student handout. The lab folders hold the
+# student's own code, so each lab builds once: <lab> (the program) and <lab>_tests.
+set(HITBOX_HANDOUT ON)
+EOF
+
+mapfile -t labs < <(lab_names)
+{
+    cat <<'EOF'
+# Hitbox labs — student handout
+
+The labs of the collision-detection unit. Each lab is a folder in `labs/` with a lab sheet
+(`README.md`): what the lab teaches, the keys, the numbered tasks with hints, and which
+tests check each task. Look for the lines `// TASK n: ... — see README.md` in the lab's
+code: that is where you write.
+
+## Build and run (Linux; on Windows and macOS use CMake the same way)
+
+    ./scripts/install-deps.sh                      # once: compiler, CMake, SFML, GoogleTest
+    cmake --preset debug
+    cmake --build --preset debug --target lab01_point_in_box
+    ./build/debug/labs/01_point_in_box/lab01_point_in_box
+
+Every lab program has the same keys: F1 shows the collision boxes, P pauses, N steps one
+frame while paused, F12 saves a screenshot, Esc quits. Options: `--headless --frames 600`
+runs without a window, `--screenshot out.png` saves one frame.
+
+## Check your work
+
+    ./scripts/grade.sh --lab lab01_point_in_box    # one lab
+    ./scripts/grade.sh                             # every lab
+
+builds the lab's grading tests against your code, runs them and prints, for each task,
+how many of its tests pass and fail (JUnit XML in `build/debug/grade-results/`). A task is
+done when none of its tests fail. Each test's name says what it checks, e.g.
+`Task2BounceOffWalls.BallNeverLeavesTheWindow`; the full output is in
+`build/debug/grade-results/<lab>.log`. You can also run one lab's tests directly:
+
+    cmake --build --preset debug --target lab01_point_in_box_tests
+    ./build/debug/tests/labs/01_point_in_box/lab01_point_in_box_tests
+
+## The labs
+
+EOF
+    for lab in "${labs[@]}"; do
+        folder=$(lab_folder "$lab")
+        title=$(sed -n '1s/^#[[:space:]]*//p' "$folder/README.md" 2>/dev/null || true)
+        echo "- \`$folder/\` — ${title:-$lab} (program \`$lab\`)"
+    done
+    cat <<'EOF'
+
+The framework (`framework/hitbox/`) is yours to read: `GameObject.h`, `Collision.h` and
+`Input.h` are the classes the labs use.
+EOF
+} >"$out/README.md"
+
+# No solution may leak: every solution-only line (a line inside a BEGIN TASK block that
+# appears nowhere else in any lab, not even as starter code) must be absent from the
+# handout's labs/. Whole lines are compared, blanks around them ignored.
+leaks=0
+solution_lines=$(mktemp)
+trap 'rm -f "$solution_lines"' EXIT
+mapfile -t sources < <(find labs -path 'labs/[0-9][0-9]_*' -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.hpp' \))
+if [[ ${#sources[@]} -gt 0 ]]; then
+    awk '
+        { text = $0; sub(/\r$/, "", text); trimmed = text; gsub(/^[ \t]+|[ \t]+$/, "", trimmed) }
+        text ~ /^[ \t]*\/\/[ \t]*BEGIN TASK/ { state = "solution"; next }
+        text ~ /^[ \t]*\/\/[ \t]*STARTER TASK/ { state = "starter"; next }
+        text ~ /^[ \t]*\/\/[ \t]*END TASK/ { state = ""; next }
+        state == "solution" { solution[trimmed] = 1; next }
+        state == "starter" { sub(/^\/\/ ?/, "", trimmed); elsewhere[trimmed] = 1; next }
+        { elsewhere[trimmed] = 1 }
+        END { for (line in solution) if (length(line) >= 12 && !(line in elsewhere)) print line }
+        ' "${sources[@]}" >"$solution_lines"
+fi
+checked=$(wc -l <"$solution_lines")
+mapfile -t handout_files < <(find "$out/labs" -type f)
+while IFS= read -r line; do
+    echo "make-handout: solution line leaked into the handout: $line" >&2
+    leaks=$((leaks + 1))
+done < <(awk '
+    FNR == NR { wanted[$0] = 1; next }
+    { trimmed = $0; sub(/\r$/, "", trimmed); gsub(/^[ \t]+|[ \t]+$/, "", trimmed) }
+    trimmed in wanted && !(trimmed in seen) { seen[trimmed] = 1; print trimmed " (" FILENAME ":" FNR ")" }
+    ' "$solution_lines" "${handout_files[@]}")
+if grep -rqE '//[[:space:]]*(BEGIN|STARTER|END) TASK' "$out/labs"; then
+    echo "make-handout: task markers left in the handout:" >&2
+    grep -rnE '//[[:space:]]*(BEGIN|STARTER|END) TASK' "$out/labs" >&2
+    leaks=$((leaks + 1))
+fi
+if [[ $leaks -gt 0 ]]; then
+    echo "make-handout: FAILED: solution code in $out (see above); do not hand it out." >&2
+    exit 1
+fi
+
+echo "make-handout: wrote $out: ${#labs[@]} labs (${labs[*]}), $generated exercise sources," \
+    "$copied other files; $checked solution-only lines checked absent"

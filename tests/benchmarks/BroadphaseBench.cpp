@@ -1,0 +1,171 @@
+// broadphase_bench - one frame of N moving boxes: move every box, then report every
+// overlapping pair. Benchmarks are named <Method>/<N>. Counters:
+//   pairs       - pairs found in the first frame (every method must show the same number)
+//   ns_per_box  - frame time / N: flat across N means the method scales linearly
+// Box2DTree/<N> is Box2D 2.4.1's b2DynamicTree used the way a Box2D user would: one proxy per
+// box, MoveProxy every frame, then Query each box's AABB and keep each overlapping pair once.
+// Results, machine and the exact command: docs/performance.md.
+#include "MovingBoxes.h"
+
+#include "hitbox/broadphase/Broadphase.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <ctime>
+
+#ifdef HITBOX_HAVE_BOX2D
+#include <box2d/b2_dynamic_tree.h>
+#endif
+
+namespace
+{
+
+constexpr unsigned kSeed = 42;
+
+// Measures the frames' CPU time (like the CPU column), so a busy machine (other programs on
+// the same cores) disturbs ns_per_box less than wall-clock time would.
+class FrameClock
+{
+public:
+    FrameClock() : start(std::clock()) {}
+    // `pairs`: the pairs of the first timed frame, the same frame for every method.
+    void report(benchmark::State& state, std::size_t boxes, std::size_t pairs) const
+    {
+        const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+        const double frames = static_cast<double>(state.iterations());
+        state.counters["pairs"] = static_cast<double>(pairs);
+        state.counters["ns_per_box"] = seconds * 1e9 / (frames * static_cast<double>(boxes));
+    }
+
+private:
+    std::clock_t start;
+};
+
+void runBroadphase(benchmark::State& state, hitbox::BroadphaseMethod method)
+{
+    const std::size_t count = static_cast<std::size_t>(state.range(0));
+    MovingBoxes boxes(count, kSeed);
+    std::unique_ptr<hitbox::Broadphase> broadphase = hitbox::makeBroadphase(method);
+    std::vector<hitbox::Pair> pairs;
+    broadphase->findPairs(boxes.items, pairs); // warm up: buffers reach their size
+    std::size_t firstFramePairs = 0;
+    FrameClock clock;
+    for (auto _ : state)
+    {
+        boxes.step();
+        broadphase->findPairs(boxes.items, pairs);
+        if (firstFramePairs == 0)
+            firstFramePairs = pairs.size();
+        benchmark::DoNotOptimize(pairs.data());
+        benchmark::ClobberMemory();
+    }
+    clock.report(state, count, firstFramePairs);
+}
+
+void BruteForce(benchmark::State& state)
+{
+    runBroadphase(state, hitbox::BroadphaseMethod::BruteForce);
+}
+void SortAndSweep(benchmark::State& state)
+{
+    runBroadphase(state, hitbox::BroadphaseMethod::SortAndSweep);
+}
+void Grid(benchmark::State& state)
+{
+    runBroadphase(state, hitbox::BroadphaseMethod::Grid);
+}
+void Quadtree(benchmark::State& state)
+{
+    runBroadphase(state, hitbox::BroadphaseMethod::Quadtree);
+}
+
+#ifdef HITBOX_HAVE_BOX2D
+
+b2AABB toAabb(const sf::FloatRect& box)
+{
+    b2AABB aabb;
+    aabb.lowerBound.Set(box.left, box.top);
+    aabb.upperBound.Set(box.left + box.width, box.top + box.height);
+    return aabb;
+}
+
+// Box2D's Query calls QueryCallback(proxyId) for every proxy whose fat AABB overlaps.
+struct PairCollector
+{
+    const b2DynamicTree* tree = nullptr;
+    const MovingBoxes* boxes = nullptr;
+    std::uint32_t queried = 0;
+    std::vector<hitbox::Pair>* pairs = nullptr;
+
+    bool QueryCallback(std::int32_t proxyId)
+    {
+        const auto other = static_cast<std::uint32_t>(
+            reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxyId)));
+        if (other <= queried)
+            return true; // each pair once: the lower index reports it
+        // The tree's boxes are fattened: test the real boxes with Hitbox's edge rule.
+        const sf::FloatRect& a = boxes->items[queried].box;
+        const sf::FloatRect& b = boxes->items[other].box;
+        if (a.left < b.left + b.width && b.left < a.left + a.width && a.top < b.top + b.height &&
+            b.top < a.top + a.height)
+            pairs->push_back({queried, other});
+        return true;
+    }
+};
+
+void Box2DTree(benchmark::State& state)
+{
+    const std::size_t count = static_cast<std::size_t>(state.range(0));
+    MovingBoxes boxes(count, kSeed);
+    b2DynamicTree tree;
+    std::vector<std::int32_t> proxies(count);
+    for (std::size_t i = 0; i < count; ++i)
+        proxies[i] = tree.CreateProxy(toAabb(boxes.items[i].box),
+                                      reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
+    std::vector<hitbox::Pair> pairs;
+    PairCollector collector{&tree, &boxes, 0, &pairs};
+    std::size_t firstFramePairs = 0;
+    FrameClock clock;
+    for (auto _ : state)
+    {
+        boxes.step();
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const b2Vec2 move(boxes.lastMove[i].x, boxes.lastMove[i].y);
+            tree.MoveProxy(proxies[i], toAabb(boxes.items[i].box), move);
+        }
+        pairs.clear();
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            collector.queried = static_cast<std::uint32_t>(i);
+            tree.Query(&collector, toAabb(boxes.items[i].box));
+        }
+        if (firstFramePairs == 0)
+            firstFramePairs = pairs.size();
+        benchmark::DoNotOptimize(pairs.data());
+        benchmark::ClobberMemory();
+    }
+    clock.report(state, count, firstFramePairs);
+}
+
+#endif
+
+void sizes(benchmark::internal::Benchmark* benchmark)
+{
+    benchmark->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+}
+
+} // namespace
+
+BENCHMARK(Grid)->Apply(sizes);
+BENCHMARK(SortAndSweep)->Apply(sizes);
+BENCHMARK(Quadtree)->Apply(sizes);
+#ifdef HITBOX_HAVE_BOX2D
+BENCHMARK(Box2DTree)->Apply(sizes);
+#endif
+// 100,000 boxes by brute force is 5 billion tests: one frame is enough to make the point.
+BENCHMARK(BruteForce)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BruteForce)->Arg(100000)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();

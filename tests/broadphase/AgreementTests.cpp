@@ -1,0 +1,166 @@
+// Every broadphase must report exactly the pairs brute force reports: same pairs, each once,
+// in (first, second) order. Thousands of seeded scenes, each run for several frames with the
+// same broadphase objects, so memory reuse and last frame's order are exercised too.
+// More scenes: HITBOX_BROADPHASE_SCENES=5000 (the `long` ctest label does this).
+#include "Scenes.h"
+#include "support/Printers.h"
+
+#include "hitbox/broadphase/Broadphase.h"
+#include "hitbox/broadphase/GridBroadphase.h"
+#include "hitbox/broadphase/QuadtreeBroadphase.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <memory>
+#include <sstream>
+
+using hitbox::Broadphase;
+using hitbox::BroadphaseItem;
+using hitbox::Pair;
+
+namespace
+{
+
+std::size_t scenesPerKind()
+{
+    const char* fromEnvironment = std::getenv("HITBOX_BROADPHASE_SCENES");
+    return fromEnvironment ? std::strtoul(fromEnvironment, nullptr, 10) : 400;
+}
+
+// The four methods with their defaults, plus settings that stress them: grid cells exactly
+// on the scenes' 8-pixel lattice, cells far smaller than the boxes, one giant cell; quadtrees
+// that split down to single boxes, and a shallow one.
+std::vector<std::unique_ptr<Broadphase>> everyMethod()
+{
+    std::vector<std::unique_ptr<Broadphase>> methods;
+    methods.push_back(hitbox::makeBroadphase(hitbox::BroadphaseMethod::BruteForce));
+    methods.push_back(hitbox::makeBroadphase(hitbox::BroadphaseMethod::SortAndSweep));
+    methods.push_back(hitbox::makeBroadphase(hitbox::BroadphaseMethod::Grid));
+    methods.push_back(hitbox::makeBroadphase(hitbox::BroadphaseMethod::Quadtree));
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(8.f));
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(3.f));
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(1e6f));
+    methods.push_back(std::make_unique<hitbox::QuadtreeBroadphase>(1, 12));
+    methods.push_back(std::make_unique<hitbox::QuadtreeBroadphase>(2, 3));
+    return methods;
+}
+
+std::string describeBox(const BroadphaseItem& item)
+{
+    std::ostringstream text;
+    sf::PrintTo(item.box, &text);
+    text << " layer=" << item.layer << " mask=" << item.mask;
+    return text.str();
+}
+
+// Empty when they agree; otherwise the first difference, with both boxes.
+std::string firstDifference(const std::vector<Pair>& expected, const std::vector<Pair>& actual,
+                            const std::vector<BroadphaseItem>& items)
+{
+    const std::size_t common = std::min(expected.size(), actual.size());
+    for (std::size_t k = 0; k <= common; ++k)
+    {
+        const bool expectedEnded = k == expected.size();
+        const bool actualEnded = k == actual.size();
+        if (expectedEnded && actualEnded)
+            return "";
+        const bool same = !expectedEnded && !actualEnded && expected[k].first == actual[k].first &&
+                          expected[k].second == actual[k].second;
+        if (same)
+            continue;
+        std::ostringstream text;
+        text << "pair #" << k << ": expected ";
+        if (expectedEnded)
+            text << "no more pairs";
+        else
+            text << "(" << expected[k].first << ", " << expected[k].second << ") "
+                 << describeBox(items[expected[k].first]) << " / "
+                 << describeBox(items[expected[k].second]);
+        text << "; got ";
+        if (actualEnded)
+            text << "no more pairs";
+        else
+            text << "(" << actual[k].first << ", " << actual[k].second << ") "
+                 << describeBox(items[actual[k].first]) << " / "
+                 << describeBox(items[actual[k].second]);
+        text << " (" << expected.size() << " expected, " << actual.size() << " found)";
+        return text.str();
+    }
+    return "";
+}
+
+class AllMethodsAgreeWithBruteForce : public ::testing::TestWithParam<scenes::Kind>
+{
+};
+
+TEST_P(AllMethodsAgreeWithBruteForce, OnSeededScenesOverSeveralFrames)
+{
+    const scenes::Kind kind = GetParam();
+    std::vector<std::unique_ptr<Broadphase>> methods = everyMethod();
+    std::vector<Pair> pairs;
+    const std::size_t sceneCount = scenesPerKind();
+    for (std::uint32_t seed = 0; seed < sceneCount; ++seed)
+    {
+        std::mt19937 random(seed * 8u + static_cast<std::uint32_t>(kind));
+        // Every box in one spot means every pair overlaps: fewer boxes keep the run short.
+        const std::size_t most = kind == scenes::Kind::OneSpot ? 40 : 120;
+        const std::size_t count = std::uniform_int_distribution<std::size_t>(0, most)(random);
+        const bool useLayers = seed % 3 == 0;
+        std::vector<BroadphaseItem> items = scenes::make(kind, count, useLayers, random);
+        // Frames 0-2 move a little, frame 3 teleports some boxes far away.
+        for (int frame = 0; frame < 4; ++frame)
+        {
+            const std::vector<Pair> expected = scenes::referencePairs(items);
+            for (const std::unique_ptr<Broadphase>& method : methods)
+            {
+                method->findPairs(items, pairs);
+                const std::string difference = firstDifference(expected, pairs, items);
+                ASSERT_EQ(difference, "")
+                    << method->name() << ", scene " << scenes::describe(kind) << " seed " << seed
+                    << " frame " << frame << " (" << items.size() << " boxes)";
+                ASSERT_EQ(method->stats().pairsFound, expected.size()) << method->name();
+            }
+            scenes::move(items, frame == 2, random);
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryKindOfScene, AllMethodsAgreeWithBruteForce,
+                         ::testing::Values(scenes::Kind::Scattered, scenes::Kind::OnGridLines,
+                                           scenes::Kind::BigAndSmall, scenes::Kind::FarAndHuge,
+                                           scenes::Kind::ZeroSize, scenes::Kind::OneSpot,
+                                           scenes::Kind::NegativeSize, scenes::Kind::WithNaN),
+                         [](const ::testing::TestParamInfo<scenes::Kind>& info)
+                         { return scenes::describe(info.param); });
+
+TEST(AllMethodsAgreeWithBruteForce, WhileHundredsOfBoxesMoveForManyFrames)
+{
+    // One long run: the sort-and-sweep order and the grid's buffers carry over frame to frame,
+    // boxes are added and removed, and every 25th frame some jump across the world.
+    std::mt19937 random(2024);
+    std::vector<std::unique_ptr<Broadphase>> methods = everyMethod();
+    std::vector<BroadphaseItem> items = scenes::make(scenes::Kind::Scattered, 300, true, random);
+    std::vector<Pair> pairs;
+    for (int frame = 0; frame < 200; ++frame)
+    {
+        if (frame % 10 == 5)
+            items.resize(items.size() - 20); // boxes removed
+        if (frame % 10 == 0 && frame > 0)
+        {
+            const std::vector<BroadphaseItem> more =
+                scenes::make(scenes::Kind::BigAndSmall, 25, true, random);
+            items.insert(items.end(), more.begin(), more.end()); // boxes added
+        }
+        const std::vector<Pair> expected = scenes::referencePairs(items);
+        for (const std::unique_ptr<Broadphase>& method : methods)
+        {
+            method->findPairs(items, pairs);
+            ASSERT_EQ(firstDifference(expected, pairs, items), "")
+                << method->name() << " frame " << frame;
+        }
+        scenes::move(items, frame % 25 == 24, random);
+    }
+}
+
+} // namespace

@@ -1,0 +1,178 @@
+// The World: broadphase, then rules, then the exact test, then collisionResponse on both.
+#include "support/Printers.h"
+
+#include "hitbox/GameObject.h"
+#include "hitbox/broadphase/World.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+
+using hitbox::BroadphaseMethod;
+using hitbox::World;
+
+namespace
+{
+
+// Remembers who it was told it hit.
+class Recorder : public GameObject
+{
+public:
+    Recorder(float x, float y, float side = 20.f)
+    {
+        setSize({side, side});
+        setPosition(x, y);
+    }
+    void collisionResponse(GameObject* other) override { hits.push_back(other); }
+    std::vector<GameObject*> hits;
+};
+
+const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce, BroadphaseMethod::SortAndSweep,
+                                       BroadphaseMethod::Grid, BroadphaseMethod::Quadtree};
+
+TEST(World, CallsCollisionResponseOnBothObjectsOncePerPair)
+{
+    for (BroadphaseMethod method : allMethods)
+    {
+        Recorder a(0.f, 0.f), b(10.f, 10.f), c(200.f, 200.f);
+        World world(method);
+        world.add(a);
+        world.add(b);
+        world.add(c);
+        EXPECT_EQ(world.checkCollisions(), 1u) << hitbox::toString(method);
+        EXPECT_EQ(a.hits, std::vector<GameObject*>{&b});
+        EXPECT_EQ(b.hits, std::vector<GameObject*>{&a});
+        EXPECT_TRUE(c.hits.empty());
+    }
+}
+
+TEST(World, UsesTheGridByDefaultAndALevelCanPickAnother)
+{
+    World world;
+    EXPECT_EQ(world.getMethod(), BroadphaseMethod::Grid);
+    world.setMethod(BroadphaseMethod::Quadtree);
+    EXPECT_EQ(world.getMethod(), BroadphaseMethod::Quadtree);
+}
+
+TEST(World, TouchingObjectsDoNotRespond)
+{
+    Recorder a(0.f, 0.f), b(20.f, 0.f);
+    World world;
+    world.add(a);
+    world.add(b);
+    EXPECT_EQ(world.checkCollisions(), 0u);
+    EXPECT_TRUE(a.hits.empty());
+}
+
+TEST(World, SkipsDeadObjectsAndObjectsThatAreNotColliders)
+{
+    Recorder a(0.f, 0.f), dead(5.f, 5.f), ghost(8.f, 8.f);
+    dead.setAlive(false);
+    ghost.setCollider(false);
+    World world;
+    world.add(a);
+    world.add(dead);
+    world.add(ghost);
+    EXPECT_EQ(world.checkCollisions(), 0u);
+    EXPECT_TRUE(a.hits.empty());
+    EXPECT_TRUE(dead.hits.empty());
+    EXPECT_TRUE(ghost.hits.empty());
+    dead.setAlive(true); // back in the game
+    EXPECT_EQ(world.checkCollisions(), 1u);
+}
+
+TEST(World, HonoursLayersAndMasks)
+{
+    const std::uint32_t playerLayer = 1, bulletLayer = 2, enemyLayer = 4;
+    Recorder player(0.f, 0.f), bullet(12.f, 12.f, 4.f), enemy(10.f, 10.f);
+    World world;
+    world.add(player, playerLayer, enemyLayer);
+    world.add(bullet, bulletLayer, enemyLayer); // the player's bullet ignores the player
+    world.add(enemy, enemyLayer, playerLayer | bulletLayer);
+    EXPECT_EQ(world.checkCollisions(), 2u);
+    EXPECT_EQ(player.hits, std::vector<GameObject*>{&enemy});
+    EXPECT_EQ(bullet.hits, std::vector<GameObject*>{&enemy});
+    EXPECT_EQ(enemy.hits, (std::vector<GameObject*>{&player, &bullet}));
+}
+
+TEST(World, TheRuleCallbackVetoesPairsBeforeTheExactTest)
+{
+    Recorder a(0.f, 0.f), b(10.f, 10.f), c(5.f, 5.f);
+    World world;
+    world.add(a);
+    world.add(b);
+    world.add(c);
+    int calls = 0;
+    world.setRule(
+        [&](const GameObject& first, const GameObject& second)
+        {
+            ++calls;
+            return &first != &c && &second != &c; // c collides with nothing
+        });
+    EXPECT_EQ(world.checkCollisions(), 1u);
+    EXPECT_EQ(calls, 3);                  // three overlapping pairs reached the rule
+    EXPECT_EQ(world.getExactTests(), 1u); // only the allowed one got the exact test
+    EXPECT_EQ(a.hits, std::vector<GameObject*>{&b});
+    EXPECT_TRUE(c.hits.empty());
+}
+
+TEST(World, CirclesUseTheExactCircleTestAfterTheBoxes)
+{
+    // The boxes' corners overlap, the inscribed circles do not: no response.
+    Recorder a(0.f, 0.f), b(17.f, 17.f);
+    World world;
+    world.add(a, 1, 0xFFFFFFFF, World::Shape::Circle);
+    world.add(b, 1, 0xFFFFFFFF, World::Shape::Circle);
+    EXPECT_EQ(world.checkCollisions(), 0u);
+    EXPECT_EQ(world.getBroadphaseStats().pairsFound, 1u);
+    EXPECT_EQ(world.getExactTests(), 1u);
+    b.setPosition(12.f, 0.f); // centres 12 apart, radii 10 + 10
+    EXPECT_EQ(world.checkCollisions(), 1u);
+}
+
+TEST(World, ACircleAgainstABoxUsesTheCircleBoxTest)
+{
+    Recorder circle(0.f, 0.f), box(18.f, 18.f);
+    World world;
+    world.add(circle, 1, 0xFFFFFFFF, World::Shape::Circle);
+    world.add(box);
+    EXPECT_EQ(world.checkCollisions(), 0u); // the circle misses the box's corner
+    box.setPosition(15.f, 5.f);
+    EXPECT_EQ(world.checkCollisions(), 1u);
+    EXPECT_EQ(circle.hits, std::vector<GameObject*>{&box});
+}
+
+TEST(World, RemovedObjectsNoLongerCollide)
+{
+    Recorder a(0.f, 0.f), b(10.f, 10.f);
+    World world;
+    world.add(a);
+    world.add(b);
+    world.add(b); // adding twice does not duplicate
+    EXPECT_EQ(world.size(), 2u);
+    world.remove(b);
+    EXPECT_EQ(world.checkCollisions(), 0u);
+    EXPECT_EQ(world.size(), 1u);
+}
+
+TEST(World, EveryMethodFindsTheSameCollisionsAmongManyObjects)
+{
+    std::vector<std::unique_ptr<Recorder>> objects;
+    for (int i = 0; i < 400; ++i)
+        objects.push_back(std::make_unique<Recorder>(static_cast<float>((i * 37) % 600),
+                                                     static_cast<float>((i * 91) % 400)));
+    std::vector<std::size_t> counts;
+    for (BroadphaseMethod method : allMethods)
+    {
+        World world(method);
+        for (auto& object : objects)
+            world.add(*object);
+        counts.push_back(world.checkCollisions());
+    }
+    EXPECT_GT(counts[0], 0u);
+    for (std::size_t count : counts)
+        EXPECT_EQ(count, counts[0]);
+}
+
+} // namespace

@@ -1,0 +1,133 @@
+// TunnellingTest.cpp - when a discrete test can miss, swept bounds, speculative contacts
+// (Tunnelling.h).
+#include "hitbox/geometry/Tunnelling.h"
+#include "hitbox/geometry/Overlap.h"
+#include "support/Printers.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
+using hitbox::canTunnel;
+using hitbox::Circle;
+
+namespace
+{
+const sf::FloatRect paper(500.f, 0.f, 1.f, 100.f);
+const sf::FloatRect bullet(400.f, 48.f, 4.f, 4.f);
+const float dt = 1.f / 120.f;
+const float notANumber = std::numeric_limits<float>::quiet_NaN();
+} // namespace
+
+TEST(CanTunnel, AStepLongerThanBothWidthsCanJumpTheWall)
+{
+    EXPECT_TRUE(canTunnel(bullet, {120.f, 0.f}, paper)); // 120 px a step
+    EXPECT_TRUE(canTunnel(bullet, {5.f, 0.f},
+                          {404.f, 0.f, 1.f, 100.f})); // exactly 4 + 1: touching to touching
+    EXPECT_FALSE(canTunnel(bullet, {4.9f, 0.f}, {404.f, 0.f, 1.f, 100.f}));
+}
+
+TEST(CanTunnel, ASlowStepCannot)
+{
+    EXPECT_FALSE(canTunnel(bullet, {3.f, 0.f}, {404.f, 0.f, 1.f, 100.f}));
+}
+
+TEST(CanTunnel, AWallOutsideTheSweptBoundsCannotBeTunnelled)
+{
+    EXPECT_FALSE(canTunnel(bullet, {120.f, 0.f}, {500.f, 200.f, 1.f, 100.f})); // below the path
+    EXPECT_FALSE(canTunnel(bullet, {-120.f, 0.f}, paper));                     // going away
+}
+
+TEST(CanTunnel, CirclesCompareTheStepWithBothDiameters)
+{
+    const Circle ball{{0.f, 0.f}, 5.f};
+    const Circle target{{50.f, 0.f}, 5.f};
+    EXPECT_TRUE(canTunnel(ball, {100.f, 0.f}, target));
+    EXPECT_FALSE(canTunnel(ball, {19.f, 0.f}, Circle{{10.f, 0.f}, 5.f}));
+    EXPECT_FALSE(
+        canTunnel(ball, {100.f, 0.f}, Circle{{50.f, 10.f}, 5.f})); // passes beside, touching
+    EXPECT_TRUE(canTunnel(ball, {120.f, 0.f}, paper) == false);    // box far away
+    EXPECT_TRUE(canTunnel(Circle{{400.f, 50.f}, 2.f}, {120.f, 0.f}, paper));
+}
+
+TEST(CanTunnel, NaNOrNegativeRadiusNeverTunnels)
+{
+    EXPECT_FALSE(canTunnel(bullet, {notANumber, 0.f}, paper));
+    EXPECT_FALSE(canTunnel(Circle{{400.f, 50.f}, -2.f}, {120.f, 0.f}, paper));
+    EXPECT_FALSE(canTunnel(Circle{{0.f, 0.f}, 5.f}, {100.f, 0.f}, Circle{{50.f, 0.f}, notANumber}));
+}
+
+TEST(CanTunnel, WarnsBeforeEveryStraightMissOfADiscreteTest)
+{
+    // Axis-aligned moves: whenever the discrete test really misses a crossing, canTunnel
+    // said it could happen; when it says it cannot, the discrete test never misses.
+    std::mt19937 random(9u);
+    std::uniform_real_distribution<float> place(0.f, 200.f);
+    std::uniform_real_distribution<float> size(0.5f, 30.f);
+    std::uniform_real_distribution<float> move(-100.f, 100.f);
+    int misses = 0;
+    for (int i = 0; i < 50000; ++i)
+    {
+        const sf::FloatRect mover(place(random), place(random), size(random), size(random));
+        const sf::FloatRect target(place(random), place(random), size(random), size(random));
+        const sf::Vector2f step =
+            i % 2 ? sf::Vector2f(move(random), 0.f) : sf::Vector2f(0.f, move(random));
+        if (hitbox::discreteTestMisses(mover, step, target))
+        {
+            ++misses;
+            ASSERT_TRUE(canTunnel(mover, step, target))
+                << ::testing::PrintToString(mover) << " " << ::testing::PrintToString(step) << " "
+                << ::testing::PrintToString(target);
+        }
+    }
+    EXPECT_GT(misses, 100);
+}
+
+TEST(DiscreteTestMisses, TheBulletThroughPaper)
+{
+    const sf::Vector2f step = sf::Vector2f(1.0e4f, 0.f) * dt; // 83 px a step
+    sf::FloatRect atTheStart(450.f, 48.f, 4.f, 4.f);
+    EXPECT_TRUE(hitbox::discreteTestMisses(atTheStart, step, paper));
+    // Slow enough and the discrete test sees it at the end of some step.
+    EXPECT_FALSE(hitbox::discreteTestMisses({497.f, 48.f, 4.f, 4.f}, {2.f, 0.f}, paper));
+    EXPECT_TRUE(hitbox::discreteTestMisses(Circle{{0.f, 0.f}, 1.f}, {100.f, 0.f},
+                                           Circle{{50.f, 0.f}, 1.f}));
+    EXPECT_FALSE(
+        hitbox::discreteTestMisses(Circle{{0.f, 0.f}, 1.f}, {49.f, 0.f}, Circle{{50.f, 0.f}, 1.f}));
+}
+
+TEST(SweptBounds, HoldsTheStartAndTheEnd)
+{
+    const sf::FloatRect bounds = hitbox::sweptBounds(bullet, {-100.f, 30.f});
+    EXPECT_EQ(bounds, sf::FloatRect(300.f, 48.f, 104.f, 34.f));
+    EXPECT_EQ(hitbox::sweptBounds(bullet, {0.f, 0.f}), bullet);
+    EXPECT_EQ(hitbox::sweptBounds(sf::FloatRect(404.f, 52.f, -4.f, -4.f), {0.f, 0.f}), bullet);
+    EXPECT_EQ(hitbox::sweptBounds(Circle{{10.f, 10.f}, 5.f}, {20.f, 0.f}),
+              sf::FloatRect(5.f, 5.f, 30.f, 10.f));
+}
+
+TEST(SpeculativeVelocity, ShortensTheMoveToEndTouching)
+{
+    const sf::Vector2f velocity(2.0e4f, 0.f); // 167 px a step: would pass the wall
+    const sf::Vector2f clamped = hitbox::speculativeVelocity(bullet, velocity, dt, {paper});
+    EXPECT_NEAR(bullet.left + bullet.width + clamped.x * dt, 500.f, 1e-3f);
+    EXPECT_EQ(clamped.y, 0.f);
+}
+
+TEST(SpeculativeVelocity, TheNearestSolidDecides)
+{
+    const std::vector<sf::FloatRect> solids{paper, {450.f, 0.f, 1.f, 100.f}};
+    const sf::Vector2f clamped = hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, dt, solids);
+    EXPECT_NEAR(bullet.left + bullet.width + clamped.x * dt, 450.f, 1e-3f);
+}
+
+TEST(SpeculativeVelocity, NoHitOrStartingInsideKeepsTheVelocity)
+{
+    EXPECT_EQ(hitbox::speculativeVelocity(bullet, {-1.0e4f, 0.f}, dt, {paper}),
+              sf::Vector2f(-1.0e4f, 0.f));
+    EXPECT_EQ(hitbox::speculativeVelocity({499.f, 48.f, 4.f, 4.f}, {1.0e4f, 0.f}, dt, {paper}),
+              sf::Vector2f(1.0e4f, 0.f));
+    EXPECT_EQ(hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, 0.f, {paper}),
+              sf::Vector2f(1.0e4f, 0.f));
+}

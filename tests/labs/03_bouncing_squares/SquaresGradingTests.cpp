@@ -1,0 +1,213 @@
+// Grading tests of lab 3 (bouncing squares). Each suite is named after the task it checks;
+// README.md lists them. The level runs with no window, one fixed step at a time.
+#include "labs/LabTesting.h"
+
+#include "Square.h"
+#include "SquaresLevel.h"
+
+#include "hitbox/App.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+
+// How far two boxes may overlap at the end of a step: the response separates them in the
+// step they meet, so only rounding is left.
+constexpr float overlapTolerance = 0.5f;
+// How far a square moves in one step.
+constexpr float stepDistance = squareSpeed * hitbox::stepSeconds;
+// The see-through margin on each side of the crate.
+constexpr float margin = (spriteSize - crateSize) / 2.f;
+
+void run(SquaresLevel& level, float seconds)
+{
+    hitbox::simulate(level, static_cast<long long>(seconds * hitbox::stepsPerSecond));
+}
+
+SquaresLevel emptyLevel()
+{
+    SquaresLevel level;
+    level.removeAllSquares();
+    return level;
+}
+
+// How far two boxes overlap along the axis where they overlap least (0 if they do not).
+float overlapOf(const sf::FloatRect& a, const sf::FloatRect& b)
+{
+    const float x = std::min(a.left + a.width, b.left + b.width) - std::max(a.left, b.left);
+    const float y = std::min(a.top + a.height, b.top + b.height) - std::max(a.top, b.top);
+    return std::max(0.f, std::min(x, y));
+}
+
+const sf::Vector2f middle{600.f, 337.5f};
+
+} // namespace
+
+TEST(Level, StartsWithTwoSquaresFlyingAtEachOther)
+{
+    SquaresLevel level;
+    ASSERT_EQ(level.getSquareCount(), 2);
+    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, squareSpeed);
+    EXPECT_FLOAT_EQ(level.getSquare(1).getVelocity().x, -squareSpeed);
+    EXPECT_EQ(level.getSquare(0).getSize(), sf::Vector2f(spriteSize, spriteSize))
+        << "the shape is the whole picture";
+}
+
+TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsTheCrateNotTheWholePicture)
+{
+    const Square square(middle, {}, sf::Color::Red);
+    const sf::FloatRect box = square.getCollisionBox();
+    EXPECT_FLOAT_EQ(box.width, crateSize);
+    EXPECT_FLOAT_EQ(box.height, crateSize);
+    EXPECT_LT(box.width, square.getGlobalBounds().width) << "smaller than the sprite";
+}
+
+TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsCentredOnThePicture)
+{
+    const Square square(middle, {}, sf::Color::Red);
+    EXPECT_VEC_NEAR(hitbox::centerOf(square.getCollisionBox()), middle, 0.01f);
+    const sf::FloatRect box = square.getCollisionBox();
+    EXPECT_NEAR(box.left, middle.x - crateSize / 2.f, 0.01f) << "a margin on the left...";
+    EXPECT_NEAR(box.top, middle.y - crateSize / 2.f, 0.01f) << "...and on top";
+}
+
+TEST(Task2BounceTheBoxOffTheWalls, SquareNeverLeavesTheWindow)
+{
+    SquaresLevel level = emptyLevel();
+    level.addSquare(middle, {squareSpeed * 1.2f, squareSpeed * 0.8f});
+    const sf::Vector2f world = level.getWorldSize();
+    for (int step = 0; step < 20 * 120; ++step)
+    {
+        hitbox::simulate(level, 1);
+        const sf::FloatRect box = level.getSquare(0).getCollisionBox();
+        ASSERT_TRUE(box.left >= -0.01f && box.top >= -0.01f &&
+                    box.left + box.width <= world.x + 0.01f &&
+                    box.top + box.height <= world.y + 0.01f)
+            << "after step " << step << " the collision box " << testing::PrintToString(box)
+            << " sticks out of the window";
+    }
+}
+
+TEST(Task2BounceTheBoxOffTheWalls, TheCrateTouchesTheWallWhileTheMarginGoesPastIt)
+{
+    // Bounce on the box, not the sprite: at the turn the crate reaches the wall and the
+    // see-through margin hangs over it.
+    SquaresLevel level = emptyLevel();
+    level.addSquare(middle, {squareSpeed, 0.f});
+    const float world = level.getWorldSize().x;
+    float furthestPicture = 0.f;
+    float furthestBox = 0.f;
+    for (int step = 0; step < 4 * 120; ++step)
+    {
+        hitbox::simulate(level, 1);
+        const Square& square = level.getSquare(0);
+        furthestPicture = std::max(furthestPicture, square.getGlobalBounds().left + spriteSize);
+        const sf::FloatRect box = square.getCollisionBox();
+        furthestBox = std::max(furthestBox, box.left + box.width);
+    }
+    EXPECT_NEAR(furthestBox, world, 0.01f) << "the crate reaches the right edge";
+    EXPECT_NEAR(furthestPicture, world + margin, 0.01f)
+        << "the picture's margin goes past the edge by " << margin << " pixels";
+    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -squareSpeed) << "and it came back";
+}
+
+TEST(Task2BounceTheBoxOffTheWalls, SquareComesBackFromEachWallAtTheSameSpeed)
+{
+    const sf::Vector2f directions[] = {{1.f, 0.f}, {-1.f, 0.f}, {0.f, 1.f}, {0.f, -1.f}};
+    for (sf::Vector2f direction : directions)
+    {
+        SquaresLevel level = emptyLevel();
+        level.addSquare(middle, direction * squareSpeed);
+        const sf::Vector2f toWall = level.getWorldSize() / 2.f;
+        run(level, std::abs(toWall.x * direction.x + toWall.y * direction.y) / squareSpeed + 0.2f);
+        EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), -direction * squareSpeed, 0.01f)
+            << "a square sent towards " << labtesting::text(direction);
+    }
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, HeadOnSquaresSwapVelocitiesAndNeverOverlap)
+{
+    SquaresLevel level; // the lecture's example: two squares on one line
+    float worstOverlap = 0.f;
+    bool met = false;
+    for (int step = 0; step < 3 * 120; ++step)
+    {
+        hitbox::simulate(level, 1);
+        const float overlap =
+            overlapOf(level.getSquare(0).getCollisionBox(), level.getSquare(1).getCollisionBox());
+        worstOverlap = std::max(worstOverlap, overlap);
+        met = met || level.getSquare(0).getVelocity().x < 0.f;
+    }
+    ASSERT_TRUE(met) << "the squares should meet and bounce within three seconds";
+    EXPECT_LE(worstOverlap, overlapTolerance);
+    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -squareSpeed);
+    EXPECT_FLOAT_EQ(level.getSquare(1).getVelocity().x, squareSpeed);
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, SquaresBounceOnTheirCratesNotTheirPictures)
+{
+    // At the closest approach the crates touch: the centres are one crate apart, and the
+    // see-through margins overlap.
+    SquaresLevel level;
+    float closest = 10000.f;
+    for (int step = 0; step < 3 * 120; ++step)
+    {
+        hitbox::simulate(level, 1);
+        closest = std::min(closest, std::abs(level.getSquare(1).getPosition().x -
+                                             level.getSquare(0).getPosition().x));
+    }
+    EXPECT_NEAR(closest, crateSize, overlapTolerance)
+        << "centres " << crateSize << " apart: crate touching crate (" << spriteSize
+        << " would mean picture touching picture)";
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, BothSquaresAreToldAboutTheHit)
+{
+    SquaresLevel level = emptyLevel();
+    level.addSquare(middle, {});
+    level.addSquare(middle + sf::Vector2f{crateSize - 10.f, 5.f}, {});
+    hitbox::simulate(level, 1);
+    EXPECT_EQ(level.getSquare(0).getHitCount(), 1);
+    EXPECT_EQ(level.getSquare(1).getHitCount(), 1);
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, LandingOnTopChangesOnlyTheUpDownVelocity)
+{
+    // A square falls onto one at rest, a little to the side: they meet top to bottom, so
+    // the sideways velocity is kept and the downward one is passed on.
+    SquaresLevel level = emptyLevel();
+    level.addSquare(middle - sf::Vector2f{20.f, 150.f}, {30.f, squareSpeed});
+    level.addSquare(middle, {});
+    run(level, 0.5f);
+    EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), sf::Vector2f(30.f, 0.f), 0.01f);
+    EXPECT_VEC_NEAR(level.getSquare(1).getVelocity(), sf::Vector2f(0.f, squareSpeed), 0.01f);
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, ManySquaresStayInsideAndApart)
+{
+    SquaresLevel level(12, 3);
+    ASSERT_EQ(level.getSquareCount(), 12);
+    const sf::Vector2f world = level.getWorldSize();
+    // In a crowd a square pushed out of one can be pushed into another (or past a wall) in
+    // the same step; allow what two squares close in one step.
+    const float crowdTolerance = 2.f * stepDistance + overlapTolerance;
+    for (int step = 0; step < 10 * 120; ++step)
+    {
+        hitbox::simulate(level, 1);
+        for (int i = 0; i < level.getSquareCount(); ++i)
+        {
+            const sf::FloatRect box = level.getSquare(i).getCollisionBox();
+            ASSERT_TRUE(box.left >= -crowdTolerance && box.top >= -crowdTolerance &&
+                        box.left + box.width <= world.x + crowdTolerance &&
+                        box.top + box.height <= world.y + crowdTolerance)
+                << "square " << i << " left the window at step " << step;
+            for (int j = i + 1; j < level.getSquareCount(); ++j)
+                ASSERT_LE(overlapOf(box, level.getSquare(j).getCollisionBox()), crowdTolerance)
+                    << "squares " << i << " and " << j << " at step " << step;
+        }
+    }
+}

@@ -1,0 +1,329 @@
+// Grading tests of lab 9 (platformer). Suites named TaskN... check task N of README.md; the
+// others check what the lab gives you ready-made (movement, the fixed step, the debug view).
+// Every test runs the level with no window: scripted keys, fixed steps.
+#include "PlatformerTestSupport.h"
+
+#include "hitbox/DebugRenderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using platformertest::Game;
+
+namespace
+{
+// The highest point (smallest y) the player's box reaches in `seconds`.
+float highestTop(Game& game, float seconds)
+{
+    float top = game.position().y;
+    for (int frame = 0; frame < static_cast<int>(seconds * hitbox::stepsPerSecond); ++frame)
+    {
+        game.frame();
+        top = std::min(top, game.position().y);
+    }
+    return top;
+}
+} // namespace
+
+// ---- Task 1: gravity, and a jump only from the ground -------------------------------------
+
+TEST(Task1Gravity, PlayerFallsAndComesToRestOnTheFloor)
+{
+    Game game(platformertest::room);
+    game.run(1.f);
+    EXPECT_NEAR(game.feet(), platformertest::roomFloorTop, 0.01f);
+    EXPECT_TRUE(game.level.isGrounded());
+    EXPECT_EQ(game.velocity().y, 0.f) << "standing still, gravity must not build up speed";
+}
+
+TEST(Task1Gravity, FallingSpeedGrowsByGravityEachStep)
+{
+    Game game(platformertest::deepShaft(40));
+    game.frame();
+    const float first = game.velocity().y;
+    game.frame();
+    EXPECT_NEAR(first, Player::gravity * hitbox::stepSeconds, 0.01f);
+    EXPECT_NEAR(game.velocity().y - first, Player::gravity * hitbox::stepSeconds, 0.01f);
+}
+
+TEST(Task1Jump, JumpFromTheFloorRisesAboutFourTiles)
+{
+    Game game(platformertest::room);
+    game.run(1.f);
+    const float standingTop = game.position().y;
+    game.tap(sf::Keyboard::Space);
+    const float top = highestTop(game, 1.f);
+    // v^2 / 2g = 1140^2 / 6600 = 197 pixels, give or take one step.
+    const float expected = Player::jumpSpeed * Player::jumpSpeed / (2.f * Player::gravity);
+    EXPECT_NEAR(standingTop - top, expected, 10.f);
+    EXPECT_NEAR(game.feet(), platformertest::roomFloorTop, 0.01f) << "lands again";
+}
+
+TEST(Task1Jump, JumpPressedInTheAirDoesNothing)
+{
+    Game game(platformertest::deepShaft(40));
+    game.frame(); // falling from the start
+    game.tap(sf::Keyboard::Space);
+    EXPECT_GT(game.velocity().y, 0.f) << "still falling: no jumping off thin air";
+}
+
+TEST(Task1Jump, NoSecondJumpAtTheTopOfTheFirst)
+{
+    Game single(platformertest::room);
+    single.run(1.f);
+    single.tap(sf::Keyboard::Space);
+    const float singleTop = highestTop(single, 1.f);
+
+    Game twice(platformertest::room);
+    twice.run(1.f);
+    twice.tap(sf::Keyboard::Space);
+    twice.run(0.25f);
+    twice.tap(sf::Keyboard::Space);
+    EXPECT_FLOAT_EQ(highestTop(twice, 1.f), singleTop);
+}
+
+// ---- Task 2: corners resolve along the axis of least penetration ----------------------------
+
+TEST(Task2LeastPenetration, CornerDeepSidewaysShallowDownIsPushedUp)
+{
+    const CollisionPoint& rightBottom = PlatformerLevel::collisionPoints[7];
+    const sf::FloatRect tile{64.f, 64.f, 32.f, 32.f};
+    const hitbox::Contact push = PlatformerLevel::pushOut(rightBottom, {74.f, 67.f}, tile);
+    ASSERT_TRUE(push.hit);
+    EXPECT_EQ(push.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_FLOAT_EQ(push.depth, 3.f);
+}
+
+TEST(Task2LeastPenetration, CornerShallowSidewaysDeepDownIsPushedSideways)
+{
+    const CollisionPoint& leftTop = PlatformerLevel::collisionPoints[4];
+    const sf::FloatRect tile{64.f, 64.f, 32.f, 32.f};
+    const hitbox::Contact push = PlatformerLevel::pushOut(leftTop, {93.f, 80.f}, tile);
+    ASSERT_TRUE(push.hit);
+    EXPECT_EQ(push.normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_FLOAT_EQ(push.depth, 3.f);
+}
+
+TEST(Task2LeastPenetration, LandingWithOnlyACornerOnALedgeStandsOnIt)
+{
+    Game game(platformertest::roomWithLedge);
+    // Only the left 12 pixels of the player are above the ledge: the bottom point (in the
+    // middle) misses it, the left-bottom corner does not.
+    game.level.placePlayer({platformertest::ledgeRight - 12.f, 120.f});
+    game.run(1.f);
+    EXPECT_NEAR(game.feet(), platformertest::ledgeTop, 0.01f)
+        << "the corner landed on the ledge: it must hold the player up, not push it off";
+    EXPECT_NEAR(game.position().x, platformertest::ledgeRight - 12.f, 0.01f);
+    EXPECT_TRUE(game.level.isGrounded());
+}
+
+// ---- Task 3: only the tiles under the swept bounds ------------------------------------------
+
+TEST(Task3SweptBounds, OnlyTheTilesAroundThePlayerAreTested)
+{
+    Game game(platformertest::deepShaft(40) /* 5 x 40 = 200 tiles */);
+    int mostTested = 0;
+    for (int frame = 0; frame < 240; ++frame)
+    {
+        game.frame();
+        mostTested = std::max(mostTested, game.level.getTestedRegion().tileCount());
+    }
+    // 32 x 60 pixels, moving under 19 pixels a step, 48-pixel tiles: at most 2 x 3 tiles.
+    EXPECT_LE(mostTested, 6);
+    EXPECT_GT(mostTested, 0);
+}
+
+TEST(Task3SweptBounds, TheSweptBoundsHoldWhereThePlayerWasAndIs)
+{
+    Game game(platformertest::deepShaft(40));
+    game.run(0.5f);
+    const sf::FloatRect before = game.level.getPlayer().getBox();
+    game.frame();
+    const sf::FloatRect after = game.level.getPlayer().getBox();
+    const sf::FloatRect swept = game.level.getSweptBounds();
+    EXPECT_LE(swept.top, before.top);
+    EXPECT_GE(swept.top + swept.height, after.top + after.height);
+    const TileRegion region = game.level.getTestedRegion();
+    EXPECT_EQ(region.firstRow, static_cast<int>(before.top / TileMap::tileSize));
+    EXPECT_EQ(region.lastRow,
+              static_cast<int>(std::ceil((after.top + after.height) / TileMap::tileSize)) - 1);
+}
+
+// ---- Task 4: the speed cap against tunnelling -----------------------------------------------
+
+TEST(Task4SpeedCap, AFallFromVeryHighLandsOnAFloorOneTileThick)
+{
+    Game game(platformertest::deepShaft(1000)); // a 48 000 pixel drop
+    game.run(25.f);
+    EXPECT_EQ(game.level.getFallsOutOfWorld(), 0) << "the player went through the floor";
+    EXPECT_NEAR(game.feet(), 999 * TileMap::tileSize, 0.01f);
+    EXPECT_TRUE(game.level.isGrounded());
+}
+
+TEST(Task4SpeedCap, EveryStepMovesLessThanATileEvenWhenDiving)
+{
+    Game game(platformertest::deepShaft(200));
+    game.run(0.2f);
+    game.tap(sf::Keyboard::S); // dive: asks for 13 500 px/s
+    for (int frame = 0; frame < 120; ++frame)
+    {
+        const float before = game.position().y;
+        game.frame();
+        EXPECT_LT(game.position().y - before, TileMap::tileSize);
+    }
+}
+
+// ---- Task 4 (with the lab's ready-made parts): the problem the cap solves, the other cure ----
+
+TEST(Task4Tunnelling, WithoutTheCapAFastFallGoesThroughTheFloor)
+{
+    Game game(platformertest::deepShaft(1000));
+    game.level.setSpeedCap(false);
+    game.run(8.f);
+    EXPECT_GE(game.level.getFallsOutOfWorld(), 1)
+        << "the bullet-through-paper problem this lab shows has gone away?";
+}
+
+TEST(Task4SpeculativeContacts, StopAFastFallOnAThinFloorWithoutTheCap)
+{
+    Game game(platformertest::deepShaft(1000));
+    game.level.setSpeedCap(false);
+    game.level.setSpeculativeContacts(true);
+    game.run(8.f);
+    EXPECT_EQ(game.level.getFallsOutOfWorld(), 0);
+    EXPECT_NEAR(game.feet(), 999 * TileMap::tileSize, 0.01f);
+    EXPECT_TRUE(game.level.isGrounded());
+}
+
+TEST(Task4SpeculativeContacts, PlayerRunsAndStopsAtAWallLikeTheDiscreteVersion)
+{
+    Game game(platformertest::room);
+    game.level.setSpeculativeContacts(true);
+    game.input.setKeyDown(sf::Keyboard::D);
+    game.run(3.f);
+    EXPECT_NEAR(game.position().x + Player::width, 9 * TileMap::tileSize, 0.01f);
+    EXPECT_NEAR(game.feet(), platformertest::roomFloorTop, 0.01f);
+    EXPECT_TRUE(game.level.isGrounded());
+}
+
+// ---- Ready-made: movement, walls, grounded --------------------------------------------------
+
+TEST(Movement, RunningSpeedsUpToTheTopSpeedAndNoFurther)
+{
+    Game game(platformertest::room);
+    game.run(1.f);
+    game.input.setKeyDown(sf::Keyboard::D);
+    game.run(0.05f);
+    EXPECT_NEAR(game.velocity().x, Player::runAcceleration * 0.05f, 1.f);
+    game.run(0.5f);
+    EXPECT_FLOAT_EQ(game.velocity().x, Player::maxRunSpeed);
+}
+
+TEST(Movement, LettingGoBrakesToAStopFasterThanStartingUp)
+{
+    Game game(platformertest::room);
+    game.run(1.f);
+    game.input.setKeyDown(sf::Keyboard::A);
+    game.run(0.4f);
+    game.input.setKeyUp(sf::Keyboard::A);
+    int stepsToStop = 0;
+    while (game.velocity().x != 0.f && stepsToStop < 1000)
+    {
+        game.frame();
+        ++stepsToStop;
+    }
+    EXPECT_EQ(game.velocity().x, 0.f) << "stops, and does not wobble past zero";
+    const float secondsToStop = static_cast<float>(stepsToStop) * hitbox::stepSeconds;
+    EXPECT_LT(secondsToStop, Player::maxRunSpeed / Player::runAcceleration);
+}
+
+TEST(Task1Movement, RunningIntoAWallStopsFlushAgainstIt)
+{
+    Game game(platformertest::room);
+    game.input.setKeyDown(sf::Keyboard::A);
+    game.run(3.f);
+    EXPECT_NEAR(game.position().x, TileMap::tileSize, 0.01f);
+    EXPECT_EQ(game.velocity().x, 0.f);
+    EXPECT_TRUE(game.level.isGrounded()) << "the floor still holds the player";
+}
+
+TEST(Movement, SameKeysGiveTheSameJumpAtAnyFrameRate)
+{
+    // Run right for half a second, jump, and keep running for a second; compare where the
+    // player ends up when the program runs at 30, 60, 120 and 240 frames a second.
+    auto play = [](float framesPerSecond)
+    {
+        Game game(platformertest::room);
+        const float dt = 1.f / framesPerSecond;
+        game.run(0.5f, dt);
+        game.input.setKeyDown(sf::Keyboard::D);
+        game.run(0.5f, dt);
+        game.tap(sf::Keyboard::Space, dt);
+        game.run(0.3f - dt, dt); // the tap was one frame of the 0.3 s
+        return game.position();
+    };
+    const sf::Vector2f reference = play(120.f);
+    for (float framesPerSecond : {30.f, 60.f, 240.f})
+    {
+        const sf::Vector2f position = play(framesPerSecond);
+        EXPECT_EQ(position.x, reference.x) << framesPerSecond << " frames a second";
+        EXPECT_EQ(position.y, reference.y) << framesPerSecond << " frames a second";
+    }
+    EXPECT_LT(reference.y, platformertest::roomFloorTop - Player::height - 30.f)
+        << "the script should catch the player in mid-jump";
+}
+
+TEST(Task1Grounded, WalkingOffALedgeIsNotGrounded)
+{
+    Game game(platformertest::roomWithLedge);
+    game.level.placePlayer({64.f, platformertest::ledgeTop - Player::height});
+    game.run(0.1f);
+    ASSERT_TRUE(game.level.isGrounded());
+    game.input.setKeyDown(sf::Keyboard::D);
+    while (game.position().x < platformertest::ledgeRight + 1.f)
+        game.frame();
+    game.frame();
+    EXPECT_FALSE(game.level.isGrounded());
+}
+
+TEST(Grounded, PressedAgainstAWallInTheAirIsNotGrounded)
+{
+    Game game(platformertest::room);
+    game.level.placePlayer({60.f, 60.f});
+    game.input.setKeyDown(sf::Keyboard::A);
+    game.run(0.15f);
+    EXPECT_NEAR(game.position().x, TileMap::tileSize, 0.01f) << "against the left wall";
+    EXPECT_FALSE(game.level.isGrounded());
+}
+
+TEST(DebugView, ShowsTestedTilesPointsAndContacts)
+{
+    Game game(platformertest::room);
+    game.run(1.f);
+    hitbox::DebugRenderer debug;
+    game.level.renderDebug(debug);
+    EXPECT_GT(debug.getVertices().getVertexCount(), 100u);
+}
+
+TEST(CollisionPoints, AreCheckedSidesFirstThenCornersInSeed001sOrder)
+{
+    const char* expected[] = {"bottom",   "top",       "left",        "right",
+                              "left top", "right top", "left bottom", "right bottom"};
+    ASSERT_EQ(PlatformerLevel::collisionPoints.size(), 8u);
+    for (std::size_t index = 0; index < 8; ++index)
+        EXPECT_STREQ(PlatformerLevel::collisionPoints[index].name, expected[index]);
+}
+
+TEST(CollisionPoints, SitOnTheEdgesAndCornersOfThePlayersBox)
+{
+    const sf::FloatRect box{100.f, 200.f, Player::width, Player::height};
+    EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[0]),
+              sf::Vector2f(100.f + Player::width / 2.f, 200.f + Player::height));
+    EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[4]),
+              sf::Vector2f(100.f, 200.f));
+    EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[7]),
+              sf::Vector2f(100.f + Player::width, 200.f + Player::height));
+}
