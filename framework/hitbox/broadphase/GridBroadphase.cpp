@@ -228,19 +228,22 @@ void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
     for (std::size_t k = 0; k < cellPairCount; ++k)
         pairs[pairStart[cellPairs[k].first]++] =
             cellPairs[k]; // afterwards pairStart[i] = end of i's pairs
-    std::uint32_t begin = 0;
-    for (std::size_t i = 0; i < count; ++i)
+    // Now in order of `first`; the pairs of one box are mostly in order of `second` too. One
+    // insertion sort over all the pairs fixes the few that are not: a pass over the pairs
+    // whose "in order?" test is almost always yes (a sort per box was a loop per box, whose
+    // number of rounds the CPU could not guess).
+    auto key = [](const Pair& pair)
+    { return std::uint64_t(pair.first) << 32 | std::uint64_t(pair.second); };
+    Pair* sorted = pairs.data();
+    for (std::size_t k = 1; k < cellPairCount; ++k)
     {
-        const std::uint32_t end = pairStart[i];
-        for (std::uint32_t k = begin + 1; k < end; ++k)
-        {
-            const Pair moving = pairs[k];
-            std::uint32_t j = k;
-            for (; j > begin && pairs[j - 1].second > moving.second; --j)
-                pairs[j] = pairs[j - 1];
-            pairs[j] = moving;
-        }
-        begin = end;
+        const Pair moving = sorted[k];
+        if (key(moving) > key(sorted[k - 1]))
+            continue;
+        std::size_t j = k;
+        for (; j > 0 && key(sorted[j - 1]) > key(moving); --j)
+            sorted[j] = sorted[j - 1];
+        sorted[j] = moving;
     }
 }
 
