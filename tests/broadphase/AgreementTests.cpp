@@ -2,6 +2,7 @@
 // in (first, second) order. Thousands of seeded scenes, each run for several frames with the
 // same broadphase objects, so memory reuse and last frame's order are exercised too.
 // More scenes: HITBOX_BROADPHASE_SCENES=5000 (the `long` ctest label does this).
+#include "BroadphasePrinters.h"
 #include "Scenes.h"
 #include "support/Printers.h"
 

@@ -1,5 +1,6 @@
 // The broadphase rules one at a time, for every method: the edge rule, degenerate boxes,
 // layers and masks, the order of the pairs, and the statistics the lab shows.
+#include "BroadphasePrinters.h"
 #include "support/Printers.h"
 
 #include "hitbox/broadphase/Broadphase.h"

@@ -81,10 +81,7 @@ void GridBroadphase::chooseGrid()
 void GridBroadphase::assignCells()
 {
     const std::size_t count = boxes.size();
-    cellX0.resize(count);
-    cellY0.resize(count);
-    cellX1.resize(count);
-    cellY1.resize(count);
+    cellRanges.resize(count);
     const float scale = 1.f / usedCellSize;
     const float lastColumn = static_cast<float>(columns - 1);
     const float lastRow = static_cast<float>(rows - 1);
@@ -100,15 +97,10 @@ void GridBroadphase::assignCells()
     for (std::size_t i = 0; i < count; ++i)
     {
         if (!boxes.isUsable(i))
-        {
-            cellX0[i] = cellY0[i] = 1; // an empty range: listed in no cell
-            cellX1[i] = cellY1[i] = 0;
-            continue;
-        }
-        cellX0[i] = column(boxes.minX[i]);
-        cellX1[i] = column(boxes.maxX[i]);
-        cellY0[i] = row(boxes.minY[i]);
-        cellY1[i] = row(boxes.maxY[i]);
+            cellRanges[i] = {1, 0, 1, 0}; // an empty range: listed in no cell
+        else
+            cellRanges[i] = {column(boxes.minX[i]), column(boxes.maxX[i]), row(boxes.minY[i]),
+                             row(boxes.maxY[i])};
     }
 }
 
@@ -116,27 +108,46 @@ void GridBroadphase::listCells()
 {
     const std::size_t count = boxes.size();
     const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
+    // Local copies: the compiler cannot tell that writing an entry leaves these unchanged, so
+    // it would read them from memory again for every entry.
+    const std::size_t width = std::size_t(columns);
+    const CellRange* ranges = cellRanges.data();
+    const float* minX = boxes.minX.data();
+    const float* maxX = boxes.maxX.data();
+    const float* minY = boxes.minY.data();
+    const float* maxY = boxes.maxY.data();
     // [slide:grid-insert]
     // A counting sort: count each cell's boxes, turn the counts into start positions, then
     // drop each box into its cells. No hashing and no list per cell: one array holds every
     // cell's boxes back to back, reused every frame (no allocation after the first frames).
     cellStart.assign(cellCount + 1, 0);
+    std::uint32_t* start = cellStart.data();
     for (std::size_t i = 0; i < count; ++i)
-        for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
-            for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                ++cellStart[std::size_t(cy) * columns + cx];
+    {
+        const CellRange r = ranges[i];
+        for (int cy = r.y0; cy <= r.y1; ++cy)
+            for (int cx = r.x0; cx <= r.x1; ++cx)
+                ++start[std::size_t(cy) * width + std::size_t(cx)];
+    }
     for (std::size_t c = 1; c <= cellCount; ++c)
-        cellStart[c] += cellStart[c - 1]; // now cellStart[c] = end of cell c
+        start[c] += start[c - 1]; // now start[c] = end of cell c
     entries.resize(cellStart[cellCount]);
-    // Fill from the last box back, each cell from its end back: afterwards cellStart[c] is
-    // the start of cell c, and every cell's boxes are in item order.
+    Entry* out = entries.data();
+    // Fill from the last box back, each cell from its end back: afterwards start[c] is the
+    // start of cell c, and every cell's boxes are in item order.
     for (std::size_t i = count; i-- > 0;)
-        for (int cy = cellY0[i]; cy <= cellY1[i]; ++cy)
-            for (int cx = cellX0[i]; cx <= cellX1[i]; ++cx)
-                entries[--cellStart[std::size_t(cy) * columns + cx]] = {
-                    boxes.minX[i], boxes.maxX[i], boxes.minY[i], boxes.maxY[i],
-                    std::uint32_t(i) | std::uint32_t(cx == cellX0[i]) << 30 |
-                        std::uint32_t(cy == cellY0[i]) << 31};
+    {
+        const CellRange r = ranges[i];
+        const Entry box = {minX[i], maxX[i], minY[i], maxY[i], std::uint32_t(i)};
+        for (int cy = r.y0; cy <= r.y1; ++cy)
+            for (int cx = r.x0; cx <= r.x1; ++cx)
+            {
+                Entry entry = box;
+                entry.itemAndFirstCell |=
+                    std::uint32_t(cx == r.x0) << 30 | std::uint32_t(cy == r.y0) << 31;
+                out[--start[std::size_t(cy) * width + std::size_t(cx)]] = entry;
+            }
+    }
     // [/slide]
 }
 
@@ -217,19 +228,22 @@ void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
     for (std::size_t k = 0; k < cellPairCount; ++k)
         pairs[pairStart[cellPairs[k].first]++] =
             cellPairs[k]; // afterwards pairStart[i] = end of i's pairs
-    std::uint32_t begin = 0;
-    for (std::size_t i = 0; i < count; ++i)
+    // Now in order of `first`; the pairs of one box are mostly in order of `second` too. One
+    // insertion sort over all the pairs fixes the few that are not: a pass over the pairs
+    // whose "in order?" test is almost always yes (a sort per box was a loop per box, whose
+    // number of rounds the CPU could not guess).
+    auto key = [](const Pair& pair)
+    { return std::uint64_t(pair.first) << 32 | std::uint64_t(pair.second); };
+    Pair* sorted = pairs.data();
+    for (std::size_t k = 1; k < cellPairCount; ++k)
     {
-        const std::uint32_t end = pairStart[i];
-        for (std::uint32_t k = begin + 1; k < end; ++k)
-        {
-            const Pair moving = pairs[k];
-            std::uint32_t j = k;
-            for (; j > begin && pairs[j - 1].second > moving.second; --j)
-                pairs[j] = pairs[j - 1];
-            pairs[j] = moving;
-        }
-        begin = end;
+        const Pair moving = sorted[k];
+        if (key(moving) > key(sorted[k - 1]))
+            continue;
+        std::size_t j = k;
+        for (; j > 0 && key(sorted[j - 1]) > key(moving); --j)
+            sorted[j] = sorted[j - 1];
+        sorted[j] = moving;
     }
 }
 

@@ -59,7 +59,12 @@ private:
     int columns = 1, rows = 1;
 
     // Per item: the range of cells it covers (inclusive). Empty (x0 > x1) for NaN boxes.
-    std::vector<int> cellX0, cellY0, cellX1, cellY1;
+    // One struct per item, so the two passes over the items read one place per item.
+    struct CellRange
+    {
+        int x0, x1, y0, y1;
+    };
+    std::vector<CellRange> cellRanges;
     // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
     std::vector<std::uint32_t> cellStart;
     std::vector<Entry> entries;
