@@ -43,20 +43,19 @@ TimeSpan overlapTimes(float moverMin, float moverMax, float targetMin, float tar
 }
 // [/slide]
 
-Hit startedInsideHit(const sf::FloatRect& mover, const sf::FloatRect& target)
+} // namespace
+
+Hit startedInsideHit(const Contact& overlap)
 {
-    const Contact contact = boxVsBoxContact(mover, target);
     Hit hit;
     hit.hit = true;
     hit.startedInside = true;
     hit.time = 0.f;
-    hit.normal = contact.normal;
-    hit.depth = contact.depth;
-    hit.point = contact.point;
+    hit.normal = overlap.normal;
+    hit.depth = overlap.depth;
+    hit.point = overlap.point;
     return hit;
 }
-
-} // namespace
 
 // [slide:swept-box]
 Hit sweepBoxVsBox(const sf::FloatRect& moverBox, sf::Vector2f displacement,
@@ -68,7 +67,7 @@ Hit sweepBoxVsBox(const sf::FloatRect& moverBox, sf::Vector2f displacement,
     const sf::FloatRect mover = normalised(moverBox);
     const sf::FloatRect target = normalised(targetBox);
     if (boxVsBox(mover, target))
-        return startedInsideHit(mover, target);
+        return startedInsideHit(boxVsBoxContact(mover, target));
 
     const TimeSpan x =
         overlapTimes(mover.left, rightOf(mover), target.left, rightOf(target), displacement.x);

@@ -49,6 +49,10 @@ struct Hit
     explicit operator bool() const { return hit; }
 };
 
+// The answer for a mover that already shares area with its target at time 0: a hit at
+// time 0 with `startedInside`, and the contact's push-out as normal, depth and point.
+Hit startedInsideHit(const Contact& overlap);
+
 // The slab method (seed 004): the segment from `start` to `end` against a box. A segment is
 // a point moving from start to end, so it hits when that point passes strictly inside the
 // box. `point` is start + time * (end - start).

@@ -18,18 +18,6 @@ bool isUsable(const Circle& circle)
     return isFinite(circle) && circle.radius >= 0.f;
 }
 
-Hit fromContact(const Contact& contact)
-{
-    Hit hit;
-    hit.hit = true;
-    hit.startedInside = true;
-    hit.time = 0.f;
-    hit.normal = contact.normal;
-    hit.depth = contact.depth;
-    hit.point = contact.point;
-    return hit;
-}
-
 // [slide:swept-circle-toi]
 // When does a point moving from `start` by `move` first get strictly inside the circle
 // (centre, radius)? |start + t * move - centre| = radius is a quadratic in t (seed 003):
@@ -81,7 +69,7 @@ Hit sweepCircleVsCircle(const Circle& mover, sf::Vector2f displacement, const Ci
     if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
         return Hit{};
     if (circleVsCircle(mover, target))
-        return fromContact(circleVsCircleContact(mover, target));
+        return startedInsideHit(circleVsCircleContact(mover, target));
     // Grow the target by the mover's radius and cast the mover's centre (a point) at it.
     const Circle grown{target.center, mover.radius + target.radius};
     Hit hit = castAgainstCircle(mover.center, displacement, grown);
@@ -106,7 +94,7 @@ Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::F
         return Hit{};
     const sf::FloatRect b = normalised(box);
     if (circleVsBox(mover, b))
-        return fromContact(circleVsBoxContact(mover, b));
+        return startedInsideHit(circleVsBoxContact(mover, b));
 
     // [slide:swept-circle-box]
     // The rounded box is the union of a wide slab, a tall slab and four corner circles. The
