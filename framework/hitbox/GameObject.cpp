@@ -91,24 +91,15 @@ sf::FloatRect GameObject::getCollisionBox() const
 // [slide:bounding-circle-radius]
 hitbox::Circle GameObject::getBoundingCircle() const
 {
-    const sf::Vector2f scale = getScale();
-    const float smallerScale = std::fmin(std::fabs(scale.x), std::fabs(scale.y));
-    sf::Vector2f localCenter;
-    float localRadius = 0.f;
-    if (hasOwnCircle)
-    {
-        localCenter = circleCenter;
-        localRadius = circleRadius;
-    }
-    else
-    {
-        // The inscribed circle: the fix for the old framework, which took the radius from
-        // the shape's width and the centre from its top-left corner.
-        const sf::FloatRect box = hitbox::normalised(getLocalCollisionBox());
-        localCenter = hitbox::centerOf(box);
-        localRadius = std::fmin(box.width, box.height) / 2.f;
-    }
-    return {getTransform().transformPoint(localCenter + getOrigin()), localRadius * smallerScale};
+    const sf::Vector2f scale(std::fabs(getScale().x), std::fabs(getScale().y));
+    if (hasOwnCircle) // a circle stretched one way is an ellipse: keep the one inside it
+        return {getTransform().transformPoint(circleCenter + getOrigin()),
+                circleRadius * std::fmin(scale.x, scale.y)};
+    // The circle inscribed in the (scaled) collision box: the fix for the old framework,
+    // which took the radius from the shape's width and the centre from its top-left corner.
+    const sf::FloatRect box = hitbox::normalised(getLocalCollisionBox());
+    const float radius = std::fmin(box.width * scale.x, box.height * scale.y) / 2.f;
+    return {getTransform().transformPoint(hitbox::centerOf(box) + getOrigin()), radius};
 }
 // [/slide]
 

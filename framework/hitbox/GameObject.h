@@ -58,7 +58,8 @@ public:
     sf::FloatRect getLocalCollisionBox() const;
 
     // The bounding circle in world coordinates. Default: the circle inscribed in the
-    // collision box (centre of the box, radius half its shorter side).
+    // collision box (centre of the box, radius half its shorter side, after scaling; a
+    // circle set with setBoundingCircle scales by the smaller of the two scales).
     hitbox::Circle getBoundingCircle() const;
     // A circle measured from the object's position (its origin point), like the box.
     void setBoundingCircle(sf::Vector2f centerFromOrigin, float radius);

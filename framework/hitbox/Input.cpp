@@ -83,8 +83,12 @@ sf::Vector2f Input::getMousePosition() const
 
 void Input::press(Button& button, bool down)
 {
+    // A click shorter than a frame (a touchpad tap) is both pressed and released this frame.
     if (down && button.state == UP)
+    {
         button.state = PRESSED;
+        button.pressed = true;
+    }
     if (!down && button.state != UP)
     {
         button.state = UP;
@@ -117,6 +121,8 @@ void Input::setLeftMouse(MouseState state)
     // Old lab code reports a release as setLeftMouse(UP): count it as one.
     if (state == UP && leftButton.state != UP)
         leftButton.released = true;
+    if (state != UP) // PRESSED says it went down; DOWN says it is held (no press this frame)
+        leftButton.pressed = state == PRESSED;
     leftButton.state = state;
 }
 
@@ -127,7 +133,7 @@ bool Input::isLeftMouseDown() const
 
 bool Input::isLeftMousePressed() const
 {
-    return leftButton.state == PRESSED;
+    return leftButton.pressed;
 }
 
 bool Input::isLeftMouseReleased() const
@@ -140,6 +146,8 @@ void Input::setRightMouse(MouseState state)
     // Old lab code reports a release as setRightMouse(UP): count it as one.
     if (state == UP && rightButton.state != UP)
         rightButton.released = true;
+    if (state != UP)
+        rightButton.pressed = state == PRESSED;
     rightButton.state = state;
 }
 
@@ -150,7 +158,7 @@ bool Input::isRightMouseDown() const
 
 bool Input::isRightMousePressed() const
 {
-    return rightButton.state == PRESSED;
+    return rightButton.pressed;
 }
 
 bool Input::isRightMouseReleased() const
@@ -184,6 +192,7 @@ void Input::update()
     {
         if (button->state == PRESSED)
             button->state = DOWN;
+        button->pressed = false;
         button->released = false;
     }
     mouseWheel = 0.f;

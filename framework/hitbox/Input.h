@@ -69,7 +69,8 @@ private:
     struct Button
     {
         MouseState state = UP;
-        bool released = false;
+        bool pressed = false;  // went down this frame (stays true if it also went up again)
+        bool released = false; // went up this frame
     };
     static void press(Button& button, bool down);
 

@@ -149,6 +149,12 @@ TEST(GameObject, DefaultCircleUsesTheShorterSideAndTheScale)
     EXPECT_EQ(object.getBoundingCircle().center, sf::Vector2f(30.f, 10.f));
     object.setScale(2.f, 2.f);
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 20.f);
+    // Stretched one way: still the circle inside the world box, whichever side is shorter.
+    object.setScale(0.1f, 1.f); // a 6 x 20 box
+    EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 3.f);
+    object.setScale(1.f, 3.f); // a 60 x 60 box
+    EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 30.f);
+    EXPECT_EQ(object.getCollisionBox(), sf::FloatRect(0.f, 0.f, 60.f, 60.f));
 }
 
 TEST(GameObject, ConfiguredCircleIsMeasuredFromTheOriginPoint)

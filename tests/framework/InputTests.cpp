@@ -86,6 +86,32 @@ TEST(Input, MouseButtonsOldAndNewStyle)
     EXPECT_FALSE(input.isRightMousePressed());
 }
 
+TEST(Input, AClickShorterThanAFrameIsStillAPressAndARelease)
+{
+    // A touchpad tap: the button goes down and up again before the level reads the input.
+    Input input;
+    input.setMouseLDown(true);
+    input.setMouseLDown(false);
+    EXPECT_TRUE(input.isLeftMousePressed());
+    EXPECT_TRUE(input.isLeftMouseReleased());
+    EXPECT_FALSE(input.isLeftMouseDown());
+    input.update();
+    EXPECT_FALSE(input.isLeftMousePressed());
+    EXPECT_FALSE(input.isLeftMouseReleased());
+
+    // The old framework's style: PRESSED then UP in one frame.
+    input.setRightMouse(Input::PRESSED);
+    input.setRightMouse(Input::UP);
+    EXPECT_TRUE(input.isRightMousePressed());
+    EXPECT_TRUE(input.isRightMouseReleased());
+    // Old code may mark a press as handled by setting DOWN: no press any more.
+    input.update();
+    input.setLeftMouse(Input::PRESSED);
+    input.setLeftMouse(Input::DOWN);
+    EXPECT_FALSE(input.isLeftMousePressed());
+    EXPECT_TRUE(input.isLeftMouseDown());
+}
+
 TEST(Input, ReleaseAllLetsGoOfHeldKeys)
 {
     // Focus lost while a key is held: its "up" event never comes.

@@ -234,6 +234,33 @@ TEST(CircleVsCircleContact, SameCentrePushesTowardsMinusX)
     EXPECT_FLOAT_EQ(contact.depth, 7.f);
 }
 
+TEST(CircleVsCircleContact, EveryHitHasADepthAboveZeroEvenWhenNearlyTouching)
+{
+    // The yes/no test and the depth round differently; a hit must never say "depth 0".
+    const Contact example = hitbox::circleVsCircleContact(
+        {{45.182251f, 950.279297f}, 48.755249f}, {{33.8508224f, 1024.47742f}, 26.3031464f});
+    EXPECT_TRUE(!example.hit || example.depth > 0.f) << "depth " << example.depth;
+    std::mt19937 random(99);
+    std::uniform_real_distribution<float> unit(0.f, 1.f);
+    int hits = 0;
+    int hitsWithoutDepth = 0;
+    for (int sample = 0; sample < 100000; ++sample)
+    {
+        const Circle a{{2000.f * unit(random) - 1000.f, 2000.f * unit(random) - 1000.f},
+                       100.f * unit(random)};
+        const float angle = 6.2831853f * unit(random);
+        const float distance = a.radius + 100.f * unit(random);
+        const Circle b{
+            {a.center.x + distance * std::cos(angle), a.center.y + distance * std::sin(angle)},
+            distance - a.radius}; // touching, give or take rounding
+        const Contact contact = hitbox::circleVsCircleContact(a, b);
+        hits += contact.hit;
+        hitsWithoutDepth += contact.hit && !(contact.depth > 0.f);
+    }
+    EXPECT_GT(hits, 0); // rounding does put some of them just inside
+    EXPECT_EQ(hitsWithoutDepth, 0);
+}
+
 // ---- Circle vs box -----------------------------------------------------------------------
 
 TEST(CircleVsBox, NearAFaceAndNearACorner)

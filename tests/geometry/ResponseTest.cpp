@@ -133,6 +133,11 @@ TEST(ElasticCollision, SeparatingOrInvalidMassesChangeNothing)
     const auto nan = hitbox::elasticCollision({100.f, 0.f}, std::numeric_limits<float>::quiet_NaN(),
                                               {-50.f, 0.f}, 1.f, {-1.f, 0.f});
     EXPECT_EQ(nan.second, sf::Vector2f(-50.f, 0.f));
+    // 1 / 1e-40 overflows to infinity in float: unchanged, not NaN.
+    const auto tiny =
+        hitbox::elasticCollision({100.f, 0.f}, 1e-40f, {-50.f, 0.f}, 1.f, {-1.f, 0.f});
+    EXPECT_EQ(tiny.first, sf::Vector2f(100.f, 0.f));
+    EXPECT_EQ(tiny.second, sf::Vector2f(-50.f, 0.f));
 }
 
 TEST(ElasticCollision, RestitutionZeroLeavesThemMovingTogether)

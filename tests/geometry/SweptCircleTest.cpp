@@ -124,6 +124,9 @@ TEST(SegmentVsCircle, ZeroRadiusCircleIsNeverHit)
 {
     // A segment and a point have no area to share, even straight through it.
     EXPECT_FALSE(segmentVsCircle({0.f, 100.f}, {200.f, 100.f}, Circle{{100.f, 100.f}, 0.f}));
+    // Nearly through it, where rounding in the quadratic once reported a hit.
+    EXPECT_FALSE(segmentVsCircle({-3.40649414f, 32.1486053f}, {-1.23783875f, 77.7040863f},
+                                 Circle{{-2.0381062f, 60.8934097f}, 0.f}));
 }
 
 TEST(SegmentVsCircle, NegativeRadiusNaNOrInfinityNeverHits)
@@ -323,6 +326,12 @@ TEST(SweepCircleVsBox, ZeroRadiusIsTheSegmentTest)
     EXPECT_EQ(circle.time, segment.time);
     EXPECT_EQ(circle.normal, segment.normal);
     EXPECT_FALSE(sweepCircleVsBox(Circle{{0.f, 0.f}, 0.f}, {200.f, 0.f}, wall)); // along an edge
+    // Passing just left of a corner (checked with exact fractions): the segment test misses,
+    // so the zero-radius circle must too (its corner circles have no area).
+    const sf::FloatRect box(37.2179489f, 19.766571f, 41.850708f, 12.6833782f);
+    const sf::Vector2f start(28.6879559f, 101.916504f), move(10.1210279f, -97.4727402f);
+    EXPECT_FALSE(hitbox::segmentVsBox(start, start + move, box));
+    EXPECT_FALSE(sweepCircleVsBox(Circle{start, 0.f}, move, box));
 }
 
 TEST(SweepCircleVsBox, ZeroSizeBoxIsAPointToHit)

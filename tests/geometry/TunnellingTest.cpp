@@ -131,3 +131,33 @@ TEST(SpeculativeVelocity, NoHitOrStartingInsideKeepsTheVelocity)
     EXPECT_EQ(hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, 0.f, {paper}),
               sf::Vector2f(1.0e4f, 0.f));
 }
+
+TEST(SpeculativeVelocity, NeverEndsInsideTheWallSoNoLaterStepPassesThrough)
+{
+    // Moving to the exact time of impact can round to a hair inside the wall; a box that
+    // starts inside keeps its full velocity, so that would let it pass straight through.
+    std::mt19937 random(2024);
+    std::uniform_real_distribution<float> unit(0.f, 1.f);
+    const float frame = 1.f / 60.f;
+    int endedInside = 0;
+    int passedThrough = 0;
+    for (int sample = 0; sample < 20000; ++sample)
+    {
+        sf::FloatRect mover(100.f * unit(random), 100.f * unit(random), 1.f + 19.f * unit(random),
+                            1.f + 19.f * unit(random));
+        // Tall enough that no path can go round it: passing it means passing through it.
+        const sf::FloatRect wall(150.f + 150.f * unit(random), -300.f, 1.f + 19.f * unit(random),
+                                 700.f);
+        const sf::Vector2f velocity(100.f + 19900.f * unit(random), 4000.f * unit(random) - 2000.f);
+        for (int step = 0; step < 3; ++step)
+        {
+            const sf::Vector2f kept = hitbox::speculativeVelocity(mover, velocity, frame, {wall});
+            mover.left += kept.x * frame;
+            mover.top += kept.y * frame;
+            endedInside += hitbox::boxVsBox(mover, wall);
+        }
+        passedThrough += mover.left >= wall.left + wall.width;
+    }
+    EXPECT_EQ(endedInside, 0);
+    EXPECT_EQ(passedThrough, 0);
+}

@@ -1,6 +1,7 @@
 #include "hitbox/geometry/Overlap.h"
 
 #include <cmath>
+#include <limits>
 
 namespace hitbox
 {
@@ -22,6 +23,15 @@ sf::Vector2f closestPointInBox(sf::Vector2f point, const sf::FloatRect& box)
 {
     return {std::fmin(std::fmax(point.x, box.left), rightOf(box)),
             std::fmin(std::fmax(point.y, box.top), bottomOf(box))};
+}
+
+// The depth of an overlap the yes/no test found, worked out in double from the same float
+// numbers. Rounding can make a real but tiny overlap come out as 0 in float; a hit must
+// still have a depth above 0 (Shapes.h), so it becomes the smallest float above 0.
+float overlapDepth(float reach, float distanceSquared)
+{
+    const double depth = double(reach) - std::sqrt(double(distanceSquared));
+    return std::fmax(static_cast<float>(depth), std::numeric_limits<float>::denorm_min());
 }
 
 } // namespace
@@ -135,7 +145,7 @@ Contact circleVsCircleContact(const Circle& a, const Circle& b)
     const float distance = std::sqrt(lengthSquared(between));
     // Same centre: no direction is better than another; push A towards -x (documented).
     contact.normal = distance > 0.f ? between / distance : sf::Vector2f(-1.f, 0.f);
-    contact.depth = a.radius + b.radius - distance;
+    contact.depth = overlapDepth(a.radius + b.radius, lengthSquared(between));
     contact.point = b.center + contact.normal * b.radius;
     contact.hit = true;
     return contact;
@@ -157,7 +167,7 @@ Contact circleVsBoxContact(const Circle& circle, const sf::FloatRect& box)
         // Centre outside the box: push along the line from the nearest box point.
         const float distance = std::sqrt(distanceSquared);
         contact.normal = fromBox / distance;
-        contact.depth = circle.radius - distance;
+        contact.depth = overlapDepth(circle.radius, distanceSquared);
         contact.point = closest;
         return contact;
     }

@@ -23,7 +23,8 @@
 //   - Ties: among axes with the same overlap, the more horizontal axis wins (so the x axis,
 //     as in boxVsBoxContact), then the first tried (A's edges in order, then B's). On one
 //     axis, equal pushes either way go to the negative direction (left, up). So two
-//     axis-aligned boxes get exactly boxVsBoxContact's normal and depth.
+//     axis-aligned boxes get boxVsBoxContact's normal, and its depth up to the last bit of
+//     rounding (exactly its depth when the coordinates are whole numbers).
 //   - Contact normal: out of B towards A (Shapes.h), unit length; depth in pixels.
 //     Contact point: the vertex that reaches deepest, moved onto B's surface (approximate for
 //     edge-to-edge contact: one point of the touching stretch, not its middle).

@@ -51,6 +51,8 @@ VelocityPair elasticCollision(sf::Vector2f firstVelocity, float firstMass,
     const float secondInverse = 1.f / secondMass;
     if (firstInverse + secondInverse == 0.f)
         return unchanged; // two immovable walls
+    if (!std::isfinite(firstInverse) || !std::isfinite(secondInverse))
+        return unchanged; // a mass so small (below about 1e-38) that 1 / mass overflows
     // How fast the first closes in on the second along the normal (< 0 when approaching).
     const float closing = dot(firstVelocity - secondVelocity, normal);
     if (!(closing < 0.f))

@@ -41,7 +41,8 @@ sf::Vector2f pushOutOffset(const Contact& contact);
 // second towards the first, as a Contact's normal with A = first). Momentum is kept and, with
 // restitution 1, so is kinetic energy (seed 003's elastic response). Only the speeds along
 // the normal change. Masses in any unit (only their ratio matters): an infinite mass is an
-// immovable wall; a mass <= 0 or NaN, or bodies already moving apart, change nothing.
+// immovable wall; a mass <= 0, NaN or too small to invert in float (below about 1e-38), or
+// bodies already moving apart, change nothing.
 struct VelocityPair
 {
     sf::Vector2f first;

@@ -10,8 +10,11 @@
 //
 // EDGE RULES (the same "share area" rule as Overlap.h, followed through time):
 //   - A sweep hits when the mover would come to SHARE AREA with the target during the step
-//     (0 <= t < 1). The reported `time` is when they first touch: after the response the
-//     mover rests exactly touching, and touching is not a collision.
+//     (0 <= t < 1). The reported `time` is when they first touch, so moving there leaves
+//     the mover touching, and touching is not a collision. In floats, `start + move * time`
+//     can round to a hair inside (about one time in five in random tests); moveBoxAndSlide
+//     (Resolve.h) and speculativeVelocity (Tunnelling.h) correct for that, so use them, or
+//     expect the next sweep to report startedInside with a tiny depth.
 //   - Sliding along a surface while exactly touching: no hit.
 //   - Moving away from a touching contact: no hit.
 //   - Moving into a surface from exact contact: hit at time 0, startedInside == false.

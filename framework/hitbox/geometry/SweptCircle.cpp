@@ -46,6 +46,8 @@ double entryTime(sf::Vector2f start, sf::Vector2f move, sf::Vector2f centre, flo
 Hit castAgainstCircle(sf::Vector2f start, sf::Vector2f move, const Circle& circle)
 {
     Hit hit;
+    if (circle.radius == 0.f) // no area: a point never gets strictly inside (rounding in the
+        return hit;           // quadratic could otherwise report a graze as a hit)
     const double time = entryTime(start, move, circle.center, circle.radius);
     if (time < 0.0)
         return hit;

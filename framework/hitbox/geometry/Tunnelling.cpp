@@ -111,6 +111,32 @@ sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f veloci
         if (hit.hit && !hit.startedInside)
             earliest = std::fmin(earliest, hit.time);
     }
+    // Moving to exactly the time of impact can round to a hair inside the solid. That must
+    // not happen: next step the box would count as "already inside", keep its full velocity
+    // and pass through. So if it does, halve the interval between time 0 (not inside) and
+    // that time until the latest time that leaves the box outside every solid it was not
+    // already overlapping is found, to the last bit of the float.
+    auto endsInsideASolid = [&](float time)
+    {
+        const sf::FloatRect moved = movedBy(mover, velocity * time * dt);
+        for (const sf::FloatRect& solid : solids)
+            if (boxVsBox(moved, solid) && !boxVsBox(mover, solid))
+                return true;
+        return false;
+    };
+    if (endsInsideASolid(earliest))
+    {
+        float outside = 0.f, inside = earliest;
+        for (float middle = inside / 2.f; middle > outside && middle < inside;
+             middle = outside + (inside - outside) / 2.f)
+        {
+            if (endsInsideASolid(middle))
+                inside = middle;
+            else
+                outside = middle;
+        }
+        earliest = outside;
+    }
     return velocity * earliest;
 }
 

@@ -26,7 +26,8 @@ namespace hitbox
 // Note: clipping a corner diagonally can be missed at any speed; only a sweep catches that.
 bool canTunnel(const sf::FloatRect& mover, sf::Vector2f displacement, const sf::FloatRect& target);
 // Circles: the move is at least the two diameters added, and the mover's path (a capsule)
-// reaches the target.
+// reaches the target. That is the head-on case: passing off-centre crosses a shorter chord,
+// so a shorter move can already skip it (discreteTestMisses or a sweep catches that).
 bool canTunnel(const Circle& mover, sf::Vector2f displacement, const Circle& target);
 // A circle against a box: the circle counts as its bounding box (2r by 2r).
 bool canTunnel(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& target);
@@ -44,8 +45,10 @@ sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement);
 sf::FloatRect sweptBounds(const Circle& circle, sf::Vector2f displacement);
 
 // Speculative contacts (seed 000), simplified: the velocity scaled down so that moving by
-// velocity * dt ends exactly touching the first solid the box would hit (the whole velocity
-// is scaled, so there is no slide; see Resolve.h for that). A box already overlapping a solid
+// velocity * dt ends touching the first solid the box would hit, never inside it (where
+// rounding would put it a hair inside, the move is shortened by a float step or two; the box
+// is then apart by at most that much). The whole velocity is scaled, so there is no slide;
+// see Resolve.h for that. A box already overlapping a solid
 // keeps its velocity (pushing out is a separate job). No hit: unchanged.
 sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f velocity, float dt,
                                  const std::vector<sf::FloatRect>& solids);
