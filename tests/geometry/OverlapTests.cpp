@@ -150,6 +150,29 @@ TEST(BoxVsBox, NegativeSizesAreReadLikeSfml)
     EXPECT_FALSE(hitbox::boxVsBox(flipped, {10.f, 0.f, 10.f, 10.f}));
 }
 
+TEST(BoxVsBox, AFlippedBoxTouchingAnotherStillOnlyTouches)
+{
+    // Flipping a negative width once moved the edge by a rounding error, so this pair
+    // "overlapped" by 0.0000076 px while SFML said they only touch.
+    const sf::FloatRect flipped(-75.5923538f, 0.f, -30.5037346f, 10.f);
+    const sf::FloatRect after(-75.5923538f, 0.f, 5.f, 10.f);
+    EXPECT_FALSE(hitbox::boxVsBox(flipped, after));
+    EXPECT_EQ(hitbox::rightOf(hitbox::normalised(flipped)), flipped.left);
+
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-1000.f, 1000.f), size(0.01f, 300.f);
+    int disagreements = 0;
+    for (int sample = 0; sample < 100000; ++sample)
+    {
+        const float edge = coordinate(random);
+        const sf::FloatRect first(edge, 0.f, -size(random), 10.f); // ends at `edge`
+        const sf::FloatRect second(edge, 0.f, size(random), 10.f); // starts there
+        disagreements += hitbox::boxVsBox(first, second) != first.intersects(second);
+        disagreements += hitbox::boxVsBox(first, second);
+    }
+    EXPECT_EQ(disagreements, 0);
+}
+
 TEST(BoxVsBox, NanOrInfinityNeverCollides)
 {
     EXPECT_FALSE(hitbox::boxVsBox({notANumber, 0.f, 10.f, 10.f}, {0.f, 0.f, 10.f, 10.f}));

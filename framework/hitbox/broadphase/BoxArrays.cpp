@@ -37,8 +37,8 @@ void BoxArrays::load(const std::vector<BroadphaseItem>& items)
         const float top = box.height < 0.f ? box.top + box.height : box.top;
         minX[i] = left;
         minY[i] = top;
-        maxX[i] = left + (box.width < 0.f ? -box.width : box.width);
-        maxY[i] = top + (box.height < 0.f ? -box.height : box.height);
+        maxX[i] = left + (box.width < 0.f ? sizeReaching(left, box.left) : box.width);
+        maxY[i] = top + (box.height < 0.f ? sizeReaching(top, box.top) : box.height);
     }
 }
 

@@ -10,13 +10,13 @@ sf::FloatRect normalised(const sf::FloatRect& box)
     sf::FloatRect result = box;
     if (result.width < 0.f)
     {
-        result.left += result.width;
-        result.width = -result.width;
+        result.left = box.left + box.width;
+        result.width = sizeReaching(result.left, box.left);
     }
     if (result.height < 0.f)
     {
-        result.top += result.height;
-        result.height = -result.height;
+        result.top = box.top + box.height;
+        result.height = sizeReaching(result.top, box.top);
     }
     return result;
 }

@@ -8,6 +8,8 @@
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/System/Vector2.hpp>
 
+#include <cmath>
+
 namespace hitbox
 {
 
@@ -33,8 +35,20 @@ struct Contact
 };
 
 // Box helpers. A box with a negative width or height spans from left + width to left
-// (the way sf::Rect::intersects reads it); normalised() turns it into the usual form.
+// (the way sf::Rect::intersects reads it); normalised() turns it into the usual form, whose
+// right edge (left + width) is the original left to the last bit (see sizeReaching).
 sf::FloatRect normalised(const sf::FloatRect& box);
+// The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
+// when rounding would make from + size miss `to`. Without it a flipped box's edge could move
+// by a rounding error, and boxes that only touch would overlap. Inline: the broadphase runs
+// it for every box with a negative size, and must get the same bits as normalised().
+inline float sizeReaching(float from, float to)
+{
+    float size = to - from;
+    for (int nudge = 0; nudge < 4 && from + size != to; ++nudge)
+        size = std::nextafter(size, from + size < to ? HUGE_VALF : -HUGE_VALF);
+    return size;
+}
 sf::Vector2f centerOf(const sf::FloatRect& box);
 float rightOf(const sf::FloatRect& box);
 float bottomOf(const sf::FloatRect& box);
