@@ -115,7 +115,11 @@ builds the lab's grading tests against your code, runs them and prints, for each
 how many of its tests pass and fail (JUnit XML in `build/debug/grade-results/`). A task is
 done when none of its tests fail. Each test's name says what it checks, e.g.
 `Task2BounceOffWalls.BallNeverLeavesTheWindow`; the full output is in
-`build/debug/grade-results/<lab>.log`. You can also run one lab's tests directly:
+`build/debug/grade-results/<lab>.log`. A test that crashes, or runs longer than 60 seconds
+(an endless loop; `LAB_TEST_TIMEOUT=10 ./scripts/grade.sh` waits 10 instead), counts as
+failed and the table says so. A lab that does not compile shows "did not build" (the
+compiler's messages are in `build/debug/grade-results/<lab>.build.log`); the other labs
+are still graded. You can also run one lab's tests directly:
 
     cmake --build --preset debug --target lab01_point_in_box_tests
     ./build/debug/tests/labs/01_point_in_box/lab01_point_in_box_tests
