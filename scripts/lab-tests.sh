@@ -28,10 +28,10 @@ lab_folder() {
 }
 
 # lab_tasks FOLDER: the task numbers marked "// BEGIN TASK n:" in the folder's sources
-# (or "// TASK n:" in a handout), sorted, one a line.
+# (or "// TASK n:" in a handout), sorted, one a line. None (a finished handout) is no error.
 lab_tasks() {
-    grep -rhoE '//[[:space:]]*(BEGIN )?TASK [0-9]+:' "$1" --include='*.cpp' --include='*.h' --include='*.hpp' |
-        grep -oE '[0-9]+' | sort -n -u
+    { grep -rhoE '//[[:space:]]*(BEGIN )?TASK [0-9]+:' "$1" --include='*.cpp' --include='*.h' --include='*.hpp' || true; } |
+        { grep -oE '[0-9]+' || true; } | sort -n -u
 }
 
 # find_test_program BUILD_DIR NAME: the path of the built program NAME under BUILD_DIR.
