@@ -28,10 +28,10 @@ lab_folder() {
 }
 
 # lab_tasks FOLDER: the task numbers marked "// BEGIN TASK n:" in the folder's sources
-# (or "// TASK n:" in a handout), sorted, one a line.
+# (or "// TASK n:" in a handout), sorted, one a line. None (a finished handout) is no error.
 lab_tasks() {
-    grep -rhoE '//[[:space:]]*(BEGIN )?TASK [0-9]+:' "$1" --include='*.cpp' --include='*.h' --include='*.hpp' |
-        grep -oE '[0-9]+' | sort -n -u
+    { grep -rhoE '//[[:space:]]*(BEGIN )?TASK [0-9]+:' "$1" --include='*.cpp' --include='*.h' --include='*.hpp' || true; } |
+        { grep -oE '[0-9]+' || true; } | sort -n -u
 }
 
 # find_test_program BUILD_DIR NAME: the path of the built program NAME under BUILD_DIR.
@@ -41,18 +41,20 @@ find_test_program() {
 
 # run_gtest PROGRAM RESULTS_FILE [XML_FILE]
 # Runs every test of a GoogleTest program and writes one line per test to RESULTS_FILE:
-#     PASS Suite.Name      or      FAIL Suite.Name
-# A test that crashes the program or hangs (LAB_TEST_TIMEOUT) counts as failed, and the
-# other tests run again without it, so one crash never hides the rest. The program's
-# output goes to RESULTS_FILE.log. With XML_FILE, GoogleTest writes JUnit XML there; crashed
-# tests are added to XML_FILE.crashed.xml (also JUnit). Returns 0 when every test passed.
+#     PASS Suite.Name      or      FAIL Suite.Name      (FAIL Suite.Name hung|crashed)
+# A test that crashes the program or hangs (runs longer than LAB_TEST_TIMEOUT seconds)
+# counts as failed, and the other tests run again without it, so one crash never hides the
+# rest. The program's output goes to RESULTS_FILE.log. With XML_FILE, writes JUnit XML there
+# for every test, the crashed and hung ones included (as failures saying "crashed ..." or
+# "hung: timed out after N s"). Returns 0 when every test passed.
 run_gtest() {
     local program=$1 results=$2 xml=${3:-}
-    local excluded="" filter status crashed output
+    local excluded="" filter status crashed output why
     : >"$results"
     : >"$results.log"
-    rm -f "${xml:+$xml.crashed.xml}"
-    local crashed_list=()
+    # A result left from an earlier run must never stand in for this one.
+    [[ -z $xml ]] || rm -f "$xml" "$xml.crashed.xml"
+    local crashed_names=() crashed_whys=() crashed_outputs=()
     while true; do
         filter="*${excluded:+-$excluded}"
         output=$(mktemp)
@@ -72,39 +74,95 @@ run_gtest() {
                 "$output" >>"$results"
             if [[ $status -gt 1 ]]; then
                 # It failed outside any test (before the first one, or while exiting).
-                echo "run_gtest: $program stopped with exit status $status outside a test" >>"$results.log"
-                echo "FAIL WholeProgram.ExitedNormally" >>"$results"
+                why="stopped with exit status $status outside any test"
+                [[ $status -eq 124 || $status -eq 137 ]] && why="hung outside any test: timed out after ${LAB_TEST_TIMEOUT} s"
+                echo "run_gtest: $program $why" >>"$results.log"
+                echo "FAIL WholeProgram.ExitedNormally crashed" >>"$results"
+                crashed_names+=("WholeProgram.ExitedNormally")
+                crashed_whys+=("$why")
+                crashed_outputs+=("$(tail -n 40 "$output")")
             fi
             rm -f "$output"
             break
         fi
-        rm -f "$output"
-        local why="crashed (exit status $status)"
-        [[ $status -eq 124 || $status -eq 137 ]] && why="did not finish within ${LAB_TEST_TIMEOUT} s"
+        if [[ $status -eq 124 || $status -eq 137 ]]; then
+            why="hung: timed out after ${LAB_TEST_TIMEOUT} s"
+            echo "FAIL $crashed hung" >>"$results"
+        else
+            why="crashed (exit status $status)"
+            # 128 + n: killed by signal n (SIGSEGV, SIGABRT, ...).
+            [[ $status -gt 128 ]] && why="crashed (exit status $status: SIG$(kill -l $((status - 128)) 2>/dev/null || echo "?"))"
+            echo "FAIL $crashed crashed" >>"$results"
+        fi
         echo "run_gtest: $crashed $why; running the other tests again without it" >>"$results.log"
-        crashed_list+=("$crashed|$why")
+        echo "  $crashed $why; running the other tests again without it" >&2
+        crashed_names+=("$crashed")
+        crashed_whys+=("$why")
+        # What the test printed before it stopped (from its RUN line on).
+        crashed_outputs+=("$(awk -v name="$crashed" '$0 == "[ RUN      ] " name { on = 1 } on' "$output" | tail -n 40)")
+        rm -f "$output"
         excluded="${excluded:+$excluded:}$crashed"
     done
-    local entry
-    for entry in "${crashed_list[@]}"; do
-        echo "FAIL ${entry%%|*}" >>"$results"
-    done
-    if [[ -n $xml && ${#crashed_list[@]} -gt 0 ]]; then
-        {
-            echo '<?xml version="1.0" encoding="UTF-8"?>'
-            echo "<testsuites name=\"crashed\" tests=\"${#crashed_list[@]}\" failures=\"${#crashed_list[@]}\">"
-            for entry in "${crashed_list[@]}"; do
-                local name=${entry%%|*}
-                echo "  <testsuite name=\"${name%%.*}\" tests=\"1\" failures=\"1\">"
-                echo "    <testcase name=\"${name#*.}\" classname=\"${name%%.*}\">"
-                echo "      <failure message=\"${entry#*|}\"/>"
-                echo "    </testcase>"
-                echo "  </testsuite>"
-            done
-            echo "</testsuites>"
-        } >"$xml.crashed.xml"
+    if [[ -n $xml ]]; then
+        [[ -f $xml ]] || write_empty_junit "$xml"
+        local i
+        for i in "${!crashed_names[@]}"; do
+            add_junit_failure "$xml" "${crashed_names[$i]}" "${crashed_whys[$i]}" "${crashed_outputs[$i]}"
+        done
     fi
     ! grep -q '^FAIL ' "$results"
+}
+
+# write_empty_junit XML_FILE: a JUnit file with no tests (for when none could run).
+write_empty_junit() {
+    printf '%s\n' '<?xml version="1.0" encoding="UTF-8"?>' \
+        '<testsuites tests="0" failures="0" disabled="0" errors="0" name="AllTests">' \
+        '</testsuites>' >"$1"
+}
+
+# add_junit_failure XML_FILE SUITE.NAME MESSAGE [DETAILS]: adds a failed test to a JUnit
+# file GoogleTest (or write_empty_junit) wrote, in a <testsuite> of its own, and counts it
+# in the file's totals, so tools that read the file see it like any other failed test.
+add_junit_failure() {
+    local xml=$1 name=$2 message=$3 details=${4:-}
+    local suite=${name%%.*} test=${name#*.}
+    local escaped_details=${details//]]>/]] >}
+    local case_xml
+    case_xml=$(
+        echo "  <testsuite name=\"$(xml_escape "$suite")\" tests=\"1\" failures=\"1\" disabled=\"0\" skipped=\"0\" errors=\"0\" time=\"0\">"
+        echo "    <testcase name=\"$(xml_escape "$test")\" status=\"run\" result=\"completed\" time=\"0\" classname=\"$(xml_escape "$suite")\">"
+        echo "      <failure message=\"$(xml_escape "$message")\" type=\"\"><![CDATA[$message"
+        [[ -z $escaped_details ]] || printf '%s\n' "$escaped_details"
+        echo "]]></failure>"
+        echo "    </testcase>"
+        echo "  </testsuite>"
+    )
+    local updated
+    updated=$(mktemp)
+    CASE_XML=$case_xml awk '
+        # The totals: one more test, one more failure.
+        /<testsuites / && !done_totals {
+            if (match($0, / tests="[0-9]+"/)) {
+                n = substr($0, RSTART + 8, RLENGTH - 9) + 1
+                $0 = substr($0, 1, RSTART - 1) " tests=\"" n "\"" substr($0, RSTART + RLENGTH)
+            }
+            if (match($0, / failures="[0-9]+"/)) {
+                n = substr($0, RSTART + 11, RLENGTH - 12) + 1
+                $0 = substr($0, 1, RSTART - 1) " failures=\"" n "\"" substr($0, RSTART + RLENGTH)
+            }
+            done_totals = 1
+        }
+        /^<\/testsuites>/ { print ENVIRON["CASE_XML"] }
+        { print }' "$xml" >"$updated"
+    mv "$updated" "$xml"
+}
+
+# xml_escape TEXT: TEXT with & < > " escaped for an XML attribute.
+xml_escape() {
+    local text=${1//&/&amp;}
+    text=${text//</&lt;}
+    text=${text//>/&gt;}
+    printf '%s' "${text//\"/&quot;}"
 }
 
 # task_counts RESULTS_FILE TASK: prints "passed failed" for the tests of suites named
@@ -114,4 +172,21 @@ task_counts() {
         { suite = $2; sub(/\..*/, "", suite) }
         suite ~ ("^Task" task "([^0-9]|$)") { if ($1 == "PASS") passed++; else failed++ }
         END { printf "%d %d\n", passed, failed }' "$1"
+}
+
+# task_stopped RESULTS_FILE TASK: says how many tests of the task (or "-": of no task) hung
+# or crashed, e.g. "2 hung (timed out after 60 s), 1 crashed"; prints nothing when none did.
+task_stopped() {
+    awk -v task="$2" -v timeout="$LAB_TEST_TIMEOUT" '
+        { suite = $2; sub(/\..*/, "", suite) }
+        task == "-" && suite ~ /^Task[0-9]/ { next }
+        task != "-" && suite !~ ("^Task" task "([^0-9]|$)") { next }
+        $3 == "hung" { hung++ }
+        $3 == "crashed" { crashed++ }
+        END {
+            text = ""
+            if (hung) text = hung " hung (timed out after " timeout " s)"
+            if (crashed) text = text (text == "" ? "" : ", ") crashed " crashed"
+            print text
+        }' "$1"
 }

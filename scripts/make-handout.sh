@@ -45,6 +45,17 @@ keep() {
     return 1
 }
 
+# The lecture's slide markers ("// [slide:name]" and "// [/slide]" lines) mean nothing to
+# a student: they are left out of every C++ file of the handout.
+slide_marker='^[[:space:]]*//[[:space:]]*\[(slide:[^]]*|/slide)\][[:space:]]*\r?$'
+strip_slide_markers() {
+    local stripped
+    stripped=$(mktemp)
+    grep -Ev "$slide_marker" "$1" >"$stripped" || true # (grep fails on a file of markers only)
+    cat "$stripped" >"$1"
+    rm -f "$stripped"
+}
+
 mkdir -p "$out"
 copied=0
 generated=0
@@ -61,6 +72,9 @@ for file in "${files[@]}"; do
             cp -p "$file" "$out/$file"
             copied=$((copied + 1))
             ;;
+    esac
+    case $file in
+        *.cpp | *.h | *.hpp) strip_slide_markers "$out/$file" ;;
     esac
 done
 
@@ -101,7 +115,11 @@ builds the lab's grading tests against your code, runs them and prints, for each
 how many of its tests pass and fail (JUnit XML in `build/debug/grade-results/`). A task is
 done when none of its tests fail. Each test's name says what it checks, e.g.
 `Task2BounceOffWalls.BallNeverLeavesTheWindow`; the full output is in
-`build/debug/grade-results/<lab>.log`. You can also run one lab's tests directly:
+`build/debug/grade-results/<lab>.log`. A test that crashes, or runs longer than 60 seconds
+(an endless loop; `LAB_TEST_TIMEOUT=10 ./scripts/grade.sh` waits 10 instead), counts as
+failed and the table says so. A lab that does not compile shows "did not build" (the
+compiler's messages are in `build/debug/grade-results/<lab>.build.log`); the other labs
+are still graded. You can also run one lab's tests directly:
 
     cmake --build --preset debug --target lab01_point_in_box_tests
     ./build/debug/tests/labs/01_point_in_box/lab01_point_in_box_tests
@@ -153,6 +171,11 @@ done < <(awk '
 if grep -rqE '//[[:space:]]*(BEGIN|STARTER|END) TASK' "$out/labs"; then
     echo "make-handout: task markers left in the handout:" >&2
     grep -rnE '//[[:space:]]*(BEGIN|STARTER|END) TASK' "$out/labs" >&2
+    leaks=$((leaks + 1))
+fi
+if grep -rqE --include='*.cpp' --include='*.h' --include='*.hpp' "$slide_marker" "$out"; then
+    echo "make-handout: slide markers left in the handout:" >&2
+    grep -rnE --include='*.cpp' --include='*.h' --include='*.hpp' "$slide_marker" "$out" >&2
     leaks=$((leaks + 1))
 fi
 if [[ $leaks -gt 0 ]]; then

@@ -12,14 +12,20 @@
 #include <algorithm>
 #include <cmath>
 
+// The tests do not depend on the numbers at the top of Square.h (students are invited to
+// change them): each test sets up its own squares at its own speed and places them by
+// spriteSize and crateSize, so every test checks the same thing whatever those numbers are.
 namespace
 {
 
 // How far two boxes may overlap at the end of a step: the response separates them in the
 // step they meet, so only rounding is left.
 constexpr float overlapTolerance = 0.5f;
+// The speed the tests give their squares (pixels per second): slow enough that a test
+// decides when a square reaches a wall.
+constexpr float testSpeed = 220.f;
 // How far a square moves in one step.
-constexpr float stepDistance = squareSpeed * hitbox::stepSeconds;
+constexpr float stepDistance = testSpeed * hitbox::stepSeconds;
 // The see-through margin on each side of the crate.
 constexpr float margin = (spriteSize - crateSize) / 2.f;
 
@@ -32,6 +38,16 @@ SquaresLevel emptyLevel()
 {
     SquaresLevel level;
     level.removeAllSquares();
+    return level;
+}
+
+// The lecture's example: two squares on one line, flying at each other at testSpeed.
+SquaresLevel twoSquaresFlyingAtEachOther()
+{
+    SquaresLevel level = emptyLevel();
+    const sf::Vector2f world = level.getWorldSize();
+    level.addSquare({world.x * 0.25f, world.y / 2.f}, {testSpeed, 0.f});
+    level.addSquare({world.x * 0.75f, world.y / 2.f}, {-testSpeed, 0.f});
     return level;
 }
 
@@ -78,7 +94,7 @@ TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsCentredOnThePicture)
 TEST(Task2BounceTheBoxOffTheWalls, SquareNeverLeavesTheWindow)
 {
     SquaresLevel level = emptyLevel();
-    level.addSquare(middle, {squareSpeed * 1.2f, squareSpeed * 0.8f});
+    level.addSquare(middle, {testSpeed * 1.2f, testSpeed * 0.8f});
     const sf::Vector2f world = level.getWorldSize();
     for (int step = 0; step < 20 * 120; ++step)
     {
@@ -97,11 +113,13 @@ TEST(Task2BounceTheBoxOffTheWalls, TheCrateTouchesTheWallWhileTheMarginGoesPastI
     // Bounce on the box, not the sprite: at the turn the crate reaches the wall and the
     // see-through margin hangs over it.
     SquaresLevel level = emptyLevel();
-    level.addSquare(middle, {squareSpeed, 0.f});
+    level.addSquare(middle, {testSpeed, 0.f});
     const float world = level.getWorldSize().x;
+    // Long enough to reach the right wall, not the left one.
+    const float seconds = (world / 2.f - crateSize / 2.f) / testSpeed + 0.5f;
     float furthestPicture = 0.f;
     float furthestBox = 0.f;
-    for (int step = 0; step < 4 * 120; ++step)
+    for (int step = 0; step < static_cast<int>(seconds * hitbox::stepsPerSecond); ++step)
     {
         hitbox::simulate(level, 1);
         const Square& square = level.getSquare(0);
@@ -112,7 +130,7 @@ TEST(Task2BounceTheBoxOffTheWalls, TheCrateTouchesTheWallWhileTheMarginGoesPastI
     EXPECT_NEAR(furthestBox, world, 0.01f) << "the crate reaches the right edge";
     EXPECT_NEAR(furthestPicture, world + margin, 0.01f)
         << "the picture's margin goes past the edge by " << margin << " pixels";
-    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -squareSpeed) << "and it came back";
+    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -testSpeed) << "and it came back";
 }
 
 TEST(Task2BounceTheBoxOffTheWalls, SquareComesBackFromEachWallAtTheSameSpeed)
@@ -121,40 +139,51 @@ TEST(Task2BounceTheBoxOffTheWalls, SquareComesBackFromEachWallAtTheSameSpeed)
     for (sf::Vector2f direction : directions)
     {
         SquaresLevel level = emptyLevel();
-        level.addSquare(middle, direction * squareSpeed);
-        const sf::Vector2f toWall = level.getWorldSize() / 2.f;
-        run(level, std::abs(toWall.x * direction.x + toWall.y * direction.y) / squareSpeed + 0.2f);
-        EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), -direction * squareSpeed, 0.01f)
+        level.addSquare(middle, direction * testSpeed);
+        // Long enough to reach the wall it flies at, not the one across from it.
+        const sf::Vector2f toWall =
+            level.getWorldSize() / 2.f - sf::Vector2f(crateSize, crateSize) / 2.f;
+        run(level, std::abs(toWall.x * direction.x + toWall.y * direction.y) / testSpeed + 0.3f);
+        EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), -direction * testSpeed, 0.01f)
             << "a square sent towards " << labtesting::text(direction);
     }
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, HeadOnSquaresSwapVelocitiesAndNeverOverlap)
 {
-    SquaresLevel level; // the lecture's example: two squares on one line
+    SquaresLevel level = twoSquaresFlyingAtEachOther();
     float worstOverlap = 0.f;
-    bool met = false;
-    for (int step = 0; step < 3 * 120; ++step)
+    int stepsSinceTheyMet = -1;
+    // Until a quarter of a second after their crates meet: long enough to bounce, too
+    // short to reach a wall.
+    for (int step = 0; step < 4 * 120 && stepsSinceTheyMet < 30; ++step)
     {
         hitbox::simulate(level, 1);
         const float overlap =
             overlapOf(level.getSquare(0).getCollisionBox(), level.getSquare(1).getCollisionBox());
         worstOverlap = std::max(worstOverlap, overlap);
-        met = met || level.getSquare(0).getVelocity().x < 0.f;
+        const float apart = level.getSquare(1).getPosition().x - level.getSquare(0).getPosition().x;
+        if (stepsSinceTheyMet >= 0 || apart < crateSize + 1.f)
+            ++stepsSinceTheyMet;
     }
-    ASSERT_TRUE(met) << "the squares should meet and bounce within three seconds";
-    EXPECT_LE(worstOverlap, overlapTolerance);
-    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -squareSpeed);
-    EXPECT_FLOAT_EQ(level.getSquare(1).getVelocity().x, squareSpeed);
+    ASSERT_GE(stepsSinceTheyMet, 0) << "the squares should meet within four seconds";
+    EXPECT_LE(worstOverlap, overlapTolerance) << "after a step the crates may not overlap";
+    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -testSpeed)
+        << "the left square goes back left";
+    EXPECT_FLOAT_EQ(level.getSquare(1).getVelocity().x, testSpeed)
+        << "the right square goes back right";
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, SquaresBounceOnTheirCratesNotTheirPictures)
 {
     // At the closest approach the crates touch: the centres are one crate apart, and the
     // see-through margins overlap.
-    SquaresLevel level;
+    SquaresLevel level = twoSquaresFlyingAtEachOther();
+    const float world = level.getWorldSize().x;
+    // Long enough to meet and part, not to reach a wall.
+    const float seconds = (world / 2.f - crateSize) / (2.f * testSpeed) + 0.3f;
     float closest = 10000.f;
-    for (int step = 0; step < 3 * 120; ++step)
+    for (int step = 0; step < static_cast<int>(seconds * hitbox::stepsPerSecond); ++step)
     {
         hitbox::simulate(level, 1);
         closest = std::min(closest, std::abs(level.getSquare(1).getPosition().x -
@@ -169,7 +198,7 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, BothSquaresAreToldAboutTheHit)
 {
     SquaresLevel level = emptyLevel();
     level.addSquare(middle, {});
-    level.addSquare(middle + sf::Vector2f{crateSize - 10.f, 5.f}, {});
+    level.addSquare(middle + sf::Vector2f{0.8f, 0.1f} * crateSize, {}); // crates overlapping
     hitbox::simulate(level, 1);
     EXPECT_EQ(level.getSquare(0).getHitCount(), 1);
     EXPECT_EQ(level.getSquare(1).getHitCount(), 1);
@@ -179,19 +208,34 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, LandingOnTopChangesOnlyTheUpDownVeloc
 {
     // A square falls onto one at rest, a little to the side: they meet top to bottom, so
     // the sideways velocity is kept and the downward one is passed on.
+    const float gap = 40.f; // between the crates
+    const sf::Vector2f falling{0.1f * testSpeed, testSpeed};
     SquaresLevel level = emptyLevel();
-    level.addSquare(middle - sf::Vector2f{20.f, 150.f}, {30.f, squareSpeed});
+    level.addSquare(middle - sf::Vector2f{0.2f * crateSize, crateSize + gap}, falling);
     level.addSquare(middle, {});
-    run(level, 0.5f);
-    EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), sf::Vector2f(30.f, 0.f), 0.01f);
-    EXPECT_VEC_NEAR(level.getSquare(1).getVelocity(), sf::Vector2f(0.f, squareSpeed), 0.01f);
+    run(level, gap / testSpeed + 0.3f);
+    EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), sf::Vector2f(falling.x, 0.f), 0.01f)
+        << "the falling square keeps its sideways speed and stops falling";
+    EXPECT_VEC_NEAR(level.getSquare(1).getVelocity(), sf::Vector2f(0.f, falling.y), 0.01f)
+        << "the square at rest moves down at the falling square's speed, not sideways";
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, ManySquaresStayInsideAndApart)
 {
-    SquaresLevel level(12, 3);
-    ASSERT_EQ(level.getSquareCount(), 12);
+    // Up to twelve squares spread over the window in a grid (4 x 3, fewer when the
+    // pictures are too big for that), flying in as many directions.
+    SquaresLevel level = emptyLevel();
     const sf::Vector2f world = level.getWorldSize();
+    const int columns = std::clamp(static_cast<int>(world.x / (1.5f * spriteSize)), 2, 4);
+    const int rows = std::clamp(static_cast<int>(world.y / (1.5f * spriteSize)), 1, 3);
+    for (int i = 0; i < columns * rows; ++i)
+    {
+        const float direction = 2.39996f * static_cast<float>(i); // the golden angle apart
+        level.addSquare(
+            {world.x * static_cast<float>(i % columns + 1) / static_cast<float>(columns + 1),
+             world.y * static_cast<float>(i / columns + 1) / static_cast<float>(rows + 1)},
+            testSpeed * sf::Vector2f(std::cos(direction), std::sin(direction)));
+    }
     // In a crowd a square pushed out of one can be pushed into another (or past a wall) in
     // the same step; allow what two squares close in one step.
     const float crowdTolerance = 2.f * stepDistance + overlapTolerance;
