@@ -135,3 +135,16 @@ function(hitbox_add_lab_tests name)
     target_link_libraries(${name}_exercise_tests PRIVATE ${name}_exercise_level hitbox_test_support)
     _hitbox_lab_target_settings(${name}_exercise_tests)
 endfunction()
+
+# Adds every numbered folder NN_name/ of the current source folder that has a
+# CMakeLists.txt, in order: used by labs/ (the lab programs) and tests/labs/ (their tests).
+function(hitbox_add_lab_folders)
+    file(GLOB lab_folders LIST_DIRECTORIES true RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
+        CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/[0-9][0-9]_*")
+    list(SORT lab_folders)
+    foreach(lab_folder IN LISTS lab_folders)
+        if(EXISTS "${CMAKE_CURRENT_SOURCE_DIR}/${lab_folder}/CMakeLists.txt")
+            add_subdirectory(${lab_folder})
+        endif()
+    endforeach()
+endfunction()
