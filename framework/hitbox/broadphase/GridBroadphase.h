@@ -44,11 +44,11 @@ private:
     struct Entry
     {
         float minX, maxX, minY, maxY;
-        std::uint32_t itemAndFirstCell; // the item index, and in the top two bits:
-                                        // bit 30: this is the box's first column,
-                                        // bit 31: this is the box's first row
+        std::uint32_t itemAndFirstCell; // the item index | kFirstColumn | kFirstRow
     };
     static constexpr std::uint32_t kItemBits = 0x3FFFFFFF;
+    static constexpr std::uint32_t kFirstColumn = 1u << 30; // the box's leftmost column
+    static constexpr std::uint32_t kFirstRow = 1u << 31;    // the box's top row
 
     float fixedCellSize;
     BoxArrays boxes;
@@ -64,8 +64,12 @@ private:
     {
         int x0, x1, y0, y1;
     };
+    // Calls visit(cell, covered, firstCell) for the cells of a range (see the .cpp).
+    template <typename Visit>
+    static void forEachCell(const CellRange& range, std::size_t width, Visit visit);
     std::vector<CellRange> cellRanges;
-    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
+    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order. The last
+    // entry is a spare that listCells writes to instead of branching (see forEachCell).
     std::vector<std::uint32_t> cellStart;
     std::vector<Entry> entries;
     std::size_t cellPairCount = 0;
