@@ -165,3 +165,29 @@ TEST(AllMethodsAgreeWithBruteForce, WhileHundredsOfBoxesMoveForManyFrames)
 }
 
 } // namespace
+
+namespace
+{
+
+TEST(GridBroadphase, AgreesWithBruteForceOnBoxesTooSmallToDivideBy)
+{
+    // Sides of 1e-40 (below float's normal range): one over such a cell size is infinity in
+    // float, and 0 * infinity is NaN, which once turned into a cell index far outside the grid.
+    std::vector<BroadphaseItem> items(3);
+    items[0].box = {0.f, 0.f, 1e-40f, 1e-40f};
+    items[1].box = {5e-41f, 5e-41f, 1e-40f, 1e-40f}; // overlaps box 0
+    items[2].box = {1e-39f, 0.f, 1e-40f, 1e-40f};    // ten of its own widths away
+    const std::vector<Pair> expected = scenes::referencePairs(items);
+    ASSERT_EQ(expected.size(), 1u);
+    hitbox::GridBroadphase cellFromAverageSize;
+    hitbox::GridBroadphase tinyCell(1e-40f);
+    std::vector<Pair> pairs;
+    for (Broadphase* grid :
+         {static_cast<Broadphase*>(&cellFromAverageSize), static_cast<Broadphase*>(&tinyCell)})
+    {
+        grid->findPairs(items, pairs);
+        EXPECT_EQ(firstDifference(expected, pairs, items), "");
+    }
+}
+
+} // namespace

@@ -15,6 +15,8 @@ constexpr float kCellSizePerAverageSide = 3.0f;
 // Never more than this many cells per item, so empty space (or one far-away object) cannot
 // make the grid huge: the cell size grows instead.
 constexpr double kMaxCellsPerItem = 4.0;
+// Far below anything a game uses, and 1 / this is still a float.
+constexpr double kSmallestCellSize = 1e-30;
 
 } // namespace
 
@@ -60,6 +62,9 @@ void GridBroadphase::chooseGrid()
                                       : 1.0;
     if (!(cell > 0.0) || !std::isfinite(cell))
         cell = std::max({width, height, 1.0}); // every box has zero size: one big cell
+    // Cells are found by multiplying by 1 / cell size. For cells below about 1e-38 that is
+    // infinity in float, and 0 * infinity is NaN, which has no cell: never go that small.
+    cell = std::max(cell, kSmallestCellSize);
     // [slide:grid-size]
     // Never more than a few cells per box: a lone box far away (or a tiny cell size) would
     // otherwise make a grid of mostly empty cells. Grow the cells instead.
@@ -105,19 +110,26 @@ void GridBroadphase::assignCells()
 }
 
 // Calls visit(cell, covered, firstCell) for each cell of the range (cell = row * width +
-// column; firstCell = the entry's first-column / first-row bits). Most boxes cover one
-// cell, two side by side or 2 x 2: they always get four calls, with covered = 0 for the
-// cells past the box's edge, so the caller needs no branch. (Whether a box crosses a cell
-// border is a coin toss, one time in three for an average box, that the CPU would guess
-// wrong; measured in docs/performance.md.) Bigger boxes get one call per cell they cover.
+// column; firstCell = the entry's kFirstColumn / kFirstRow bits).
+// Most boxes cover one cell, two (side by side or one above the other) or 2 x 2. They always
+// get the same four calls, so the caller needs no branch: a call for a column or row the box
+// does not reach names one of the box's own cells again, with covered = 0 (add nothing, take
+// no place). Why: whether the next box crosses a column border (one time in three for an
+// average box) or a row border is unpredictable, and the CPU's wrong guesses cost more than
+// the extra calls (measured: docs/performance.md).
+// Bigger boxes get one call per cell they cover.
 template <typename Visit>
 void GridBroadphase::forEachCell(const CellRange& range, std::size_t width, Visit visit)
 {
-    const std::size_t right = std::size_t(range.x1 - range.x0); // as unsigned: empty is huge
+    // 1 if the box reaches the next column (row), 0 if not. For an empty range (x1 = x0 - 1)
+    // the -1 becomes the largest size_t, so the empty range takes the loops below, which
+    // then run zero times.
+    const std::size_t right = std::size_t(range.x1 - range.x0);
     const std::size_t down = std::size_t(range.y1 - range.y0);
     const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
     if (right <= 1 && down <= 1)
     {
+        // The cell below and to the right is covered only if the box reaches both.
         visit(cell + down * width + right, std::uint32_t(right & down), 0u);
         visit(cell + down * width, std::uint32_t(down), kFirstColumn);
         visit(cell + right, std::uint32_t(right), kFirstRow);
@@ -143,19 +155,19 @@ void GridBroadphase::listCells()
     const float* minY = boxes.minY.data();
     const float* maxY = boxes.maxY.data();
     // [slide:grid-insert]
-    // A counting sort: count each cell's boxes, turn the counts into start positions, then
-    // drop each box into its cells. No hashing and no list per cell: one array holds every
-    // cell's boxes back to back, reused every frame (no allocation after the first frames).
+    // A counting sort: count each cell's boxes, add up the counts so each cell knows where
+    // its boxes end, then drop each box in from the end back. No hashing and no list per
+    // cell: one array holds every cell's boxes back to back, reused every frame.
     cellStart.assign(cellCount + 1, 0);
     std::uint32_t* start = cellStart.data();
     for (std::size_t i = 0; i < count; ++i)
         forEachCell(ranges[i], width,
-                    [start](std::size_t cell, std::uint32_t covered, std::uint32_t /*first*/)
+                    [start](std::size_t cell, std::uint32_t covered, std::uint32_t)
                     { start[cell] += covered; });
     for (std::size_t c = 1; c <= cellCount; ++c)
         start[c] += start[c - 1]; // now start[c] = end of cell c
     // [/slide]
-    // One spare entry at the end, for the cells forEachCell names but the box does not cover.
+    // One spare entry at the end, for the calls with covered = 0.
     const std::uint32_t spare = cellStart[cellCount];
     entries.resize(std::size_t(spare) + 1);
     Entry* out = entries.data();
@@ -172,7 +184,10 @@ void GridBroadphase::listCells()
                         start[cell] = slot;
                         Entry entry = box;
                         entry.itemAndFirstCell |= firstCell;
-                        out[covered ? slot : spare] = entry;
+                        // slot if covered, else spare, picked with bit masks: g++ 12 compiles
+                        // `covered ? slot : spare` here to a jump, which is a guess again.
+                        const std::uint32_t keep = 0u - covered; // all ones if covered
+                        out[(slot & keep) | (spare & ~keep)] = entry;
                     });
     }
 }

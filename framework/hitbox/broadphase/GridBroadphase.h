@@ -68,9 +68,9 @@ private:
     template <typename Visit>
     static void forEachCell(const CellRange& range, std::size_t width, Visit visit);
     std::vector<CellRange> cellRanges;
-    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order. The last
-    // entry is a spare that listCells writes to instead of branching (see forEachCell).
+    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
     std::vector<std::uint32_t> cellStart;
+    // The last entry is a spare that listCells writes to instead of branching (forEachCell).
     std::vector<Entry> entries;
     std::size_t cellPairCount = 0;
     std::vector<Pair> cellOrderPairs;     // the pairs in the order the cells found them
