@@ -96,6 +96,16 @@ void Input::press(Button& button, bool down)
     }
 }
 
+void Input::setState(Button& button, MouseState state)
+{
+    // Old lab code reports a release as setLeftMouse(UP): count it as one.
+    if (state == UP && button.state != UP)
+        button.released = true;
+    if (state != UP) // PRESSED says it went down; DOWN says it is held (no press this frame)
+        button.pressed = state == PRESSED;
+    button.state = state;
+}
+
 void Input::setMouseLDown(bool down)
 {
     press(leftButton, down);
@@ -118,12 +128,7 @@ bool Input::isMouseRDown() const
 
 void Input::setLeftMouse(MouseState state)
 {
-    // Old lab code reports a release as setLeftMouse(UP): count it as one.
-    if (state == UP && leftButton.state != UP)
-        leftButton.released = true;
-    if (state != UP) // PRESSED says it went down; DOWN says it is held (no press this frame)
-        leftButton.pressed = state == PRESSED;
-    leftButton.state = state;
+    setState(leftButton, state);
 }
 
 bool Input::isLeftMouseDown() const
@@ -143,12 +148,7 @@ bool Input::isLeftMouseReleased() const
 
 void Input::setRightMouse(MouseState state)
 {
-    // Old lab code reports a release as setRightMouse(UP): count it as one.
-    if (state == UP && rightButton.state != UP)
-        rightButton.released = true;
-    if (state != UP)
-        rightButton.pressed = state == PRESSED;
-    rightButton.state = state;
+    setState(rightButton, state);
 }
 
 bool Input::isRightMouseDown() const

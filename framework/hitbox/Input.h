@@ -73,6 +73,7 @@ private:
         bool released = false; // went up this frame
     };
     static void press(Button& button, bool down);
+    static void setState(Button& button, MouseState state);
 
     std::array<bool, sf::Keyboard::KeyCount> keysDown{};
     std::array<bool, sf::Keyboard::KeyCount> keysPressed{};

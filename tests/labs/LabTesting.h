@@ -29,6 +29,22 @@ inline testing::AssertionResult vectorsNear(const char* actualText, const char* 
            << actualText << " is " << text(actual) << ", expected " << expectedText << " = "
            << text(expected) << " (within " << tolerance << " pixels)";
 }
+
+// Where the i-th of a crowd of columns x rows objects starts, and how it moves: spread evenly
+// over the world, each flying off at `speed` in its own direction (successive objects the
+// golden angle apart, so no two directions repeat).
+struct CrowdStart
+{
+    sf::Vector2f position;
+    sf::Vector2f velocity;
+};
+inline CrowdStart crowdStart(int i, int columns, int rows, sf::Vector2f world, float speed)
+{
+    const float direction = 2.39996f * static_cast<float>(i); // the golden angle, in radians
+    return {{world.x * static_cast<float>(i % columns + 1) / static_cast<float>(columns + 1),
+             world.y * static_cast<float>(i / columns + 1) / static_cast<float>(rows + 1)},
+            speed * sf::Vector2f(std::cos(direction), std::sin(direction))};
+}
 } // namespace labtesting
 
 // Both coordinates of two sf::Vector2f within `tolerance` of each other.

@@ -1,5 +1,7 @@
 #include "hitbox/broadphase/BoxArrays.h"
 
+#include "hitbox/geometry/Shapes.h"
+
 #include <cmath>
 #include <limits>
 
@@ -30,15 +32,12 @@ void BoxArrays::load(const std::vector<BroadphaseItem>& items)
             continue;
         }
         // The same arithmetic as boxVsBox (normalised(), then left + width), so the broadphase
-        // and the exact test agree to the last bit, even at huge coordinates. Written out
-        // rather than calling normalised() and rightOf(): this runs for every box every frame,
-        // and calls into another file are not inlined.
-        const float left = box.width < 0.f ? box.left + box.width : box.left;
-        const float top = box.height < 0.f ? box.top + box.height : box.top;
-        minX[i] = left;
-        minY[i] = top;
-        maxX[i] = left + (box.width < 0.f ? sizeReaching(left, box.left) : box.width);
-        maxY[i] = top + (box.height < 0.f ? sizeReaching(top, box.top) : box.height);
+        // and the exact test agree to the last bit, even at huge coordinates.
+        const sf::FloatRect upright = normalised(box);
+        minX[i] = upright.left;
+        minY[i] = upright.top;
+        maxX[i] = upright.left + upright.width;
+        maxY[i] = upright.top + upright.height;
     }
 }
 

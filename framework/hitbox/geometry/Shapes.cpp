@@ -5,22 +5,6 @@
 namespace hitbox
 {
 
-sf::FloatRect normalised(const sf::FloatRect& box)
-{
-    sf::FloatRect result = box;
-    if (result.width < 0.f)
-    {
-        result.left = box.left + box.width;
-        result.width = sizeReaching(result.left, box.left);
-    }
-    if (result.height < 0.f)
-    {
-        result.top = box.top + box.height;
-        result.height = sizeReaching(result.top, box.top);
-    }
-    return result;
-}
-
 sf::Vector2f centerOf(const sf::FloatRect& box)
 {
     return {box.left + box.width / 2.f, box.top + box.height / 2.f};

@@ -34,20 +34,35 @@ struct Contact
     explicit operator bool() const { return hit; }
 };
 
-// Box helpers. A box with a negative width or height spans from left + width to left
-// (the way sf::Rect::intersects reads it); normalised() turns it into the usual form, whose
-// right edge (left + width) is the original left to the last bit (see sizeReaching).
-sf::FloatRect normalised(const sf::FloatRect& box);
+// Box helpers.
 // The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
 // when rounding would make from + size miss `to`. Without it a flipped box's edge could move
-// by a rounding error, and boxes that only touch would overlap. Inline: the broadphase runs
-// it for every box with a negative size, and must get the same bits as normalised().
+// by a rounding error, and boxes that only touch would overlap.
 inline float sizeReaching(float from, float to)
 {
     float size = to - from;
     for (int nudge = 0; nudge < 4 && from + size != to; ++nudge)
         size = std::nextafter(size, from + size < to ? HUGE_VALF : -HUGE_VALF);
     return size;
+}
+// A box with a negative width or height spans from left + width to left (the way
+// sf::Rect::intersects reads it); normalised() turns it into the usual form, whose right edge
+// (left + width) is the original left to the last bit. Inline: the broadphases run it for
+// every box every frame, and a call into another file is not inlined.
+inline sf::FloatRect normalised(const sf::FloatRect& box)
+{
+    sf::FloatRect result = box;
+    if (box.width < 0.f)
+    {
+        result.left = box.left + box.width;
+        result.width = sizeReaching(result.left, box.left);
+    }
+    if (box.height < 0.f)
+    {
+        result.top = box.top + box.height;
+        result.height = sizeReaching(result.top, box.top);
+    }
+    return result;
 }
 sf::Vector2f centerOf(const sf::FloatRect& box);
 float rightOf(const sf::FloatRect& box);

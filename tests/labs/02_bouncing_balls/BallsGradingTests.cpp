@@ -266,11 +266,9 @@ TEST(Task3BounceApartLikeBilliardBalls, ManyBallsStayInsideAndApart)
     const int rows = std::clamp(static_cast<int>(world.y / (2.5f * r)), 1, 4);
     for (int i = 0; i < columns * rows; ++i)
     {
-        const float direction = 2.39996f * static_cast<float>(i); // the golden angle apart
-        level.addBall(
-            {world.x * static_cast<float>(i % columns + 1) / static_cast<float>(columns + 1),
-             world.y * static_cast<float>(i / columns + 1) / static_cast<float>(rows + 1)},
-            testSpeed * sf::Vector2f(std::cos(direction), std::sin(direction)));
+        const labtesting::CrowdStart start =
+            labtesting::crowdStart(i, columns, rows, world, testSpeed);
+        level.addBall(start.position, start.velocity);
     }
     // In a crowd a ball pushed out of one ball can be pushed into another in the same
     // step; allow what two balls close in one step.

@@ -230,11 +230,9 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, ManySquaresStayInsideAndApart)
     const int rows = std::clamp(static_cast<int>(world.y / (1.5f * spriteSize)), 1, 3);
     for (int i = 0; i < columns * rows; ++i)
     {
-        const float direction = 2.39996f * static_cast<float>(i); // the golden angle apart
-        level.addSquare(
-            {world.x * static_cast<float>(i % columns + 1) / static_cast<float>(columns + 1),
-             world.y * static_cast<float>(i / columns + 1) / static_cast<float>(rows + 1)},
-            testSpeed * sf::Vector2f(std::cos(direction), std::sin(direction)));
+        const labtesting::CrowdStart start =
+            labtesting::crowdStart(i, columns, rows, world, testSpeed);
+        level.addSquare(start.position, start.velocity);
     }
     // In a crowd a square pushed out of one can be pushed into another (or past a wall) in
     // the same step; allow what two squares close in one step.
