@@ -6,7 +6,7 @@
 // as a student's object would be told "you hit something".
 #pragma once
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 #include "hitbox/geometry/Shapes.h"
 
 // The numbers students tune, in one place. Speeds in pixels per second.

@@ -10,7 +10,7 @@
 
 #include "Arena.h"
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 struct PaddleSettings
 {

@@ -2,8 +2,8 @@
 
 #include "Sounds.h"
 
-#include "hitbox/Assets.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/app/Input.h"
 
 #include <cmath>
 #include <sstream>

@@ -3,7 +3,7 @@
 // window at all.
 #include "PongLevel.h"
 
-#include "hitbox/DebugRenderer.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

@@ -9,7 +9,7 @@
 // --screen title|play|win, and the shared --headless --seconds --screenshot --seed.
 #include "PongLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 #include <stdexcept>

@@ -2,8 +2,8 @@
 // shapes and watch the tests answer (debug outlines turn red, contact normals appear).
 #pragma once
 
-#include "hitbox/GameObject.h"
-#include "hitbox/Level.h"
+#include "hitbox/objects/GameObject.h"
+#include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <vector>

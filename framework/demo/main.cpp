@@ -4,7 +4,7 @@
 // Keys: mouse moves the shape, click or Space switches box/circle, plus the shared keys.
 #include "SandboxLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

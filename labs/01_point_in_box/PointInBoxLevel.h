@@ -6,8 +6,8 @@
 // it into scene coordinates before testing it against the boxes.
 #pragma once
 
-#include "hitbox/GameObject.h"
-#include "hitbox/Level.h"
+#include "hitbox/objects/GameObject.h"
+#include "hitbox/app/Level.h"
 
 #include <SFML/Graphics/Transform.hpp>
 

@@ -6,7 +6,7 @@
 // The tasks are in README.md.
 #include "PointInBoxLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

@@ -1,7 +1,7 @@
 #include "Ball.h"
 
-#include "hitbox/Collision.h"
-#include "hitbox/Vector.h"
+#include "hitbox/objects/Collision.h"
+#include "hitbox/course/Vector.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // bounding circle (by default the circle inside the collision box) is the ball itself.
 #pragma once
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 // The numbers to play with.
 constexpr float ballRadius = 28.f; // pixels

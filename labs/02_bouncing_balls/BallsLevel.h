@@ -6,7 +6,7 @@
 
 #include "Ball.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 
 #include <random>
 #include <string>

@@ -5,7 +5,7 @@
 // the middle. The origin is the centre of the picture, so getPosition() is the centre.
 #pragma once
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 // The numbers to play with.
 constexpr float spriteSize = 100.f;  // the whole picture, margin included (pixels)

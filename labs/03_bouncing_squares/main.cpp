@@ -7,7 +7,7 @@
 // The tasks are in README.md.
 #include "SquaresLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 #include <stdexcept>

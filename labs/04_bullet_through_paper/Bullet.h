@@ -4,7 +4,7 @@
 // over, so the picture can show what a discrete test sees and what a swept test sees.
 #pragma once
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <vector>
 

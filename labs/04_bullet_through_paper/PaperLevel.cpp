@@ -1,9 +1,9 @@
 #include "PaperLevel.h"
 
-#include "hitbox/App.h"
-#include "hitbox/Assets.h"
-#include "hitbox/DebugRenderer.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/app/Input.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
 

@@ -7,7 +7,7 @@
 
 #include "Bullet.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 
 #include <SFML/Graphics/Font.hpp>
 

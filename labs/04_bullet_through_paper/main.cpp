@@ -6,7 +6,7 @@
 // (F1 shows the swept area of each step: orange when the step could tunnel).
 #include "PaperLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

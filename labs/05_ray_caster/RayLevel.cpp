@@ -1,8 +1,8 @@
 #include "RayLevel.h"
 
-#include "hitbox/Assets.h"
-#include "hitbox/DebugRenderer.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/app/Input.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/CircleShape.hpp>

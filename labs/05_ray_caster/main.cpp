@@ -6,7 +6,7 @@
 // Option: --time-order off starts with the fix switched off (the "before" picture).
 #include "RayLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

@@ -9,7 +9,7 @@
 
 #include "Sat.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 #include "hitbox/geometry/Capsule.h"
 
 #include <SFML/Graphics/Font.hpp>

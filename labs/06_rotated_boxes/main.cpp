@@ -6,7 +6,7 @@
 // Tab holds the next shape, plus the shared keys (F1: outlines).
 #include "RotatedLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

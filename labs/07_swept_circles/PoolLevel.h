@@ -10,7 +10,7 @@
 
 #include "Ball.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/Font.hpp>

@@ -7,7 +7,7 @@
 // plus the shared keys. Option: --mode discrete starts with the discrete version ("before").
 #include "PoolLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

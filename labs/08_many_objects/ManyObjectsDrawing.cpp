@@ -2,8 +2,8 @@
 // the pair table, the readout and the debug view. Reads the simulation, changes nothing.
 #include "ManyObjectsLevel.h"
 
-#include "hitbox/Assets.h"
-#include "hitbox/DebugRenderer.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

@@ -2,7 +2,7 @@
 
 #include "Rules.h"
 
-#include "hitbox/Input.h"
+#include "hitbox/app/Input.h"
 #include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/geometry/Overlap.h"
 

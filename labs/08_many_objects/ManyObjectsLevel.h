@@ -13,7 +13,7 @@
 #include "Ball.h"
 #include "PairTable.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 #include "hitbox/broadphase/Broadphase.h"
 
 #include <SFML/Graphics/Font.hpp>

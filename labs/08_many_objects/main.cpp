@@ -9,7 +9,7 @@
 // e.g. lab08_many_objects --screenshot shot.png --balls 10000 --debug --frames 60
 #include "ManyObjectsLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 #include <string>

@@ -15,7 +15,7 @@
 #include "Player.h"
 #include "TileMap.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/geometry/Sweep.h"
 

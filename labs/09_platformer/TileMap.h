@@ -6,7 +6,7 @@
 // ONE line naming the file, the line and what is wrong, so a student can fix it at once.
 #pragma once
 
-#include "hitbox/Assets.h"
+#include "hitbox/app/Assets.h"
 
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/System/Vector2.hpp>

@@ -10,7 +10,7 @@
 //          --demo 1 makes the player run right and jump by itself (lectures, screenshots).
 #include "PlatformerLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

@@ -14,7 +14,7 @@
 
 #include "Actor.h"
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 
 #include <SFML/Graphics/Font.hpp>
 

@@ -8,7 +8,7 @@
 //       (F1 shows hitboxes, sprite boxes, notice and attack circles).
 #include "TopDownLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <memory>
 

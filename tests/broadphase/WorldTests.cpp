@@ -1,8 +1,8 @@
 // The World: broadphase, then rules, then the exact test, then collisionResponse on both.
 #include "support/Printers.h"
 
-#include "hitbox/GameObject.h"
-#include "hitbox/broadphase/World.h"
+#include "hitbox/objects/GameObject.h"
+#include "hitbox/objects/World.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Animation: frames on a sprite sheet, advanced by time, looping or stopping, mirrored.
 #include "support/Printers.h"
 
-#include "hitbox/Animation.h"
+#include "hitbox/objects/Animation.h"
 
 #include <gtest/gtest.h>
 

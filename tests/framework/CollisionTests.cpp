@@ -1,8 +1,8 @@
 // Collision: the static facade the lecture uses, on GameObjects.
 #include "support/Printers.h"
 
-#include "hitbox/Collision.h"
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/Collision.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The debug renderer builds its lines without a window; assets are found or named.
 #include "support/Printers.h"
 
-#include "hitbox/Assets.h"
-#include "hitbox/DebugRenderer.h"
-#include "hitbox/GameObject.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // set, world space under move/scale/rotation; the bounding circle; the course API's flags.
 #include "support/Printers.h"
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Input: down / pressed this frame / released this frame, the mouse, and bad key codes.
 #include "support/Printers.h"
 
-#include "hitbox/Input.h"
+#include "hitbox/app/Input.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // command line, headless simulation.
 #include "support/Printers.h"
 
-#include "hitbox/App.h"
-#include "hitbox/FixedStep.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/FixedStep.h"
+#include "hitbox/app/Input.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Vector / VectorHelper: the course's static vector helpers (length, unit vector, dot).
 #include "support/Printers.h"
 
-#include "hitbox/Vector.h"
-#include "hitbox/VectorHelper.h"
+#include "hitbox/course/Vector.h"
+#include "hitbox/course/VectorHelper.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include "support/Printers.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <gtest/gtest.h>
 

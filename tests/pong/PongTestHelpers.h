@@ -3,8 +3,8 @@
 
 #include "PongLevel.h"
 
-#include "hitbox/App.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
 
 #include <functional>
 

@@ -1,7 +1,7 @@
-// Framework/Animation.h - the course's old include path for Animation (hitbox/Animation.h).
+// Framework/Animation.h - the course's old include path for Animation (hitbox/objects/Animation.h).
 #pragma once
 
-#include "hitbox/Animation.h"
+#include "hitbox/objects/Animation.h"
 
 #include <SFML/Graphics.hpp>
 #include <vector>

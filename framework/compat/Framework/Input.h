@@ -1,4 +1,4 @@
-// Framework/Input.h - the course's old include path for Input (hitbox/Input.h).
+// Framework/Input.h - the course's old include path for Input (hitbox/app/Input.h).
 #pragma once
 
-#include "hitbox/Input.h"
+#include "hitbox/app/Input.h"

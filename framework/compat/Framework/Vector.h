@@ -1,8 +1,8 @@
 // Framework/Vector.h - the course's old include path for the Vector helpers
-// (hitbox/Vector.h).
+// (hitbox/course/Vector.h).
 #pragma once
 
-#include "hitbox/Vector.h"
+#include "hitbox/course/Vector.h"
 
 #include <SFML/Graphics.hpp>
 #include <cmath>

@@ -1,8 +1,8 @@
 // Framework/VectorHelper.h - the course's old include path for VectorHelper
-// (hitbox/VectorHelper.h).
+// (hitbox/course/VectorHelper.h).
 #pragma once
 
-#include "hitbox/VectorHelper.h"
+#include "hitbox/course/VectorHelper.h"
 
 #include <SFML/Graphics.hpp>
 #include <cmath>

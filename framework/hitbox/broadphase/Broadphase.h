@@ -12,7 +12,7 @@
 //   - game rules filter first: layers and masks (see below).
 #pragma once
 
-#include "hitbox/DebugRenderer.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics/Rect.hpp>
 

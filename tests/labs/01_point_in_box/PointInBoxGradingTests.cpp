@@ -5,8 +5,8 @@
 
 #include "PointInBoxLevel.h"
 
-#include "hitbox/App.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <SFML/Graphics/View.hpp>
@@ -87,7 +87,7 @@ sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
 
 // Where the mouse is in world coordinates when it is at `pixel` in a window of
 // `windowSize` pixels: what the window does with sf::RenderWindow::mapPixelToCoords and
-// the letterboxed view (hitbox/App.h), worked out here without opening a window.
+// the letterboxed view (hitbox/app/App.h), worked out here without opening a window.
 sf::Vector2f pixelToWorld(sf::Vector2i pixel, sf::Vector2u windowSize, sf::Vector2f world)
 {
     sf::View view(sf::FloatRect(0.f, 0.f, world.x, world.y));

@@ -5,7 +5,7 @@
 #include "Ball.h"
 #include "BallsLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "Square.h"
 #include "SquaresLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 #include <gtest/gtest.h>
 

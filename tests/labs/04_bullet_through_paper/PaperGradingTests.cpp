@@ -1,7 +1,7 @@
 // Grading tests for lab 4 (bullet through paper). Each suite checks one task of README.md.
 #include "PaperLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Tunnelling.h"
 

@@ -1,8 +1,8 @@
 // Grading tests for lab 5 (ray caster). Each suite checks one task of README.md.
 #include "RayLevel.h"
 
-#include "hitbox/App.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
 #include "hitbox/geometry/Overlap.h"
 
 #include <gtest/gtest.h>

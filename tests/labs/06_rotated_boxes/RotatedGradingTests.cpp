@@ -2,8 +2,8 @@
 #include "RotatedLevel.h"
 #include "Sat.h"
 
-#include "hitbox/App.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
 #include "hitbox/geometry/Polygon.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Grading tests for lab 7 (swept circles). Each suite checks one task of README.md.
 #include "PoolLevel.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/VectorMath.h"
 

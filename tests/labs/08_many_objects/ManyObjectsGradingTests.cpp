@@ -4,7 +4,7 @@
 #include "PairTable.h"
 #include "Rules.h"
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 #include "hitbox/geometry/Overlap.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // Every test runs the level with no window: scripted keys, fixed steps.
 #include "PlatformerTestSupport.h"
 
-#include "hitbox/DebugRenderer.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #include "PlatformerLevel.h"
 #include "TileMap.h"
 
-#include "hitbox/App.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
 
 #include <string>
 

@@ -3,9 +3,9 @@
 // sorting). The level runs with no window: scripted keys, fixed steps of 1/120 s.
 #include "TopDownLevel.h"
 
-#include "hitbox/App.h"
-#include "hitbox/DebugRenderer.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/App.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/app/Input.h"
 
 #include <gtest/gtest.h>
 

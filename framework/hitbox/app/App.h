@@ -18,7 +18,7 @@
 //     F1 debug boxes   P pause   N one step while paused   F12 screenshot   Esc quit
 #pragma once
 
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 
 #include <SFML/Graphics/Rect.hpp>
 

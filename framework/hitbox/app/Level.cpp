@@ -1,4 +1,4 @@
-#include "hitbox/Level.h"
+#include "hitbox/app/Level.h"
 
 namespace hitbox
 {

@@ -7,7 +7,7 @@
 // that only reads state, and tests that need no window.
 #pragma once
 
-#include "hitbox/Input.h"
+#include "hitbox/app/Input.h"
 
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/RenderWindow.hpp>

@@ -1,4 +1,4 @@
-#include "hitbox/BaseLevel.h"
+#include "hitbox/course/BaseLevel.h"
 
 const sf::Color BaseLevel::backgroundColor(100, 149, 237);
 

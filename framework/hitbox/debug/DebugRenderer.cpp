@@ -1,6 +1,6 @@
-#include "hitbox/DebugRenderer.h"
+#include "hitbox/debug/DebugRenderer.h"
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <SFML/Graphics/RenderTarget.hpp>
 

@@ -1,6 +1,6 @@
-#include "hitbox/Collision.h"
+#include "hitbox/objects/Collision.h"
 
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 #include "hitbox/geometry/Overlap.h"
 
 namespace

@@ -1,7 +1,7 @@
-#include "hitbox/broadphase/World.h"
+#include "hitbox/objects/World.h"
 
-#include "hitbox/Collision.h"
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/Collision.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <algorithm>
 

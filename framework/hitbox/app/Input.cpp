@@ -1,4 +1,4 @@
-#include "hitbox/Input.h"
+#include "hitbox/app/Input.h"
 
 #include <cmath>
 

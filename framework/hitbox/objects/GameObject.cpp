@@ -1,4 +1,4 @@
-#include "hitbox/GameObject.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <cmath>
 #include <limits>

@@ -2,7 +2,7 @@
 // shares, the help line and screenshots. Only App.cpp calls these.
 #pragma once
 
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
 namespace hitbox
 {

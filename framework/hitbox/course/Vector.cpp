@@ -1,4 +1,4 @@
-#include "hitbox/Vector.h"
+#include "hitbox/course/Vector.h"
 
 #include <cmath>
 

@@ -4,6 +4,6 @@
 // name, so this is the same class under the second name.
 #pragma once
 
-#include "hitbox/Vector.h"
+#include "hitbox/course/Vector.h"
 
 using VectorHelper = Vector;

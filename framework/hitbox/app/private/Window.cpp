@@ -1,9 +1,9 @@
-#include "hitbox/Window.h"
+#include "hitbox/app/private/Window.h"
 
-#include "hitbox/Assets.h"
-#include "hitbox/DebugRenderer.h"
-#include "hitbox/FixedStep.h"
-#include "hitbox/Input.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/app/FixedStep.h"
+#include "hitbox/app/Input.h"
 
 #include <SFML/Graphics.hpp>
 

@@ -1,4 +1,4 @@
-#include "hitbox/FixedStep.h"
+#include "hitbox/app/FixedStep.h"
 
 #include <algorithm>
 #include <cmath>

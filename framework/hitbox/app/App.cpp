@@ -1,8 +1,8 @@
-#include "hitbox/App.h"
+#include "hitbox/app/App.h"
 
-#include "hitbox/Assets.h"
-#include "hitbox/Input.h"
-#include "hitbox/Window.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/app/Input.h"
+#include "hitbox/app/private/Window.h"
 
 #include <cstdlib>
 #include <iostream>

@@ -1,4 +1,4 @@
-#include "hitbox/Assets.h"
+#include "hitbox/app/Assets.h"
 
 #include <SFML/System/Err.hpp>
 

@@ -1,4 +1,4 @@
-#include "hitbox/Animation.h"
+#include "hitbox/objects/Animation.h"
 
 #include <cmath>
 
