@@ -6,8 +6,8 @@
 // as a student's object would be told "you hit something".
 #pragma once
 
-#include "hitbox/objects/GameObject.h"
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/objects/GameObject.h"
 
 // The numbers students tune, in one place. Speeds in pixels per second.
 struct BallSettings

@@ -2,9 +2,9 @@
 // shapes and watch the tests answer (debug outlines turn red, contact normals appear).
 #pragma once
 
-#include "hitbox/objects/GameObject.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <vector>
 

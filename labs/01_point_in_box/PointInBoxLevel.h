@@ -6,8 +6,8 @@
 // it into scene coordinates before testing it against the boxes.
 #pragma once
 
-#include "hitbox/objects/GameObject.h"
 #include "hitbox/app/Level.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <SFML/Graphics/Transform.hpp>
 

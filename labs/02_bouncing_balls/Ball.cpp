@@ -1,7 +1,7 @@
 #include "Ball.h"
 
-#include "hitbox/objects/Collision.h"
 #include "hitbox/course/Vector.h"
+#include "hitbox/objects/Collision.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #include "BallsLevel.h"
 
-#include "hitbox/objects/Collision.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/objects/Collision.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

@@ -1,9 +1,9 @@
 #include "SquaresLevel.h"
 
-#include "hitbox/objects/Collision.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/course/Vector.h"
+#include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/objects/Collision.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

@@ -1,8 +1,8 @@
 #include "RayLevel.h"
 
 #include "hitbox/app/Assets.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/CircleShape.hpp>

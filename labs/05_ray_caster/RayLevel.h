@@ -7,8 +7,8 @@
 // over the seams between them only works if the contacts are handled in TIME ORDER (seed 004).
 #pragma once
 
-#include "hitbox/objects/GameObject.h"
 #include "hitbox/app/Level.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <SFML/Graphics/Font.hpp>
 

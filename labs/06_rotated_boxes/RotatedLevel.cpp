@@ -1,8 +1,8 @@
 #include "RotatedLevel.h"
 
 #include "hitbox/app/Assets.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/VectorMath.h"
 

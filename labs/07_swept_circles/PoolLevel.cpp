@@ -2,8 +2,8 @@
 
 #include "hitbox/app/App.h"
 #include "hitbox/app/Assets.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/SweptCircle.h"

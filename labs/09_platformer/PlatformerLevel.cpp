@@ -1,7 +1,7 @@
 #include "PlatformerLevel.h"
 
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
 

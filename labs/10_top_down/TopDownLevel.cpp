@@ -1,8 +1,8 @@
 #include "TopDownLevel.h"
 
 #include "hitbox/app/Assets.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 
 #include <SFML/Graphics/CircleShape.hpp>

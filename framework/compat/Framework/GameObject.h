@@ -5,7 +5,7 @@
 // header, because lab code relies on them arriving with it.
 #pragma once
 
-#include "hitbox/objects/GameObject.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/objects/GameObject.h"
 
 #include <SFML/Graphics.hpp>

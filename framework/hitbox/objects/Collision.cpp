@@ -1,7 +1,7 @@
 #include "hitbox/objects/Collision.h"
 
-#include "hitbox/objects/GameObject.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/objects/GameObject.h"
 
 namespace
 {

@@ -4,8 +4,8 @@
 #include "TopDownLevel.h"
 
 #include "hitbox/app/App.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 #include "hitbox/app/private/Window.h"
 
 #include "hitbox/app/Assets.h"
-#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics.hpp>
 
