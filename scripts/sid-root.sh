@@ -6,8 +6,8 @@
 # minutes); later calls reuse it.
 #
 # Usage: scripts/sid-root.sh create          make the root if it is missing (needs root)
-#        scripts/sid-root.sh run COMMAND...  run COMMAND inside the root, in a copy of
-#                                            this checkout at /hitbox
+#        scripts/sid-root.sh run COMMAND...  run COMMAND inside the root, in this
+#                                            checkout (mounted at /hitbox)
 # HITBOX_SID_ROOT chooses where the root lives (default /var/cache/hitbox/sid-root).
 set -euo pipefail
 
@@ -50,40 +50,24 @@ create() {
     log "ready"
 }
 
-mount_all() {
-    local fs
-    for fs in proc sys dev dev/pts; do
-        mountpoint -q "$root/$fs" || mount --bind "/$fs" "$root/$fs"
-    done
-}
-
-unmount_all() {
-    local fs
-    for fs in dev/pts dev sys proc; do
-        mountpoint -q "$root/$fs" && umount -l "$root/$fs" || true
-    done
-}
-
 in_root() {
-    mount_all
-    local status=0
-    chroot "$root" "$@" || status=$?
-    return $status
+    # A private mount namespace: the bind mounts vanish with the command, so several runs
+    # (and a crashed one) never leave mounts behind or unmount each other's.
+    unshare --mount --propagation private bash -c '
+        root=$1; shift
+        for fs in proc sys dev dev/pts; do mount --bind "/$fs" "$root/$fs"; done
+        if [[ -n ${HITBOX_SID_CHECKOUT:-} ]]; then
+            mkdir -p "$root/hitbox" && mount --bind "$HITBOX_SID_CHECKOUT" "$root/hitbox"
+        fi
+        exec chroot "$root" "$@"' bash "$root" "$@"
 }
 
 run() {
     create
-    # A fresh copy of the checkout (tracked and untracked files, no build folders) at /hitbox,
-    # so the host's build/ never mixes with the root's.
-    rm -rf "$root/hitbox"
-    mkdir -p "$root/hitbox"
-    (cd "$here" && git ls-files -co --exclude-standard -z | tar --null -T - -cf -) | tar -xf - -C "$root/hitbox"
-    if [[ -d $here/../shared ]]; then
-        rm -rf "$root/shared" && cp -r "$here/../shared" "$root/shared"
-    fi
-    trap unmount_all EXIT
-    in_root env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        LANG=C.UTF-8 CI="${CI:-}" bash -c 'cd /hitbox && "$@"' bash "$@"
+    # This checkout appears inside the root at /hitbox (the same files, not a copy).
+    HITBOX_SID_CHECKOUT=$here in_root env -i HOME=/root LANG=C.UTF-8 CI="${CI:-}" \
+        PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+        bash -c 'cd /hitbox && "$@"' bash "$@"
 }
 
 case ${1:-} in
