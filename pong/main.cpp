@@ -12,50 +12,30 @@
 #include "hitbox/app/App.h"
 
 #include <memory>
-#include <stdexcept>
 #include <string>
 
 namespace
 {
-int parsePointsToWin(const std::string& text)
-{
-    std::size_t used = 0;
-    int points = 0;
-    try
-    {
-        points = std::stoi(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != text.size() || points < 1 || points > 99)
-        throw std::invalid_argument("--points-to-win needs a whole number from 1 to 99, not '" +
-                                    text + "'");
-    return points;
-}
-
 std::unique_ptr<hitbox::Level> makePong(const hitbox::Options& options)
 {
     PongSettings settings;
     settings.seed = options.seed;
-    settings.difficulty = difficultyFromName(options.get("--difficulty", "normal"));
-    settings.pointsToWin = parsePointsToWin(options.get("--points-to-win", "11"));
+    settings.difficulty =
+        difficultyFromName(options.oneOf("--difficulty", "normal", {"easy", "normal", "hard"}));
+    settings.pointsToWin = static_cast<int>(options.wholeNumber("--points-to-win", 11, 1, 99));
     // With no window nobody can press a key, so headless runs play computer vs computer.
     const std::string defaultMode = options.headless ? "cvc" : "1p";
-    settings.mode = modeFromName(options.get("--mode", defaultMode));
+    settings.mode = modeFromName(options.oneOf("--mode", defaultMode, {"1p", "2p", "cvc"}));
     auto pong = std::make_unique<PongLevel>(settings);
 
     const bool picture = !options.screenshotPath.empty();
-    const std::string screen = options.get("--screen", "");
+    const std::string screen = options.oneOf("--screen", "", {"title", "play", "win"});
     if (screen == "title")
         pong->showTitle();
     else if (screen == "play")
         pong->startMatch(settings.mode);
     else if (screen == "win")
         pong->showWinScreen(settings.pointsToWin, settings.pointsToWin * 2 / 3);
-    else if (!screen.empty())
-        throw std::invalid_argument("--screen must be title, play or win, not '" + screen + "'");
     else if (picture)
     {
         // A picture with no screen named shows the attract mode, a few seconds into a rally

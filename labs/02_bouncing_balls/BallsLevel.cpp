@@ -16,7 +16,6 @@ namespace
 {
 const sf::Color ballColors[] = {{230, 90, 70},   {70, 150, 230}, {240, 200, 60}, {90, 200, 120},
                                 {200, 110, 220}, {240, 150, 70}, {80, 210, 210}, {220, 220, 220}};
-constexpr int maxBalls = 60;
 } // namespace
 
 BallsLevel::BallsLevel(int ballCount, unsigned seed) : random(seed)

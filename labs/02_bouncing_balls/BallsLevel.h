@@ -18,6 +18,8 @@ public:
     // `ballCount` balls: the first two fly at each other, the rest start in random places
     // (from `seed`) in random directions, all at ballSpeed.
     explicit BallsLevel(int ballCount = 2, unsigned seed = 1);
+    // Space adds balls up to this many (and --balls accepts 2 to this many).
+    static constexpr int maxBalls = 60;
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;

@@ -10,30 +10,14 @@
 #include "hitbox/app/App.h"
 
 #include <memory>
-#include <stdexcept>
-#include <string>
-
-namespace
-{
-int ballCountFrom(const hitbox::Options& options)
-{
-    const std::string text = options.get("--balls", "2");
-    try
-    {
-        return std::stoi(text);
-    }
-    catch (const std::exception&)
-    {
-        throw std::invalid_argument("--balls needs a whole number, e.g. --balls 12 (not '" + text +
-                                    "')");
-    }
-}
-} // namespace
-
 int main(int argc, char* argv[])
 {
     return hitbox::run(
         argc, argv, {"Lab 2 - Bouncing balls", {"--balls"}},
         [](const hitbox::Options& options)
-        { return std::make_unique<BallsLevel>(ballCountFrom(options), options.seed); });
+        {
+            return std::make_unique<BallsLevel>(
+                static_cast<int>(options.wholeNumber("--balls", 2, 2, BallsLevel::maxBalls)),
+                options.seed);
+        });
 }

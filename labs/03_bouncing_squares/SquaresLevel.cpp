@@ -17,7 +17,6 @@ namespace
 {
 const sf::Color crateColors[] = {{70, 120, 220}, {80, 190, 100}, {220, 120, 60}, {190, 90, 200},
                                  {220, 190, 60}, {70, 190, 190}, {210, 80, 90},  {170, 170, 170}};
-constexpr int maxSquares = 40;
 } // namespace
 
 SquaresLevel::SquaresLevel(int squareCount, unsigned seed) : random(seed)

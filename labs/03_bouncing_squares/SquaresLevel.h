@@ -18,6 +18,8 @@ public:
     // `squareCount` squares: the first two fly at each other, the rest start in random
     // places (from `seed`) moving diagonally, all at squareSpeed.
     explicit SquaresLevel(int squareCount = 2, unsigned seed = 1);
+    // Space adds squares up to this many (and --squares accepts 2 to this many).
+    static constexpr int maxSquares = 40;
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;

@@ -10,30 +10,14 @@
 #include "hitbox/app/App.h"
 
 #include <memory>
-#include <stdexcept>
-#include <string>
-
-namespace
-{
-int squareCountFrom(const hitbox::Options& options)
-{
-    const std::string text = options.get("--squares", "2");
-    try
-    {
-        return std::stoi(text);
-    }
-    catch (const std::exception&)
-    {
-        throw std::invalid_argument("--squares needs a whole number, e.g. --squares 8 (not '" +
-                                    text + "')");
-    }
-}
-} // namespace
-
 int main(int argc, char* argv[])
 {
     return hitbox::run(
         argc, argv, {"Lab 3 - Bouncing squares", {"--squares"}},
         [](const hitbox::Options& options)
-        { return std::make_unique<SquaresLevel>(squareCountFrom(options), options.seed); });
+        {
+            return std::make_unique<SquaresLevel>(
+                static_cast<int>(options.wholeNumber("--squares", 2, 2, SquaresLevel::maxSquares)),
+                options.seed);
+        });
 }

@@ -16,7 +16,7 @@ int main(int argc, char* argv[])
                        [](const hitbox::Options& options)
                        {
                            auto level = std::make_unique<RayLevel>();
-                           level->setTimeOrder(options.get("--time-order", "on") != "off");
+                           level->setTimeOrder(options.onOff("--time-order", true));
                            return level;
                        });
 }

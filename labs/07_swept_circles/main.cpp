@@ -13,11 +13,12 @@
 
 int main(int argc, char* argv[])
 {
-    return hitbox::run(argc, argv, {"Lab 7 - Swept circles", {"--mode"}},
-                       [](const hitbox::Options& options)
-                       {
-                           auto level = std::make_unique<PoolLevel>();
-                           level->setSwept(options.get("--mode", "swept") != "discrete");
-                           return level;
-                       });
+    return hitbox::run(
+        argc, argv, {"Lab 7 - Swept circles", {"--mode"}},
+        [](const hitbox::Options& options)
+        {
+            auto level = std::make_unique<PoolLevel>();
+            level->setSwept(options.oneOf("--mode", "swept", {"swept", "discrete"}) == "swept");
+            return level;
+        });
 }

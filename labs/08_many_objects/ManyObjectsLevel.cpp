@@ -24,7 +24,7 @@ const float crowdCoverage = 0.12f;
 const float smallestRadius = 0.5f;
 const float crowdSpeedMin = 20.f;
 const float crowdSpeedMax = 70.f;
-const int crowdSizes[] = {100, 300, 1000, 3000, 10000, 30000, 100000};
+const int crowdSizes[] = {100, 300, 1000, 3000, 10000, 30000, maxBalls};
 
 const float tableBallRadius = 38.f;
 const float tableBallSpeed = 90.f;
@@ -54,7 +54,7 @@ sf::Vector2f fromAngle(float angle, float length)
 
 ManyObjectsLevel::ManyObjectsLevel(const LabSettings& settings)
     : method(settings.method), random(settings.seed),
-      printTimingSeconds(settings.printTimingSeconds)
+      printTimingSeconds(settings.printTimingSeconds), stopWhenTooSlow(settings.stopWhenTooSlow)
 {
     startScene(settings.scene, settings.balls);
 }
@@ -323,7 +323,7 @@ void ManyObjectsLevel::update(float dt)
     // Averaged over about 30 steps so the readout is steady enough to read.
     const float milliseconds = clock.getElapsedTime().asSeconds() * 1000.f;
     collisionMilliseconds += (milliseconds - collisionMilliseconds) / 30.f;
-    stoppedAsTooSlow = collisionMilliseconds > slowStepMilliseconds;
+    stoppedAsTooSlow = stopWhenTooSlow && collisionMilliseconds > slowStepMilliseconds;
 }
 
 void ManyObjectsLevel::findPairsAndRespond()

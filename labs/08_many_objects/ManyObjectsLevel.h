@@ -39,7 +39,11 @@ struct LabSettings
     hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
     unsigned seed = 1;
     float printTimingSeconds = 0.f; // > 0: print a timing line this often (window only)
+    bool stopWhenTooSlow = false;   // the wall-clock guard below: for a window, never headless
 };
+
+// The most balls a scene can hold (Up in the crowd scene stops here too).
+constexpr int maxBalls = 100000;
 
 // Above this many balls brute force is not run: 3,000 balls already mean 4.5 million box
 // tests every step, 120 steps a second, and the window would stop answering. A debug build
@@ -51,8 +55,10 @@ constexpr int bruteForceBallLimit = 3000;
 constexpr int bruteForceBallLimit = 1000;
 #endif
 
-// Any method whose collision step averages more than this stops until the method or the
-// number of balls changes: at 120 steps a second the window would hardly move. (It cannot
+// In a window (LabSettings::stopWhenTooSlow), any method whose collision step averages more
+// than this stops until the method or the number of balls changes: at 120 steps a second the
+// window would hardly move. Headless runs never look at the clock, so their results are the
+// same on every machine. (It cannot
 // happen in a test's few steps: the average starts at 0 and needs a dozen slow steps.)
 constexpr float slowStepMilliseconds = 40.f;
 
@@ -131,6 +137,7 @@ private:
     float fireAngle = 0.f;
     float collisionMilliseconds = 0.f; // time in findPairsAndRespond, averaged over steps
     float printTimingSeconds = 0.f;
+    bool stopWhenTooSlow = false;
 
     // Drawing caches and frame timing: render() is const, these only help it draw.
     mutable sf::VertexArray ballVertices{sf::Triangles};

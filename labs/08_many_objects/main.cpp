@@ -12,7 +12,6 @@
 #include "hitbox/app/App.h"
 
 #include <memory>
-#include <string>
 
 int main(int argc, char* argv[])
 {
@@ -23,14 +22,19 @@ int main(int argc, char* argv[])
         [](const hitbox::Options& options)
         {
             LabSettings settings;
-            settings.scene = parseScene(options.get("--scene", "crowd"));
-            const int defaultBalls = settings.scene == Scene::PairTable ? 12 : 1000;
-            settings.balls = std::stoi(options.get("--balls", std::to_string(defaultBalls)));
+            settings.scene =
+                parseScene(options.oneOf("--scene", "crowd", {"crowd", "table", "layers"}));
+            const bool table = settings.scene == Scene::PairTable;
+            settings.balls =
+                static_cast<int>(options.wholeNumber("--balls", table ? 12 : 1000, 1, maxBalls));
             // The pair table is brute force; elsewhere the grid is the default.
-            settings.method = parseMethod(
-                options.get("--method", settings.scene == Scene::PairTable ? "brute" : "grid"));
+            settings.method = parseMethod(options.oneOf("--method", table ? "brute" : "grid",
+                                                        {"brute", "sweep", "grid", "quadtree"}));
             settings.seed = options.seed;
-            settings.printTimingSeconds = std::stof(options.get("--print-timing", "0"));
+            settings.printTimingSeconds =
+                static_cast<float>(options.number("--print-timing", 0.0, 0.0, 3600.0));
+            // The slow-step guard reads the wall clock: only where someone is watching.
+            settings.stopWhenTooSlow = !options.headless && options.screenshotPath.empty();
             return std::make_unique<ManyObjectsLevel>(settings);
         });
 }

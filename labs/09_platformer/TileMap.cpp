@@ -1,26 +1,50 @@
 #include "TileMap.h"
 
+#include "hitbox/app/Options.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace
 {
 // "levels/x.txt line 4: ..." - every complaint about a file starts the same way.
 LevelFileError errorAt(const std::string& source, int line, const std::string& what)
 {
-    return LevelFileError("Hitbox: level file '" + source + "' line " + std::to_string(line) +
-                          ": " + what);
+    return LevelFileError("Hitbox: level file '" + hitbox::printable(source, 200) + "' line " +
+                          std::to_string(line) + ": " + what);
+}
+
+LevelFileError fileError(const std::string& path, const std::string& what)
+{
+    return LevelFileError("Hitbox: level file '" + hitbox::printable(path, 200) + "' " + what);
+}
+
+// Why a tile character is wrong, with the fix for the usual cause.
+std::string unknownTile(char tile, std::size_t column)
+{
+    std::string what = "unknown tile '" + hitbox::printable(std::string(1, tile)) + "' in column " +
+                       std::to_string(column + 1);
+    if (tile == '\r')
+        return what + " (a line ends in a lone carriage return: save the file with Unix or "
+                      "Windows line ends)";
+    return what + " (use # for solid, . for empty, P for the player start)";
 }
 } // namespace
 
 TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
 {
     TileMap map;
-    std::istringstream stream(text);
+    // Windows Notepad may start a UTF-8 file with a byte-order mark: it is not a tile.
+    const std::string byteOrderMark = "\xEF\xBB\xBF";
+    const bool hasMark = text.compare(0, byteOrderMark.size(), byteOrderMark) == 0;
+    std::istringstream stream(hasMark ? text.substr(byteOrderMark.size()) : text);
     std::string line;
     int lineNumber = 0;
     int startLine = 0;
@@ -57,18 +81,14 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
                 line[column] = '.'; // the start is an empty tile
             }
             else if (tile != '#' && tile != '.')
-                throw errorAt(sourceName, lineNumber,
-                              std::string("unknown tile '") + tile + "' in column " +
-                                  std::to_string(column + 1) +
-                                  " (use # for solid, . for empty, P for the player start)");
+                throw errorAt(sourceName, lineNumber, unknownTile(tile, column));
         }
         map.tiles.push_back(line);
         // [/slide]
     }
 
     if (map.tiles.empty())
-        throw LevelFileError("Hitbox: level file '" + sourceName +
-                             "' has no rows (draw the level with # . and one P)");
+        throw fileError(sourceName, "has no rows (draw the level with # . and one P)");
     if (startLine == 0)
         throw errorAt(sourceName, lineNumber,
                       "reached the end of the file without a player start (put one 'P' on an "
@@ -77,26 +97,54 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
     return map;
 }
 
-TileMap TileMap::load(const std::string& relativePath)
+TileMap TileMap::load(const std::string& path)
 {
-    std::string path;
-    try
+    namespace fs = std::filesystem;
+    if (path.empty())
+        throw std::invalid_argument("--level needs a file name, e.g. levels/platformer.txt");
+    std::string found = path;
+    if (!fs::path(path).is_absolute())
     {
-        path = hitbox::findAsset(relativePath);
+        try
+        {
+            found = hitbox::findAsset(path);
+        }
+        catch (const hitbox::AssetError& error)
+        {
+            throw hitbox::AssetError(std::string(error.what()) +
+                                     " Levels are text files in assets/levels/; pick one with "
+                                     "--level levels/NAME.txt.");
+        }
     }
-    catch (const hitbox::AssetError& error)
-    {
-        throw hitbox::AssetError(std::string(error.what()) +
-                                 " Levels are text files in assets/levels/; pick one with "
-                                 "--level levels/NAME.txt.");
-    }
-    std::ifstream file(path, std::ios::binary);
+    // Look before opening: opening a pipe would wait forever, and a device never ends.
+    std::error_code error;
+    const fs::file_status status = fs::status(found, error);
+    if (!fs::exists(status))
+        throw fileError(found, "does not exist");
+    if (fs::is_directory(status))
+        throw fileError(found, "is a folder; pick a file in it, e.g. levels/platformer.txt");
+    if (!fs::is_regular_file(status))
+        throw fileError(found,
+                        "is not a regular file (a device or a pipe); a level is a text file");
+    const auto size = fs::file_size(found, error);
+    if (!error && size > static_cast<std::uintmax_t>(maxFileBytes))
+        throw fileError(found, "is " + std::to_string(size) +
+                                   " bytes; a level file may be at most " +
+                                   std::to_string(maxFileBytes) + " bytes (1 MiB)");
+
+    std::ifstream file(found, std::ios::binary);
     if (!file)
-        throw LevelFileError("Hitbox: cannot read level file '" + path +
-                             "' (check its permissions)");
-    std::ostringstream text;
-    text << file.rdbuf();
-    return parse(text.str(), path);
+        throw fileError(found, std::string("cannot be read: ") + std::strerror(errno));
+    // Read one byte past the limit: a file that grew since it was measured is still caught.
+    std::string text(static_cast<std::size_t>(maxFileBytes) + 1, '\0');
+    file.read(&text[0], static_cast<std::streamsize>(text.size()));
+    if (file.bad())
+        throw fileError(found, "cannot be read (an error while reading)");
+    text.resize(static_cast<std::size_t>(file.gcount()));
+    if (text.size() > static_cast<std::size_t>(maxFileBytes))
+        throw fileError(found, "is over " + std::to_string(maxFileBytes) +
+                                   " bytes; a level file may be at most that (1 MiB)");
+    return parse(text, found);
 }
 
 sf::Vector2f TileMap::getSizeInPixels() const

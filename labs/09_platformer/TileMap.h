@@ -42,12 +42,20 @@ class TileMap
 public:
     static constexpr float tileSize = 48.f; // pixels, the same on both axes
 
+    // A level file may be at most this big (1 MiB: a 1000 x 1000 tile level fits).
+    static constexpr long long maxFileBytes = 1 << 20;
+
     // Reads a level from text. `sourceName` (usually the file's path) starts every error
-    // message. Throws LevelFileError.
+    // message. Lines end in \n or \r\n; a UTF-8 byte-order mark at the start is skipped.
+    // A byte that is not a tile is named escaped (\r, \0, \xEF), never printed raw.
+    // Throws LevelFileError.
     static TileMap parse(const std::string& text, const std::string& sourceName);
-    // Reads "assets/<relativePath>", e.g. "levels/platformer.txt". Throws hitbox::AssetError
-    // (missing file: names the path and the fix) or LevelFileError (bad contents).
-    static TileMap load(const std::string& relativePath);
+    // Reads a level file: a relative path such as "levels/platformer.txt" is looked up in
+    // assets/, an absolute path is used as it is. Only a regular file of at most maxFileBytes
+    // is read. Throws std::invalid_argument for "" (a usage mistake), hitbox::AssetError
+    // (missing: names the path and the fix) or LevelFileError (a folder, a device or a pipe,
+    // unreadable, too big, or bad contents), each with one line saying which.
+    static TileMap load(const std::string& path);
 
     int getColumns() const { return columns; }
     int getRows() const { return rows; }

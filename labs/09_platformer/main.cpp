@@ -6,8 +6,8 @@
 // a speed cap against tunnelling, and speculative contacts as the other cure (seeds 000, 001).
 // Keys: A/D or arrows run, Space/W jump, S dive (very fast, downwards), C speed cap on/off,
 //       X speculative contacts on/off, R restart, plus the shared keys (F1 debug view).
-// Options: --level levels/NAME.txt loads another level from assets/;
-//          --demo 1 makes the player run right and jump by itself (lectures, screenshots).
+// Options: --level levels/NAME.txt loads another level from assets/ (or a full path);
+//          --demo on makes the player run right and jump by itself (lectures, screenshots).
 #include "PlatformerLevel.h"
 
 #include "hitbox/app/App.h"
@@ -21,7 +21,7 @@ int main(int argc, char* argv[])
                        {
                            auto level = std::make_unique<PlatformerLevel>(
                                TileMap::load(options.get("--level", "levels/platformer.txt")));
-                           level->setDemo(options.get("--demo", "0") != "0");
+                           level->setDemo(options.onOff("--demo", false));
                            return level;
                        });
 }

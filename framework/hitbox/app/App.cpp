@@ -1,6 +1,7 @@
 #include "hitbox/app/App.h"
 
 #include "hitbox/app/Assets.h"
+#include "hitbox/app/Display.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/private/Window.h"
 
@@ -14,26 +15,6 @@ namespace hitbox
 namespace
 {
 
-const char* usage = "options: --headless  --frames N  --seconds S  --screenshot FILE.png  "
-                    "--debug  --seed N";
-
-long long parseCount(const std::string& option, const std::string& text)
-{
-    std::size_t used = 0;
-    long long value = -1;
-    try
-    {
-        value = std::stoll(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used != text.size() || value < 0)
-        throw std::invalid_argument(option + " needs a whole number >= 0, not '" + text + "'");
-    return value;
-}
-
 int runHeadless(Level& level, const Options& options, const ProgramInfo& info)
 {
     const long long frames = options.frames >= 0 ? options.frames : 600;
@@ -44,54 +25,6 @@ int runHeadless(Level& level, const Options& options, const ProgramInfo& info)
 }
 
 } // namespace
-
-std::string Options::get(const std::string& name, const std::string& fallback) const
-{
-    const auto found = extra.find(name);
-    return found == extra.end() ? fallback : found->second;
-}
-
-Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info)
-{
-    Options options;
-    for (int i = 1; i < argc; ++i)
-    {
-        const std::string option = argv[i];
-        auto value = [&]() -> std::string
-        {
-            if (i + 1 >= argc)
-                throw std::invalid_argument(option + " needs a value");
-            return argv[++i];
-        };
-        if (option == "--headless")
-            options.headless = true;
-        else if (option == "--debug")
-            options.debugBoxes = true;
-        else if (option == "--frames")
-            options.frames = parseCount(option, value());
-        else if (option == "--seconds")
-        {
-            const std::string text = value();
-            options.frames = parseCount(option, text) * static_cast<long long>(stepsPerSecond);
-        }
-        else if (option == "--screenshot")
-            options.screenshotPath = value();
-        else if (option == "--seed")
-            options.seed = static_cast<unsigned>(parseCount(option, value()));
-        else
-        {
-            bool known = false;
-            for (const std::string& extraOption : info.extraOptions)
-                known = known || extraOption == option;
-            if (!known)
-                throw std::invalid_argument("unknown option '" + option + "'");
-            options.extra[option] = value();
-        }
-    }
-    if (options.headless && !options.screenshotPath.empty())
-        throw std::invalid_argument("--screenshot draws a picture, so it cannot be --headless");
-    return options;
-}
 
 void simulate(Level& level, long long frames)
 {
@@ -120,17 +53,6 @@ sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize)
     return {0.f, (1.f - height) / 2.f, 1.f, height};
 }
 
-bool hasDisplay()
-{
-#if defined(_WIN32) || defined(__APPLE__)
-    return true;
-#else
-    const char* x11 = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
-#endif
-}
-
 int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel)
 {
     Options options;
@@ -140,17 +62,16 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
     }
     catch (const std::invalid_argument& error)
     {
-        std::cerr << info.title << ": " << error.what() << "\n" << usage;
-        for (const std::string& extra : info.extraOptions)
-            std::cerr << "  " << extra << " VALUE";
-        std::cerr << std::endl;
+        std::cerr << info.title << ": " << error.what() << std::endl;
         return 2;
     }
-    if (!options.headless && !hasDisplay())
+    const DisplayCheck display =
+        options.headless ? DisplayCheck{true, "", nullptr} : checkDisplay();
+    if (!display.available)
     {
         // SFML aborts (uncatchably) if it opens a window with no display: check first.
-        std::cerr << info.title
-                  << ": no display found. Run with --headless --frames N to simulate without "
+        std::cerr << info.title << ": no display found (" << display.reason
+                  << "). Run with --headless --frames N to simulate without "
                      "a window, or start it under a display (e.g. xvfb-run -a).\n";
         return 2;
     }

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "hitbox/app/Level.h"
+#include "hitbox/app/Options.h"
 
 #include <SFML/Graphics/Rect.hpp>
 
@@ -35,29 +36,7 @@ namespace hitbox
 constexpr float stepsPerSecond = 120.f;
 constexpr float stepSeconds = 1.f / stepsPerSecond;
 
-struct ProgramInfo
-{
-    std::string title;                          // the window title, e.g. "Pong"
-    std::vector<std::string> extraOptions = {}; // options this program reads, each with a value
-};
-
-struct Options
-{
-    bool headless = false;
-    long long frames = -1; // -1: not given
-    std::string screenshotPath;
-    bool debugBoxes = false;
-    unsigned seed = 1;
-    std::map<std::string, std::string> extra; // the ProgramInfo::extraOptions that were given
-
-    // The value of an extra option, or `fallback` when it was not given.
-    std::string get(const std::string& name, const std::string& fallback) const;
-};
-
 using LevelFactory = std::function<std::unique_ptr<Level>(const Options&)>;
-
-// Reads the command line. Throws std::invalid_argument with a one-line message.
-Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info);
 
 // Runs the program; returns main()'s exit code (0 fine, 1 error, 2 bad usage / no display).
 int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel);
@@ -68,8 +47,5 @@ void simulate(Level& level, long long frames);
 // The part of a window, as fractions of its size (a view's viewport), that shows a world
 // of `worldSize` as large as possible without stretching: bars fill the rest (letterbox).
 sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
-
-// True when a window can be opened (on Linux: DISPLAY or WAYLAND_DISPLAY is set).
-bool hasDisplay();
 
 } // namespace hitbox

@@ -3,6 +3,7 @@
 #include <SFML/System/Err.hpp>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -17,9 +18,11 @@ namespace hitbox
 namespace
 {
 
+// Exists at all: opening it here would block on a pipe, and an unreadable file is not missing.
 bool fileExists(const std::string& path)
 {
-    return std::ifstream(path).good();
+    std::error_code error;
+    return std::filesystem::exists(path, error);
 }
 
 std::string programFolder()

@@ -3,12 +3,11 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Screenshot.h"
 #include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics.hpp>
 
-#include <cstdio>
-#include <ctime>
 #include <iostream>
 #include <string>
 
@@ -72,26 +71,6 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
         paused.setPosition((world.x - size.width) / 2.f, 12.f);
         target.draw(paused);
     }
-}
-
-// Writes to a temporary name first, so a failed save never leaves half a file behind.
-bool writePng(const sf::Image& image, const std::string& path)
-{
-    const std::string partial = path + ".partial.png";
-    if (!image.saveToFile(partial))
-    {
-        std::remove(partial.c_str());
-        return false;
-    }
-    return std::rename(partial.c_str(), path.c_str()) == 0;
-}
-
-std::string screenshotName()
-{
-    char stamp[32] = {};
-    const std::time_t now = std::time(nullptr);
-    std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
-    return std::string("screenshot-") + stamp + ".png";
 }
 
 sf::View worldView(const Level& level, sf::Vector2u windowSize)
@@ -183,11 +162,12 @@ int runWindow(Level& level, const Options& options, const ProgramInfo& info)
                     sf::Texture capture;
                     capture.create(window.getSize().x, window.getSize().y);
                     capture.update(window);
-                    const std::string path = screenshotName();
-                    if (writePng(capture.copyToImage(), path))
+                    const std::string path = freeScreenshotName("", screenshotStamp());
+                    const SaveResult saved = saveImage(capture.copyToImage(), path);
+                    if (saved)
                         std::cout << "Saved " << path << std::endl;
                     else
-                        std::cerr << "Could not write " << path << ": is the folder writable?"
+                        std::cerr << "Could not save " << path << ": " << saved.problem
                                   << std::endl;
                 }
                 else if (key == sf::Keyboard::Escape && !level.handleEscape())
@@ -245,10 +225,11 @@ int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info
     canvas.setView(sf::View(sf::FloatRect(0.f, 0.f, world.x, world.y)));
     drawFrame(canvas, level, font, settings);
     canvas.display();
-    if (!writePng(canvas.getTexture().copyToImage(), options.screenshotPath))
+    const SaveResult saved = saveImage(canvas.getTexture().copyToImage(), options.screenshotPath);
+    if (!saved)
     {
-        std::cerr << info.title << ": could not write '" << options.screenshotPath
-                  << "'. Fix: check that the folder exists and is writable." << std::endl;
+        std::cerr << info.title << ": could not save '" << options.screenshotPath
+                  << "': " << saved.problem << std::endl;
         return 1;
     }
     std::cout << info.title << ": saved " << options.screenshotPath << std::endl;

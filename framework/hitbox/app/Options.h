@@ -1,0 +1,58 @@
+// Options.h - the command line every Hitbox program shares, and typed getters for a
+// program's own options, all with ONE message format:
+//     Lab 8 - Many objects: --balls needs a whole number from 1 to 20000, not 'abc'
+// A bad value throws std::invalid_argument; hitbox::run prints the line and exits with 2.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hitbox
+{
+
+struct ProgramInfo
+{
+    std::string title;                          // the window title, e.g. "Pong"
+    std::vector<std::string> extraOptions = {}; // options this program reads, each with a value
+};
+
+// The largest --seconds (--frames: as many steps): about three years of simulated time, far
+// beyond any run anyone waits for, and small enough that a frame count never overflows.
+constexpr long long maxSeconds = 100'000'000;
+
+struct Options
+{
+    bool headless = false;
+    long long frames = -1; // -1: not given
+    std::string screenshotPath;
+    bool debugBoxes = false;
+    unsigned seed = 1;
+    std::map<std::string, std::string> extra; // the ProgramInfo::extraOptions that were given
+
+    // The value of an extra option as typed, or `fallback` when it was not given.
+    std::string get(const std::string& name, const std::string& fallback) const;
+
+    // The typed getters: `fallback` when the option was not given; a value that is not of
+    // the type or outside lowest..highest (inclusive) throws std::invalid_argument.
+    // Digits only, an optional leading '-': "1e9", "12abc", " 5" and "+5" are refused.
+    long long wholeNumber(const std::string& name, long long fallback, long long lowest,
+                          long long highest) const;
+    // A decimal number such as 0.5 or 2; never NaN or infinite.
+    double number(const std::string& name, double fallback, double lowest, double highest) const;
+    // Exactly "on" or "off".
+    bool onOff(const std::string& name, bool fallback) const;
+    // One of `choices`, spelled exactly (`fallback` need not be one: e.g. "" for none).
+    std::string oneOf(const std::string& name, const std::string& fallback,
+                      const std::vector<std::string>& choices) const;
+};
+
+// Reads the command line. Throws std::invalid_argument with a one-line message.
+Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info);
+
+// `text` made safe for a one-line message: printable ASCII stays, every other byte is
+// written as an escape (\r, \t, \0, \xEF), and anything past `longest` bytes becomes "...".
+std::string printable(const std::string& text, std::size_t longest = 60);
+
+} // namespace hitbox

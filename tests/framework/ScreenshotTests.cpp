@@ -1,0 +1,134 @@
+// Screenshots are all there or not there (issue 19): no "saved" for a file that was not,
+// no half-written file under the final name, no temporary left behind.
+#include "hitbox/app/Screenshot.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#if defined(__linux__)
+#include <csignal>
+#include <sys/resource.h>
+#endif
+
+namespace fs = std::filesystem;
+
+namespace
+{
+// A fresh empty folder for one test.
+fs::path emptyFolder(const std::string& name)
+{
+    const fs::path folder = fs::temp_directory_path() / ("hitbox-screenshot-" + name);
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+sf::Image noisyImage()
+{
+    // Noise does not compress: the PNG is far bigger than the file-size limit used below.
+    sf::Image image;
+    image.create(256, 256);
+    unsigned value = 12345;
+    for (unsigned y = 0; y < 256; ++y)
+        for (unsigned x = 0; x < 256; ++x)
+        {
+            value = value * 1103515245u + 12345u;
+            image.setPixel(x, y,
+                           sf::Color(static_cast<std::uint8_t>(value >> 24),
+                                     static_cast<std::uint8_t>(value >> 16),
+                                     static_cast<std::uint8_t>(value >> 8)));
+        }
+    return image;
+}
+
+std::size_t filesIn(const fs::path& folder)
+{
+    std::size_t count = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder))
+        ++count;
+    return count;
+}
+} // namespace
+
+TEST(Screenshot, AGoodSaveLeavesExactlyTheFileAndItDecodes)
+{
+    const fs::path folder = emptyFolder("good");
+    const std::string path = (folder / "shot.png").string();
+    const sf::Image image = noisyImage();
+    EXPECT_TRUE(hitbox::saveImage(image, path));
+    sf::Image readBack;
+    ASSERT_TRUE(readBack.loadFromFile(path));
+    EXPECT_EQ(readBack.getSize(), image.getSize());
+    EXPECT_EQ(filesIn(folder), 1u);
+}
+
+TEST(Screenshot, AFolderADeviceAndAMissingFolderAreRefusedAndLeaveNothing)
+{
+    const fs::path folder = emptyFolder("refused");
+    fs::create_directory(folder / "taken.png");
+    const hitbox::SaveResult onFolder =
+        hitbox::saveImage(noisyImage(), (folder / "taken.png").string());
+    EXPECT_FALSE(onFolder);
+    EXPECT_EQ(onFolder.problem, "it is a folder");
+    EXPECT_EQ(filesIn(folder), 1u); // no NAME.partial.png or other leftover
+
+    const hitbox::SaveResult noFolder =
+        hitbox::saveImage(noisyImage(), (folder / "missing" / "a.png").string());
+    EXPECT_FALSE(noFolder);
+    EXPECT_NE(noFolder.problem.find("does not exist"), std::string::npos) << noFolder.problem;
+    EXPECT_FALSE(hitbox::saveImage(noisyImage(), (folder / "shot.txt").string()));
+#if defined(__linux__)
+    const hitbox::SaveResult onDevice = hitbox::saveImage(noisyImage(), "/dev/full");
+    EXPECT_FALSE(onDevice);
+    EXPECT_EQ(onDevice.problem, "it is not a regular file (a device or a pipe)");
+#endif
+}
+
+#if defined(__linux__)
+// A full disk, made without root: a file-size limit makes every write past 4 KiB fail (with
+// SIGXFSZ ignored, write() returns EFBIG), as a disk with 4 KiB free would.
+TEST(Screenshot, AFullDiskIsReportedAndTheOldFileIsKept)
+{
+    const fs::path folder = emptyFolder("full");
+    const std::string path = (folder / "shot.png").string();
+    std::ofstream(path) << "the previous picture";
+
+    rlimit previous{};
+    getrlimit(RLIMIT_FSIZE, &previous);
+    const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit small = previous;
+    small.rlim_cur = 4096;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+    const hitbox::SaveResult result = hitbox::saveImage(noisyImage(), path);
+    setrlimit(RLIMIT_FSIZE, &previous);
+    std::signal(SIGXFSZ, previousHandler);
+
+    EXPECT_FALSE(result);
+    EXPECT_EQ(result.problem, "the write did not complete (is the disk full?)");
+    EXPECT_EQ(filesIn(folder), 1u); // the temporary is gone
+    std::ifstream kept(path);
+    std::string text;
+    std::getline(kept, text);
+    EXPECT_EQ(text, "the previous picture");
+}
+#endif
+
+TEST(Screenshot, ThreePressesInOneSecondGiveThreeFiles)
+{
+    const fs::path folder = emptyFolder("presses");
+    std::set<std::string> names;
+    for (int press = 0; press < 3; ++press)
+    {
+        const std::string name = hitbox::freeScreenshotName(folder.string(), "20261123-200000");
+        EXPECT_TRUE(hitbox::saveImage(noisyImage(), name)) << name;
+        names.insert(name);
+    }
+    EXPECT_EQ(names.size(), 3u);
+    EXPECT_EQ(filesIn(folder), 3u);
+    EXPECT_TRUE(fs::exists(folder / "screenshot-20261123-200000-3.png"));
+}
