@@ -4,15 +4,19 @@
 # answer: the tests of task n fail on it, check-exercises.sh proves that). The class grader
 # must give that submission every task's mark except task n's. A cascade (task n's mistake
 # failing another task's tests) fails this check, naming the lab, the task and the tests.
-# Usage: scripts/check-fair-marks.sh [--lab NAME]... [WORK_DIR]  (default build/check-fair-marks)
+# Usage: scripts/check-fair-marks.sh [--lab NAME]... [--build DIR] [WORK_DIR]
+#   WORK_DIR default build/check-fair-marks; --build DIR the instructor's build to grade
+#   with (default build/grading; CI passes build/debug, already built)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 chosen=()
+build_options=()
 work=build/check-fair-marks
 while [[ $# -gt 0 ]]; do
     case $1 in
         --lab) chosen+=("$2"); shift 2 ;;
+        --build) build_options=(--build "$2"); shift 2 ;;
         *) work=$1; shift ;;
     esac
 done
@@ -39,7 +43,7 @@ for lab in "${labs[@]}"; do
     lab_options+=(--lab "$lab")
 done
 
-./scripts/grade-class.sh "$work/class" "${lab_options[@]}" --out "$work/grades"
+./scripts/grade-class.sh "$work/class" "${lab_options[@]}" --out "$work/grades" "${build_options[@]}"
 
 # Each submission: a mark for every task of its lab but the one left undone.
 problems=0

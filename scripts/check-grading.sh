@@ -11,12 +11,22 @@
 #   disabled-tests                         solution of task 1 only, and its own copy of the
 #                                          grading tests with every test renamed DISABLED_
 #                                          (ignored): task 1 only
+#   touching-wall                          the solution with the wall test written <= / >=
+#                                          (touching counts as a hit): tasks 2 and 3 only
 #   define-test                            starter + "#define TEST(...)" in Ball.h (ignored)
 #                                          and in BallsLevel.cpp (refused): no task
-# Usage: scripts/check-grading.sh [WORK_DIR]    (default build/check-grading)
+# Usage: scripts/check-grading.sh [--build DIR] [WORK_DIR]    (default build/check-grading)
+#   --build DIR  the instructor's build to grade with (default build/grading; CI: build/debug)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-work=${1:-build/check-grading}
+work=build/check-grading
+build_options=()
+while [[ $# -gt 0 ]]; do
+    case $1 in
+        --build) build_options=(--build "$2"); shift 2 ;;
+        *) work=$1; shift ;;
+    esac
+done
 lab=labs/02_bouncing_balls
 generator=framework/cmake/HitboxMakeExercise.cmake
 rm -rf "$work/class" "$work/grades"
@@ -70,11 +80,17 @@ mkdir -p "$class/disabled-tests/tests/labs/02_bouncing_balls"
 sed -E 's/^TEST\(([A-Za-z0-9]+), /TEST(\1, DISABLED_/' tests/labs/02_bouncing_balls/BallsGradingTests.cpp \
     >"$class/disabled-tests/tests/labs/02_bouncing_balls/BallsGradingTests.cpp"
 
+# The edge rule: a wall test written <= / >= (touching counts as a hit) must fail task 1.
+submission touching-wall 1,2,3
+sed -i -E 's/center\.(x|y) < radius \|\| center\.(x|y) > /center.\1 <= radius || center.\2 >= /' \
+    "$class/touching-wall/$lab/Ball.cpp"
+[[ $(grep -c '<= radius ||' "$class/touching-wall/$lab/Ball.cpp") -eq 2 ]]
+
 submission define-test ""
 sed -i 's/^#pragma once/&\n#define TEST(suite, name) void suite##name()/' "$class/define-test/$lab/Ball.h"
 sed -i '1i #define TEST(suite, name) void suite##name()' "$class/define-test/$lab/BallsLevel.cpp"
 
-./scripts/grade-class.sh "$class" --lab lab02_bouncing_balls --out "$work/grades"
+./scripts/grade-class.sh "$class" --lab lab02_bouncing_balls --out "$work/grades" "${build_options[@]}"
 
 # expect STUDENT TASKS_WITH_A_MARK: the marks in the gradebook are exactly those.
 problems=0
@@ -93,6 +109,7 @@ for student in solution solution-zip solution-git starter exit-in-constructor ex
     esac
 done
 expect disabled-tests 1
+expect touching-wall 2,3
 grep -q 'ignored' "$work/grades/students/disabled-tests.md" &&
     grep -q 'tests/labs/02_bouncing_balls/BallsGradingTests.cpp' "$work/grades/students/disabled-tests.md" ||
     { echo "check-grading: the feedback does not list the ignored test file" >&2; problems=$((problems + 1)); }

@@ -40,6 +40,7 @@ keep() {
         framework/* | assets/* | tests/support/* | tests/geometry/* | tests/framework/* | tests/labs/*) return 0 ;;
         CMakeLists.txt | CMakePresets.json | .clang-format | .gitignore | tests/CMakeLists.txt) return 0 ;;
         scripts/grade.sh | scripts/lab-tests.sh | scripts/install-deps.sh) return 0 ;;
+        scripts/grading/grader.py | scripts/grading/task-mark.sh) return 0 ;;
         labs/CMakeLists.txt | labs/[0-9][0-9]_*/*) return 0 ;;
     esac
     return 1
@@ -86,6 +87,60 @@ set(HITBOX_HANDOUT ON)
 EOF
 
 mapfile -t labs < <(lab_names)
+
+# The files a student edits, from the solution's task markers (the grader's one list; the
+# handout has no markers left to derive it from).
+grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' labs --include='*.cpp' --include='*.h' --include='*.hpp' |
+    sort >"$out/scripts/grading/student-files.txt"
+
+# GitHub Classroom: on every push the same grader grades the repository once, then one
+# Classroom test per task (1 point each) reads that task's mark from the gradebook.
+mkdir -p "$out/.github/workflows"
+{
+    cat <<'EOF'
+# GitHub Classroom autograding (written by make-handout.sh): grades every lab on each push
+# with scripts/grading/grader.py and reports one test per task, 1 point each.
+name: Autograding
+on: [push, workflow_dispatch, repository_dispatch]
+permissions:
+  checks: write
+  actions: read
+  contents: read
+jobs:
+  grade:
+    runs-on: ubuntu-latest
+    if: github.actor != 'github-classroom[bot]'
+    timeout-minutes: 30
+    steps:
+      - uses: actions/checkout@v4
+      - name: Install the compiler, CMake, SFML and GoogleTest
+        run: sudo apt-get update -qq && sudo apt-get install -y -qq g++ cmake pkg-config libsfml-dev libgtest-dev libgmock-dev
+      - name: Grade every lab
+        run: python3 scripts/grading/grader.py "$GITHUB_WORKSPACE" --out grades --build build/grading
+      - name: Feedback
+        if: always()
+        run: cat grades/students/*.md >>"$GITHUB_STEP_SUMMARY"
+EOF
+    runners=()
+    for lab in "${labs[@]}"; do
+        for task in $(lab_tasks "$(lab_folder "$lab")"); do
+            id="${lab%%_*}_task_$task"
+            runners+=("$id")
+            printf '%s\n' "      - name: $lab task $task" "        id: $id" \
+                "        uses: classroom-resources/autograding-command-grader@v1" "        with:" \
+                "          test-name: $lab task $task" \
+                "          command: scripts/grading/task-mark.sh grades/grades.csv $lab $task" \
+                "          timeout: 1" "          max-score: 1"
+        done
+    done
+    printf '%s\n' "      - name: Report the points" "        if: always()" \
+        "        uses: classroom-resources/autograding-grading-reporter@v1" "        env:"
+    for id in "${runners[@]}"; do
+        echo "          ${id^^}_RESULTS: \"\${{ steps.$id.outputs.result }}\""
+    done
+    printf '%s\n' "        with:" "          runners: $(IFS=,; echo "${runners[*]}")"
+} >"$out/.github/workflows/classroom.yml"
+
 {
     cat <<'EOF'
 # Hitbox labs — student handout

@@ -75,7 +75,7 @@ class Lab:
 
     def tasks(self):
         marked = set()
-        for relative in self.student_files:
+        for relative in [] if HANDOUT else self.student_files:
             marked |= {m.group(2) for m in TASK_MARKER.finditer((REPO / self.folder / relative).read_text())}
         return sorted(marked | {self.task_of(t) for t in self.tests if self.task_of(t) != "-"}, key=int)
 
@@ -120,9 +120,12 @@ class InstructorBuild:
             if self.launcher:
                 configure.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
             run(configure, env=env, stdout=subprocess.DEVNULL)
+        elif not (self.dir / "compile_commands.json").exists():
+            # An existing build (e.g. CI's build/debug): only ask it for the compile commands.
+            run(["cmake", "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON", str(self.dir)], env=env, stdout=subprocess.DEVNULL)
         targets = []
         for lab in self.labs:
-            targets += [f"{lab.name}_tests", f"{lab.name}_exercise_level"]
+            targets += [f"{lab.name}_tests"] + ([] if HANDOUT else [f"{lab.name}_exercise_level"])
         run(["cmake", "--build", str(self.dir), "--parallel", str(self.jobs), "--target", *targets],
             env=env, stdout=subprocess.DEVNULL)
         commands = json.loads((self.dir / "compile_commands.json").read_text())
@@ -136,7 +139,7 @@ class InstructorBuild:
             lab.link_dir = program.parent
             lab.link = (program.parent / "CMakeFiles" / f"{lab.name}_tests.dir" / "link.txt").read_text().strip()
             lab.level_archive = f"lib{lab.name}_level.a"
-            lab.starter_dir = self.dir / lab.folder / "exercise"
+            lab.starter_dir = REPO / lab.folder if HANDOUT else self.dir / lab.folder / "exercise"
 
 
 def list_tests(listing):
@@ -218,8 +221,8 @@ class Submission:
 
 
 class TestResult:
-    def __init__(self, name, passed, message):
-        self.name, self.passed, self.message = name, passed, message
+    def __init__(self, name, passed, message, seconds=0.0):
+        self.name, self.passed, self.message, self.seconds = name, passed, message, seconds
 
 
 shared_locks = {}
@@ -322,7 +325,13 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
         notes.append("did not build: no test of this lab ran")
         message = "did not build:\n" + "\n".join(errors).replace(str(lab_copy) + "/", "")
         return {"results": [TestResult(t, False, message) for t in lab.tests], "notes": notes}
-    return {"results": [run_one_test(program, test, work) for test in lab.tests], "notes": notes}
+    results = []
+    for test in lab.tests:
+        started = time.monotonic()
+        result = run_one_test(program, test, work)
+        result.seconds = time.monotonic() - started
+        results.append(result)
+    return {"results": results, "notes": notes}
 
 
 def run_one_test(program, test, work):
@@ -425,7 +434,8 @@ def write_reports(report, labs, out):
         junit.append(f'  <testsuite name="{lab.name}" tests="{len(graded["results"])}" failures="{failures}">')
         for result in graded["results"]:
             suite, name = result.name.split(".", 1)
-            junit.append(f'    <testcase classname="{lab.name}.{escape(suite)}" name="{escape(name)}">')
+            junit.append(f'    <testcase classname="{lab.name}.{escape(suite)}" name="{escape(name)}" '
+                         f'time="{result.seconds:.3f}">')
             if not result.passed:
                 junit.append(f'      <failure message="{escape(result.message.splitlines()[0] if result.message else "failed", {chr(34): "&quot;"})}">'
                              f"{escape(result.message)}</failure>")
@@ -451,7 +461,7 @@ def write_reports(report, labs, out):
 
 def main():
     parser = argparse.ArgumentParser(description="Grade lab submissions against the instructor's tree.")
-    parser.add_argument("submissions", nargs="+", help="a student's folder, .zip or git repository, or "
+    parser.add_argument("submissions", nargs="*", help="a student's folder, .zip or git repository, or "
                         "with --class a folder holding one per student")
     parser.add_argument("--class", dest="whole_class", action="store_true")
     parser.add_argument("--lab", action="append", help="grade only this lab (repeatable)")
@@ -459,6 +469,8 @@ def main():
     parser.add_argument("--build", default=str(REPO / "build" / "grading"), help="the instructor's build")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--gradescope", help="also copy the (single) submission's results.json here")
+    parser.add_argument("--prepare-only", action="store_true",
+                        help="only build the framework and the instructor's tests (an autograder's setup)")
     options = parser.parse_args()
 
     labs = all_labs()
@@ -467,6 +479,10 @@ def main():
         if unknown:
             sys.exit(f"grade: no lab called {', '.join(sorted(unknown))}; the labs: {' '.join(l.name for l in labs)}")
         labs = [lab for lab in labs if lab.name in options.lab]
+    if options.prepare_only:
+        InstructorBuild(options.build, labs, options.jobs).prepare()
+        print(f"grade: instructor build ready in {options.build}")
+        return
     sources = []
     for given in map(Path, options.submissions):
         if options.whole_class:
@@ -500,8 +516,11 @@ def main():
                 all_rows += rows
                 marks = sum(r[5] for r in rows if r[5] != "")
                 possible = sum(1 for r in rows if r[5] != "")
+                slowest = max((r for g in report["labs"].values() for r in g["results"]),
+                              key=lambda r: r.seconds, default=None)
                 print(f"[{done}/{len(sources)}] {report['student']}: {marks}/{possible} tasks "
-                      f"({report['seconds']:.1f} s){' - ' + report['error'] if report['error'] else ''}", flush=True)
+                      f"({report['seconds']:.1f} s{f'; slowest test {slowest.seconds:.1f} s' if slowest else ''})"
+                      f"{' - ' + report['error'] if report['error'] else ''}", flush=True)
             if options.gradescope:
                 Path(options.gradescope).parent.mkdir(parents=True, exist_ok=True)
                 Path(options.gradescope).write_text(json.dumps(gradescope, indent=1) + "\n")
