@@ -14,7 +14,8 @@ if [[ $# -ne 2 ]]; then
 fi
 lab=$1
 out=$(realpath -m "$2")
-if ! lab_names | grep -qx "$lab"; then
+mapfile -t labs < <(lab_names)
+if ! printf '%s\n' "${labs[@]}" | grep -qx "$lab"; then
     echo "make-gradescope: no lab called '$lab'; the labs: $(lab_names | paste -sd' ' -)" >&2
     exit 2
 fi

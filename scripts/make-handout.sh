@@ -169,7 +169,7 @@ runs without a window, `--screenshot out.png` saves one frame.
 builds the lab's grading tests against your code, runs them and prints, for each task,
 how many of its tests pass and fail (JUnit XML in `build/debug/grade-results/`). A task is
 done when none of its tests fail. Each test's name says what it checks, e.g.
-`Task2BounceOffWalls.BallNeverLeavesTheWindow`; the full output is in
+`Task1BounceOffTheWalls.BallNeverLeavesTheWindow`; the full output is in
 `build/debug/grade-results/<lab>.log`. A test that crashes, or runs longer than 60 seconds
 (an endless loop; `LAB_TEST_TIMEOUT=10 ./scripts/grade.sh` waits 10 instead), counts as
 failed and the table says so. A lab that does not compile shows "did not build" (the
@@ -193,6 +193,23 @@ The framework (`framework/hitbox/`) is yours to read: `GameObject.h`, `Collision
 `Input.h` are the classes the labs use.
 EOF
 } >"$out/README.md"
+
+# The lab sheets speak of the course repository's targets too (<lab>_exercise, the
+# solution <lab>); in the handout the student's program is <lab> and its tests <lab>_tests.
+for sheet in "$out"/labs/[0-9][0-9]_*/README.md; do
+    [[ -f $sheet ]] || continue
+    perl -0pi -e 's/\(In the course repository[^)]*\)[ \t]*\n?//g; s/^.*# the solution\n//mg;
+        s/(lab\d\d_\w+?)_exercise_tests\b/$1_tests/g; s/(lab\d\d_\w+?)_exercise\b/$1/g' "$sheet"
+done
+# Every target the handout's text names must exist there.
+mapfile -t named < <(grep -ohE '\blab[0-9]{2}_[A-Za-z0-9_]+' "$out/README.md" "$out"/labs/*/README.md | sort -u)
+for target in "${named[@]}"; do
+    if ! printf '%s\n' "${labs[@]/%/_tests}" "${labs[@]}" | grep -qx "$target"; then
+        echo "make-handout: the handout names a target it does not have: $target" >&2
+        grep -ln "$target" "$out/README.md" "$out"/labs/*/README.md >&2
+        exit 1
+    fi
+done
 
 # No solution may leak: every solution-only line (a line inside a BEGIN TASK block that
 # appears nowhere else in any lab, not even as starter code) must be absent from the
