@@ -40,6 +40,7 @@ keep() {
         framework/* | assets/* | tests/support/* | tests/geometry/* | tests/framework/* | tests/labs/*) return 0 ;;
         CMakeLists.txt | CMakePresets.json | .clang-format | .gitignore | tests/CMakeLists.txt) return 0 ;;
         scripts/grade.sh | scripts/lab-tests.sh | scripts/install-deps.sh) return 0 ;;
+        scripts/grading/grader.py | scripts/grading/task-mark.sh) return 0 ;;
         labs/CMakeLists.txt | labs/[0-9][0-9]_*/*) return 0 ;;
     esac
     return 1
@@ -86,6 +87,60 @@ set(HITBOX_HANDOUT ON)
 EOF
 
 mapfile -t labs < <(lab_names)
+
+# The files a student edits, from the solution's task markers (the grader's one list; the
+# handout has no markers left to derive it from).
+grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' labs --include='*.cpp' --include='*.h' --include='*.hpp' |
+    sort >"$out/scripts/grading/student-files.txt"
+
+# GitHub Classroom: on every push the same grader grades the repository once, then one
+# Classroom test per task (1 point each) reads that task's mark from the gradebook.
+mkdir -p "$out/.github/workflows"
+{
+    cat <<'EOF'
+# GitHub Classroom autograding (written by make-handout.sh): grades every lab on each push
+# with scripts/grading/grader.py and reports one test per task, 1 point each.
+name: Autograding
+on: [push, workflow_dispatch, repository_dispatch]
+permissions:
+  checks: write
+  actions: read
+  contents: read
+jobs:
+  grade:
+    runs-on: ubuntu-latest
+    if: github.actor != 'github-classroom[bot]'
+    timeout-minutes: 30
+    steps:
+      - uses: actions/checkout@v4
+      - name: Install the compiler, CMake, SFML and GoogleTest
+        run: sudo apt-get update -qq && sudo apt-get install -y -qq g++ cmake pkg-config libsfml-dev libgtest-dev libgmock-dev
+      - name: Grade every lab
+        run: python3 scripts/grading/grader.py "$GITHUB_WORKSPACE" --out grades --build build/grading
+      - name: Feedback
+        if: always()
+        run: cat grades/students/*.md >>"$GITHUB_STEP_SUMMARY"
+EOF
+    runners=()
+    for lab in "${labs[@]}"; do
+        for task in $(lab_tasks "$(lab_folder "$lab")"); do
+            id="${lab%%_*}_task_$task"
+            runners+=("$id")
+            printf '%s\n' "      - name: $lab task $task" "        id: $id" \
+                "        uses: classroom-resources/autograding-command-grader@v1" "        with:" \
+                "          test-name: $lab task $task" \
+                "          command: scripts/grading/task-mark.sh grades/grades.csv $lab $task" \
+                "          timeout: 1" "          max-score: 1"
+        done
+    done
+    printf '%s\n' "      - name: Report the points" "        if: always()" \
+        "        uses: classroom-resources/autograding-grading-reporter@v1" "        env:"
+    for id in "${runners[@]}"; do
+        echo "          ${id^^}_RESULTS: \"\${{ steps.$id.outputs.result }}\""
+    done
+    printf '%s\n' "        with:" "          runners: $(IFS=,; echo "${runners[*]}")"
+} >"$out/.github/workflows/classroom.yml"
+
 {
     cat <<'EOF'
 # Hitbox labs — student handout
@@ -114,7 +169,7 @@ runs without a window, `--screenshot out.png` saves one frame.
 builds the lab's grading tests against your code, runs them and prints, for each task,
 how many of its tests pass and fail (JUnit XML in `build/debug/grade-results/`). A task is
 done when none of its tests fail. Each test's name says what it checks, e.g.
-`Task2BounceOffWalls.BallNeverLeavesTheWindow`; the full output is in
+`Task1BounceOffTheWalls.BallNeverLeavesTheWindow`; the full output is in
 `build/debug/grade-results/<lab>.log`. A test that crashes, or runs longer than 60 seconds
 (an endless loop; `LAB_TEST_TIMEOUT=10 ./scripts/grade.sh` waits 10 instead), counts as
 failed and the table says so. A lab that does not compile shows "did not build" (the
@@ -138,6 +193,23 @@ The framework (`framework/hitbox/`) is yours to read: `GameObject.h`, `Collision
 `Input.h` are the classes the labs use.
 EOF
 } >"$out/README.md"
+
+# The lab sheets speak of the course repository's targets too (<lab>_exercise, the
+# solution <lab>); in the handout the student's program is <lab> and its tests <lab>_tests.
+for sheet in "$out"/labs/[0-9][0-9]_*/README.md; do
+    [[ -f $sheet ]] || continue
+    perl -0pi -e 's/\(In the course repository[^)]*\)[ \t]*\n?//g; s/^.*# the solution\n//mg;
+        s/(lab\d\d_\w+?)_exercise_tests\b/$1_tests/g; s/(lab\d\d_\w+?)_exercise\b/$1/g' "$sheet"
+done
+# Every target the handout's text names must exist there.
+mapfile -t named < <(grep -ohE '\blab[0-9]{2}_[A-Za-z0-9_]+' "$out/README.md" "$out"/labs/*/README.md | sort -u)
+for target in "${named[@]}"; do
+    if ! printf '%s\n' "${labs[@]/%/_tests}" "${labs[@]}" | grep -qx "$target"; then
+        echo "make-handout: the handout names a target it does not have: $target" >&2
+        grep -ln "$target" "$out/README.md" "$out"/labs/*/README.md >&2
+        exit 1
+    fi
+done
 
 # No solution may leak: every solution-only line (a line inside a BEGIN TASK block that
 # appears nowhere else in any lab, not even as starter code) must be absent from the

@@ -18,6 +18,8 @@
 #
 #   hitbox_add_lab_tests(lab02_bouncing_balls SOURCES BallsGradingTests.cpp)
 #
+# (plus, when they exist, the instructor's hidden variants tests/labs-hidden/NN_name/*.cpp:
+# the same behaviour with other numbers, left out of the handout, run by the class grader)
 # builds lab02_bouncing_balls_tests (against the solution; registered with ctest, label
 # `lab`, names prefixed "lab02_bouncing_balls.") and lab02_bouncing_balls_exercise_tests
 # (against the exercise; built but not registered: scripts/check-exercises.sh runs it to
@@ -32,6 +34,24 @@
 # In a student handout (scripts/make-handout.sh writes framework/cmake/HitboxHandout.cmake,
 # which sets HITBOX_HANDOUT) the lab folders already hold the exercise, so there is only one
 # version: <lab>_level, <lab> and <lab>_tests build and test the student's own code.
+#
+# THE LAB FORMAT (what a new lab needs for the build, the handout and the class grader):
+# - labs/NN_name/: CMakeLists.txt calling hitbox_add_lab, README.md (the lab sheet: tasks,
+#   keys, which test suites check each task) and the sources. What students write sits
+#   between "// BEGIN TASK n: title" and "// END TASK n". The files holding a marker are the
+#   student's files: the class grader (scripts/grading/grader.py) takes ONLY those from a
+#   submission; every other file of the lab is the instructor's. So put code the tests
+#   rely on, and that students must not change, in files without a marker.
+# - tests/labs/NN_name/: CMakeLists.txt calling hitbox_add_lab_tests. Suites are named
+#   Task<n><What> (Task2BounceOffWalls); a task earns its mark when all its tests pass.
+#   Each task's tests exercise that task's code alone: set the state up directly or call
+#   the task's function, never through another task's code, so one mistake costs one task
+#   (scripts/check-fair-marks.sh leaves each task undone in turn and fails on a cascade).
+#   Where a rule has an edge (walls, radii, tile bounds), test the touching case. Bound
+#   every loop by a step count: a test takes well under a second on the solution and on the
+#   starter (the grader stops a test after 10 s, as a last resort).
+# - tests/labs-hidden/NN_name/*.cpp (optional): the instructor's hidden variants, the same
+#   behaviour with other numbers; built into <lab>_tests, left out of the handout.
 include_guard(GLOBAL)
 include(GoogleTest)
 include(HitboxHandout OPTIONAL)
@@ -117,6 +137,12 @@ function(hitbox_add_lab_tests name)
                         "(no hitbox_add_lab(${name} ...) in labs/); its tests are skipped")
         return()
     endif()
+
+    # The instructor's hidden variants (tests/labs-hidden/NN_name/*.cpp, not in the handout).
+    get_filename_component(lab_folder "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
+    file(GLOB hidden_sources CONFIGURE_DEPENDS
+        "${PROJECT_SOURCE_DIR}/tests/labs-hidden/${lab_folder}/*.cpp")
+    list(APPEND LAB_SOURCES ${hidden_sources})
 
     add_executable(${name}_tests ${LAB_SOURCES})
     target_link_libraries(${name}_tests PRIVATE ${name}_level hitbox_test_support)

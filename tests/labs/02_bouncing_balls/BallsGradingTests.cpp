@@ -121,6 +121,26 @@ TEST(Task1BounceOffTheWalls, BallHittingAWallAtAnAngleKeepsItsSpeedAlongTheWall)
         << "a ball flying up into the top wall should come away downwards at the same speed";
 }
 
+TEST(Task1BounceOffTheWalls, BallSlidingAlongAWallIsNotHittingIt)
+{
+    // The edge rule: touching is not colliding. A ball exactly touching the top wall (and
+    // one touching the left wall), moving along it, never hits it: with <= instead of <
+    // it would "hit" every step and flash all the time.
+    const float r = radius();
+    const sf::Vector2f starts[] = {{600.f, r}, {r, 300.f}};
+    const sf::Vector2f velocities[] = {{testSpeed, 0.f}, {0.f, testSpeed}};
+    for (int i = 0; i < 2; ++i)
+    {
+        BallsLevel level = emptyLevel();
+        level.addBall(starts[i], velocities[i]);
+        run(level, 0.5f);
+        EXPECT_EQ(level.getBall(0).getHitCount(), 0)
+            << "a ball touching a wall at " << labtesting::text(starts[i])
+            << " and sliding along it is not hitting it (touching is not colliding)";
+        EXPECT_VEC_NEAR(level.getBall(0).getVelocity(), velocities[i], 0.001f);
+    }
+}
+
 TEST(Task2TestEachPairWithTheBoundingCircle, OverlappingBallsAreBothToldAboutTheHit)
 {
     BallsLevel level = emptyLevel();

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Tries the Gradescope autograder the way Gradescope runs it, in a fresh Debian root laid
+# out like Gradescope's image: the zip unpacked in /autograder/source, setup.sh run there
+# as root, the submission in /autograder/submission, /autograder/run_autograder run, and
+# /autograder/results/results.json checked (the solution gets every task, the starter none).
+# Needs root and a network mirror; not part of CI (it installs packages: minutes).
+# Usage: scripts/check-gradescope.sh ROOT [LAB]
+#   ROOT  an empty folder for the Debian root, or one made earlier by
+#         debootstrap --variant=minbase bookworm ROOT http://deb.debian.org/debian
+#   LAB   default lab02_bouncing_balls
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/lab-tests.sh
+root=$(realpath -m "${1:?usage: $0 ROOT [LAB]}")
+lab=${2:-lab02_bouncing_balls}
+folder=$(lab_folder "$lab")
+if [[ ! -x $root/bin/bash ]]; then
+    mirror=$(sed -n 's/^URIs: //p' /etc/apt/sources.list.d/debian.sources | head -n 1)
+    debootstrap --variant=minbase bookworm "$root" "${mirror:-http://deb.debian.org/debian}"
+fi
+cp /etc/resolv.conf "$root/etc/resolv.conf"
+
+# grade SOLVED_TASKS EXPECTED_SCORE: one Gradescope run on a submission of the lab's student
+# files (uploaded flat, as students upload files to Gradescope).
+first=yes
+grade() {
+    rm -rf "$root/autograder/submission" "$root/autograder/results"
+    mkdir -p "$root/autograder/submission" "$root/autograder/results"
+    while IFS= read -r source; do
+        cmake "-DINPUT=$source" "-DOUTPUT=$root/autograder/submission/$(basename "$source")" \
+            "-DSOLVED_TASKS=$1" -P framework/cmake/HitboxMakeExercise.cmake
+    done < <(grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' "$folder")
+    local inside='/autograder/run_autograder'
+    if [[ $first == yes ]]; then
+        # Gradescope's image build: the zip in /autograder/source, setup.sh run from there.
+        rm -rf "$root/autograder/source" "$root/autograder/build"
+        mkdir -p "$root/autograder/source"
+        ./scripts/make-gradescope.sh "$lab" "$root/autograder/autograder.zip"
+        (cd "$root/autograder/source" && unzip -q ../autograder.zip)
+        cp "$root/autograder/source/run_autograder" "$root/autograder/run_autograder"
+        inside="cd /autograder/source && bash ./setup.sh && $inside"
+        first=no
+    fi
+    unshare --mount --propagation private bash -c '
+        set -e
+        for fs in proc sys dev dev/pts; do mount --bind "/$fs" "$0/$fs"; done
+        chroot "$0" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
+            bash -c "$1"' "$root" "$inside"
+    python3 - "$root/autograder/results/results.json" "$2" <<'EOF'
+import json, sys
+results = json.load(open(sys.argv[1]))
+tests = results["tests"]
+assert all({"name", "score", "max_score", "output"} <= set(t) for t in tests), tests
+assert results["score"] == int(sys.argv[2]), f"score {results['score']}, expected {sys.argv[2]}"
+print(f"check-gradescope: results.json: score {results['score']}/{sum(t['max_score'] for t in tests)}:",
+      ", ".join(f"{t['name']} {t['score']}" for t in tests))
+EOF
+}
+tasks=$(lab_tasks "$folder" | paste -sd, -)
+grade "$tasks" "$(lab_tasks "$folder" | wc -l)"
+grade "" 0
+echo "check-gradescope: the autograder installs, builds and grades $lab in a fresh Debian root"

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Gradescope autograder setup (runs once, as root, when the autograder image is built):
+# installs the Debian/Ubuntu packages the grader needs and builds the framework and the
+# instructor's tests, so that grading a submission compiles only the student's files.
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends g++ make cmake pkg-config libsfml-dev \
+    libgtest-dev libgmock-dev python3 git unzip ca-certificates ccache
+lab=$(cat /autograder/source/lab.txt)
+python3 /autograder/source/hitbox/scripts/grading/grader.py --prepare-only --lab "$lab" \
+    --build /autograder/build
