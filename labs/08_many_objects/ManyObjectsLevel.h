@@ -133,7 +133,7 @@ private:
     float printTimingSeconds = 0.f;
 
     // Drawing caches and frame timing: render() is const, these only help it draw.
-    mutable sf::VertexArray ballVertices{sf::Triangles};
+    mutable sf::VertexArray ballVertices{sf::PrimitiveType::Triangles};
     mutable std::unique_ptr<sf::Font> font;
     mutable sf::Clock frameClock;
     mutable sf::Clock timingLogClock;
