@@ -22,7 +22,7 @@ Ball::Ball(const BallSettings& ballSettings) : settings(ballSettings)
 {
     setSize({settings.size, settings.size});
     // Origin in the middle, and the collision box measured from it (GameObject.h).
-    setOrigin(settings.size / 2.f, settings.size / 2.f);
+    setOrigin({settings.size / 2.f, settings.size / 2.f});
     setCollisionBox(-settings.size / 2.f, -settings.size / 2.f, settings.size, settings.size);
     setFillColor(sf::Color(245, 245, 245));
 }

@@ -19,7 +19,7 @@ void Paddle::placeAtStart(const Arena& arena)
 {
     const float fromEdge = settings.distanceFromEdge + settings.size.x / 2.f;
     const float x = side < 0 ? fromEdge : arena.size.x - fromEdge;
-    setPosition(x, arena.centerY());
+    setPosition({x, arena.centerY()});
     setVelocity(0.f, 0.f);
     plannedMove = {};
 }

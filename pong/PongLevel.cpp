@@ -4,6 +4,7 @@
 
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Keys.h"
 
 #include <cmath>
 #include <sstream>
@@ -32,22 +33,16 @@ Mode modeFromName(const std::string& name)
 
 namespace
 {
-// The framework's own keys (App.h): they never count as "a player pressed something".
-bool isSharedKey(int key)
-{
-    return key == sf::Keyboard::F1 || key == sf::Keyboard::P || key == sf::Keyboard::N ||
-           key == sf::Keyboard::F12 || key == sf::Keyboard::Escape;
-}
-
 bool anyPlayerKeyPressed(const Input& input)
 {
-    for (int key = 0; key < sf::Keyboard::KeyCount; ++key)
-        if (!isSharedKey(key) && input.isPressed(key))
+    // The framework's own keys never count as "a player pressed something".
+    for (int key = 0; key < hitbox::keyCount; ++key)
+        if (!hitbox::isSharedKey(key) && input.isPressed(key))
             return true;
     return false;
 }
 
-float keyAxis(const Input& input, int upKey, int downKey)
+float keyAxis(const Input& input, sf::Keyboard::Key upKey, sf::Keyboard::Key downKey)
 {
     return (input.isKeyDown(downKey) ? 1.f : 0.f) - (input.isKeyDown(upKey) ? 1.f : 0.f);
 }
@@ -139,29 +134,31 @@ bool PongLevel::isComputer(Side side) const
 
 void PongLevel::handleTitleKeys(const Input& input)
 {
-    if (input.isPressed(sf::Keyboard::Num1) || input.isPressed(sf::Keyboard::Numpad1) ||
-        input.isPressed(sf::Keyboard::Enter) || input.isPressed(sf::Keyboard::Space))
+    if (input.isPressed(sf::Keyboard::Key::Num1) || input.isPressed(sf::Keyboard::Key::Numpad1) ||
+        input.isPressed(sf::Keyboard::Key::Enter) || input.isPressed(sf::Keyboard::Key::Space))
         startMatch(Mode::OnePlayer);
-    else if (input.isPressed(sf::Keyboard::Num2) || input.isPressed(sf::Keyboard::Numpad2))
+    else if (input.isPressed(sf::Keyboard::Key::Num2) ||
+             input.isPressed(sf::Keyboard::Key::Numpad2))
         startMatch(Mode::TwoPlayers);
-    else if (input.isPressed(sf::Keyboard::Num3) || input.isPressed(sf::Keyboard::Numpad3))
+    else if (input.isPressed(sf::Keyboard::Key::Num3) ||
+             input.isPressed(sf::Keyboard::Key::Numpad3))
         startMatch(Mode::ComputerVsComputer);
-    else if (input.isPressed(sf::Keyboard::D))
+    else if (input.isPressed(sf::Keyboard::Key::D))
     {
         settings.difficulty = nextDifficulty(settings.difficulty);
         leftComputer = Opponent(settings.difficulty, settings.seed * 2u + 1u);
         rightComputer = Opponent(settings.difficulty, settings.seed * 2u + 2u);
     }
-    else if (input.isPressed(sf::Keyboard::Left) && settings.pointsToWin > 1)
+    else if (input.isPressed(sf::Keyboard::Key::Left) && settings.pointsToWin > 1)
         --settings.pointsToWin;
-    else if (input.isPressed(sf::Keyboard::Right) && settings.pointsToWin < maxPointsToWin)
+    else if (input.isPressed(sf::Keyboard::Key::Right) && settings.pointsToWin < maxPointsToWin)
         ++settings.pointsToWin;
 }
 
 void PongLevel::handleInput(const Input& input, float)
 {
     const bool playerPressedAKey = anyPlayerKeyPressed(input);
-    if (input.isPressed(sf::Keyboard::M))
+    if (input.isPressed(sf::Keyboard::Key::M))
         muted = !muted;
 
     if (screen == Screen::Title)
@@ -180,21 +177,21 @@ void PongLevel::handleInput(const Input& input, float)
     }
     if (screen == Screen::Win)
     {
-        if (input.isPressed(sf::Keyboard::Space) || input.isPressed(sf::Keyboard::Enter))
+        if (input.isPressed(sf::Keyboard::Key::Space) || input.isPressed(sf::Keyboard::Key::Enter))
             startMatch(mode);
         return;
     }
     if (mode == Mode::OnePlayer)
     {
         // One player: either pair of keys moves your (left) paddle.
-        const float wasd = keyAxis(input, sf::Keyboard::W, sf::Keyboard::S);
-        const float arrows = keyAxis(input, sf::Keyboard::Up, sf::Keyboard::Down);
+        const float wasd = keyAxis(input, sf::Keyboard::Key::W, sf::Keyboard::Key::S);
+        const float arrows = keyAxis(input, sf::Keyboard::Key::Up, sf::Keyboard::Key::Down);
         leftIntent = wasd != 0.f ? wasd : arrows;
     }
     else if (mode == Mode::TwoPlayers)
     {
-        leftIntent = keyAxis(input, sf::Keyboard::W, sf::Keyboard::S);
-        rightIntent = keyAxis(input, sf::Keyboard::Up, sf::Keyboard::Down);
+        leftIntent = keyAxis(input, sf::Keyboard::Key::W, sf::Keyboard::Key::S);
+        rightIntent = keyAxis(input, sf::Keyboard::Key::Up, sf::Keyboard::Key::Down);
     }
 }
 

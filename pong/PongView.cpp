@@ -27,15 +27,15 @@ void drawCentered(sf::RenderTarget& target, const sf::Font& font, const std::str
     sf::Text text(sf::String::fromUtf8(line.begin(), line.end()), font, size);
     text.setFillColor(color);
     const sf::FloatRect bounds = text.getLocalBounds();
-    text.setPosition(std::round(centerX - bounds.left - bounds.width / 2.f),
-                     std::round(top - bounds.top));
+    text.setPosition(
+        {std::round(centerX - bounds.left - bounds.width / 2.f), std::round(top - bounds.top)});
     target.draw(text);
 }
 
 void drawPanel(sf::RenderTarget& target, const sf::FloatRect& area)
 {
     sf::RectangleShape panel({area.width, area.height});
-    panel.setPosition(area.left, area.top);
+    panel.setPosition({area.left, area.top});
     panel.setFillColor(sf::Color(10, 12, 18));
     panel.setOutlineColor(netColor);
     panel.setOutlineThickness(2.f);
@@ -67,7 +67,7 @@ void PongLevel::render(sf::RenderTarget& target) const
     for (const sf::FloatRect& strip : {arena.topWallStrip(), arena.bottomWallStrip()})
     {
         sf::RectangleShape wall({strip.width, strip.height});
-        wall.setPosition(strip.left, strip.top);
+        wall.setPosition({strip.left, strip.top});
         wall.setFillColor(wallColor);
         target.draw(wall);
     }
@@ -75,7 +75,7 @@ void PongLevel::render(sf::RenderTarget& target) const
     for (float y = arena.playTop() + dash / 2.f; y < arena.playBottom(); y += 2.f * dash)
     {
         sf::RectangleShape piece({4.f, std::min(dash, arena.playBottom() - y)});
-        piece.setPosition(centerX - 2.f, y);
+        piece.setPosition({centerX - 2.f, y});
         piece.setFillColor(netColor);
         target.draw(piece);
     }
@@ -114,7 +114,7 @@ void PongLevel::render(sf::RenderTarget& target) const
         attractMode ? "DEMO  -  press any key to play" : describeMode(mode, settings.difficulty);
     // On a dark strip, so the net does not run through the words.
     sf::RectangleShape strip({440.f, 48.f});
-    strip.setPosition(centerX - 220.f, arena.playBottom() - 48.f);
+    strip.setPosition({centerX - 220.f, arena.playBottom() - 48.f});
     strip.setFillColor(sf::Color(18, 20, 28));
     target.draw(strip);
     drawCentered(target, font, status, 18, centerX, arena.playBottom() - 34.f,

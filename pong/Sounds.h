@@ -10,13 +10,12 @@
 
 #include <SFML/Audio/Sound.hpp>
 #include <SFML/Audio/SoundBuffer.hpp>
-#include <SFML/Config.hpp>
-
+#include <cstdint>
 #include <vector>
 
 // A square-wave beep like the arcade original's, as 16-bit mono samples. It fades out over
 // its last few milliseconds so it ends without a click. Needs no audio device (testable).
-std::vector<sf::Int16> synthesizeBeep(float frequencyHz, float seconds, unsigned sampleRate);
+std::vector<std::int16_t> synthesizeBeep(float frequencyHz, float seconds, unsigned sampleRate);
 
 class Sounds
 {
@@ -33,7 +32,7 @@ private:
     sf::SoundBuffer paddleBuffer;
     sf::SoundBuffer wallBuffer;
     sf::SoundBuffer pointBuffer;
-    sf::Sound paddleSound;
+    sf::Sound paddleSound; // made after the buffers it plays
     sf::Sound wallSound;
     sf::Sound pointSound;
 };

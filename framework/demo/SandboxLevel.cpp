@@ -43,7 +43,7 @@ void SandboxLevel::handleInput(const Input& input, float)
     if (input.getMousePosition() != lastMouseReading)
         mouse = input.getMousePosition();
     lastMouseReading = input.getMousePosition();
-    if (input.isPressed(sf::Keyboard::Space) || input.isLeftMousePressed())
+    if (input.isPressed(sf::Keyboard::Key::Space) || input.isLeftMousePressed())
         cursorIsCircle = !cursorIsCircle;
 }
 
@@ -83,7 +83,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
         {
             const hitbox::Circle circle = obstacle.shape.getBoundingCircle();
             sf::CircleShape drawn(circle.radius, 48);
-            drawn.setOrigin(circle.radius, circle.radius);
+            drawn.setOrigin({circle.radius, circle.radius});
             drawn.setPosition(circle.center);
             drawn.setFillColor(fill);
             target.draw(drawn);
@@ -99,7 +99,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
     {
         const hitbox::Circle circle = cursor.getBoundingCircle();
         sf::CircleShape drawn(circle.radius, 48);
-        drawn.setOrigin(circle.radius, circle.radius);
+        drawn.setOrigin({circle.radius, circle.radius});
         drawn.setPosition(circle.center);
         drawn.setFillColor(cursor.getFillColor());
         target.draw(drawn);

@@ -60,17 +60,17 @@ void PointInBoxLevel::handleInput(const Input& input, float)
     mousePressed = input.isLeftMousePressed();
 
     int zoomNotches = 0;
-    if (input.getMouseWheel() > 0.f || input.isPressed(sf::Keyboard::Equal) ||
-        input.isPressed(sf::Keyboard::Add))
+    if (input.getMouseWheel() > 0.f || input.isPressed(sf::Keyboard::Key::Equal) ||
+        input.isPressed(sf::Keyboard::Key::Add))
         zoomNotches = 1;
-    if (input.getMouseWheel() < 0.f || input.isPressed(sf::Keyboard::Hyphen) ||
-        input.isPressed(sf::Keyboard::Subtract))
+    if (input.getMouseWheel() < 0.f || input.isPressed(sf::Keyboard::Key::Hyphen) ||
+        input.isPressed(sf::Keyboard::Key::Subtract))
         zoomNotches = -1;
     if (zoomNotches > 0)
         zoom = std::min(zoom * zoomStep, maxZoom);
     if (zoomNotches < 0)
         zoom = std::max(zoom / zoomStep, minZoom);
-    if (input.isPressed(sf::Keyboard::Num0) || input.isPressed(sf::Keyboard::Numpad0))
+    if (input.isPressed(sf::Keyboard::Key::Num0) || input.isPressed(sf::Keyboard::Key::Numpad0))
         zoom = 1.f;
 }
 
@@ -152,7 +152,7 @@ void PointInBoxLevel::render(sf::RenderTarget& target) const
 
     // A crosshair where the level thinks the mouse is (screenshots have no mouse pointer).
     sf::CircleShape ring(7.f);
-    ring.setOrigin(7.f, 7.f);
+    ring.setOrigin({7.f, 7.f});
     ring.setPosition(mouseInWindow);
     ring.setFillColor(sf::Color::Transparent);
     ring.setOutlineThickness(2.f);
@@ -216,7 +216,7 @@ sf::Transform PointInBoxLevel::getCamera() const
     // Scale about the middle of the window: move the middle to (0, 0), scale, move back.
     const sf::Vector2f middle = getWorldSize() / 2.f;
     sf::Transform camera;
-    camera.translate(middle).scale(zoom, zoom).translate(-middle);
+    camera.translate(middle).scale({zoom, zoom}).translate(-middle);
     return camera;
 }
 

@@ -15,7 +15,7 @@ constexpr float flashSeconds = 0.25f;
 Ball::Ball(sf::Vector2f center, sf::Vector2f startVelocity, sf::Color color)
 {
     setSize({2.f * ballRadius, 2.f * ballRadius});
-    setOrigin(ballRadius, ballRadius);
+    setOrigin({ballRadius, ballRadius});
     setPosition(center);
     setFillColor(color);
     setVelocity(startVelocity);

@@ -61,9 +61,9 @@ void BallsLevel::addRandomBall()
 
 void BallsLevel::handleInput(const Input& input, float)
 {
-    if (input.isPressed(sf::Keyboard::Space) && getBallCount() < maxBalls)
+    if (input.isPressed(sf::Keyboard::Key::Space) && getBallCount() < maxBalls)
         addRandomBall();
-    if (input.isPressed(sf::Keyboard::R))
+    if (input.isPressed(sf::Keyboard::Key::R))
         startWithTwoBalls();
 }
 
@@ -97,7 +97,7 @@ void BallsLevel::render(sf::RenderTarget& target) const
     for (const Ball& ball : balls)
     {
         sf::CircleShape drawn(ball.getRadius(), 48);
-        drawn.setOrigin(ball.getRadius(), ball.getRadius());
+        drawn.setOrigin({ball.getRadius(), ball.getRadius()});
         drawn.setPosition(ball.getPosition());
         // Mix towards white just after a hit, so every hit is seen.
         const sf::Color color = ball.getFillColor();

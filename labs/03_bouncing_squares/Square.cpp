@@ -15,7 +15,7 @@ Square::Square(sf::Vector2f center, sf::Vector2f startVelocity, sf::Color color)
     // The shape is the whole picture; its origin, the point getPosition() gives, is the
     // centre of the picture.
     setSize({spriteSize, spriteSize});
-    setOrigin(spriteSize / 2.f, spriteSize / 2.f);
+    setOrigin({spriteSize / 2.f, spriteSize / 2.f});
     // BEGIN TASK 1: fit the collision box to the crate
     // Without this the box is the whole picture, margin and all, and squares bounce off
     // each other with a visible gap. The box is measured from the origin (the centre):
@@ -41,14 +41,14 @@ void Square::update(float dt)
     if (box.left < 0.f || box.left + box.width > worldSize.x)
     {
         const bool outLeft = box.left < 0.f;
-        move(outLeft ? -box.left : worldSize.x - (box.left + box.width), 0.f);
+        move({outLeft ? -box.left : worldSize.x - (box.left + box.width), 0.f});
         velocity.x = outLeft ? std::abs(velocity.x) : -std::abs(velocity.x);
         hitWall = true;
     }
     if (box.top < 0.f || box.top + box.height > worldSize.y)
     {
         const bool outTop = box.top < 0.f;
-        move(0.f, outTop ? -box.top : worldSize.y - (box.top + box.height));
+        move({0.f, outTop ? -box.top : worldSize.y - (box.top + box.height)});
         velocity.y = outTop ? std::abs(velocity.y) : -std::abs(velocity.y);
         hitWall = true;
     }

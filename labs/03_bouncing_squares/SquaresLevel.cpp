@@ -59,9 +59,9 @@ void SquaresLevel::addRandomSquare()
 
 void SquaresLevel::handleInput(const Input& input, float)
 {
-    if (input.isPressed(sf::Keyboard::Space) && getSquareCount() < maxSquares)
+    if (input.isPressed(sf::Keyboard::Key::Space) && getSquareCount() < maxSquares)
         addRandomSquare();
-    if (input.isPressed(sf::Keyboard::R))
+    if (input.isPressed(sf::Keyboard::Key::R))
         startWithTwoSquares();
 }
 
@@ -112,7 +112,7 @@ void SquaresLevel::render(sf::RenderTarget& target) const
         // collision box decides how the squares collide.
         const sf::Color color = square.getFillColor();
         sf::RectangleShape picture({spriteSize, spriteSize});
-        picture.setOrigin(spriteSize / 2.f, spriteSize / 2.f);
+        picture.setOrigin({spriteSize / 2.f, spriteSize / 2.f});
         picture.setPosition(square.getPosition());
         picture.setFillColor(sf::Color(color.r, color.g, color.b, 45));
         picture.setOutlineThickness(-1.f);
@@ -123,7 +123,7 @@ void SquaresLevel::render(sf::RenderTarget& target) const
         const auto mix = [white](sf::Uint8 channel)
         { return static_cast<sf::Uint8>(channel + (255 - channel) * white); };
         sf::RectangleShape crate({crateSize, crateSize});
-        crate.setOrigin(crateSize / 2.f, crateSize / 2.f);
+        crate.setOrigin({crateSize / 2.f, crateSize / 2.f});
         crate.setPosition(square.getPosition());
         crate.setFillColor(sf::Color(mix(color.r), mix(color.g), mix(color.b)));
         crate.setOutlineThickness(-5.f);

@@ -99,13 +99,13 @@ const sf::FloatRect& PaperLevel::getWall() const
 
 void PaperLevel::handleInput(const Input& input, float)
 {
-    if (input.isPressed(sf::Keyboard::Up))
+    if (input.isPressed(sf::Keyboard::Key::Up))
         nextSpeed = std::min(nextSpeed * speedFactor, maxSpeed);
-    if (input.isPressed(sf::Keyboard::Down))
+    if (input.isPressed(sf::Keyboard::Key::Down))
         nextSpeed = std::max(nextSpeed / speedFactor, 50.f);
-    if (input.isPressed(sf::Keyboard::A))
+    if (input.isPressed(sf::Keyboard::Key::A))
         autoFire = !autoFire;
-    if (input.isPressed(sf::Keyboard::Space))
+    if (input.isPressed(sf::Keyboard::Key::Space))
         fire(nextSpeed);
 }
 
@@ -197,12 +197,12 @@ void PaperLevel::drawLane(sf::RenderTarget& target, Lane lane) const
 {
     const float y = laneY(lane);
     sf::RectangleShape stripe({getWorldSize().x, 60.f});
-    stripe.setPosition(0.f, y - 30.f);
+    stripe.setPosition({0.f, y - 30.f});
     stripe.setFillColor(laneColor);
     target.draw(stripe);
 
     sf::RectangleShape gun({50.f, 18.f});
-    gun.setPosition(gunX - 55.f, y - 9.f);
+    gun.setPosition({gunX - 55.f, y - 9.f});
     gun.setFillColor(sf::Color(120, 125, 140));
     target.draw(gun);
 
@@ -262,12 +262,12 @@ void PaperLevel::drawJumpOverWall(sf::RenderTarget& target, const Bullet& bullet
             continue;
         const float y = trail[i].y - 14.f;
         sf::RectangleShape jump({trail[i].x - trail[i - 1].x, 3.f});
-        jump.setPosition(trail[i - 1].x, y);
+        jump.setPosition({trail[i - 1].x, y});
         jump.setFillColor(missColor);
         target.draw(jump);
         // render() always has a window, so measuring text is safe here.
         sf::Text label = makeText(font, "passed through unseen", 16, missColor, {0.f, 0.f});
-        label.setPosition(wall.left - 12.f - label.getLocalBounds().width, y + 48.f);
+        label.setPosition({wall.left - 12.f - label.getLocalBounds().width, y + 48.f});
         target.draw(label);
         return;
     }
@@ -279,7 +279,7 @@ void PaperLevel::render(sf::RenderTarget& target) const
     drawLane(target, Lane::Swept);
 
     sf::RectangleShape paper({wall.width, wall.height});
-    paper.setPosition(wall.left, wall.top);
+    paper.setPosition({wall.left, wall.top});
     paper.setFillColor(paperColor);
     target.draw(paper);
 

@@ -34,7 +34,7 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
     const sf::Vector2f along = to - from;
     const float length = std::sqrt(along.x * along.x + along.y * along.y);
     sf::RectangleShape line({length, thickness});
-    line.setOrigin(0.f, thickness / 2.f);
+    line.setOrigin({0.f, thickness / 2.f});
     line.setPosition(from);
     line.setRotation(std::atan2(along.y, along.x) * 180.f / 3.14159265f);
     line.setFillColor(color);
@@ -84,20 +84,20 @@ void RayLevel::handleInput(const Input& input, float)
     lastMouseReading = input.getMousePosition();
 
     sf::Vector2f direction;
-    if (input.isKeyDown(sf::Keyboard::A) || input.isKeyDown(sf::Keyboard::Left))
+    if (input.isKeyDown(sf::Keyboard::Key::A) || input.isKeyDown(sf::Keyboard::Key::Left))
         direction.x -= 1.f;
-    if (input.isKeyDown(sf::Keyboard::D) || input.isKeyDown(sf::Keyboard::Right))
+    if (input.isKeyDown(sf::Keyboard::Key::D) || input.isKeyDown(sf::Keyboard::Key::Right))
         direction.x += 1.f;
-    if (input.isKeyDown(sf::Keyboard::W) || input.isKeyDown(sf::Keyboard::Up))
+    if (input.isKeyDown(sf::Keyboard::Key::W) || input.isKeyDown(sf::Keyboard::Key::Up))
         direction.y -= 1.f;
-    if (input.isKeyDown(sf::Keyboard::S) || input.isKeyDown(sf::Keyboard::Down))
+    if (input.isKeyDown(sf::Keyboard::Key::S) || input.isKeyDown(sf::Keyboard::Key::Down))
         direction.y += 1.f;
     // The keys take over from the demo (or from setMoveDirection) once one is pressed.
     if (direction != sf::Vector2f{})
         keyboardControl = true;
     if (keyboardControl)
         moveDirection = direction;
-    if (input.isPressed(sf::Keyboard::T))
+    if (input.isPressed(sf::Keyboard::Key::T))
         timeOrder = !timeOrder;
 }
 
@@ -242,7 +242,7 @@ void RayLevel::render(sf::RenderTarget& target) const
     for (std::size_t i = 0; i < solids.size(); ++i)
     {
         sf::RectangleShape box({solids[i].width, solids[i].height});
-        box.setPosition(solids[i].left, solids[i].top);
+        box.setPosition({solids[i].left, solids[i].top});
         const bool isTile = i >= firstTile;
         box.setFillColor(static_cast<int>(i) == ray.boxIndex ? sf::Color(120, 80, 110)
                          : isTile                            ? tileColor
@@ -256,7 +256,7 @@ void RayLevel::render(sf::RenderTarget& target) const
         target.draw(box);
     }
 
-    sf::VertexArray path(sf::LineStrip);
+    sf::VertexArray path(sf::PrimitiveType::LineStrip);
     for (const sf::Vector2f& point : trail)
         path.append(sf::Vertex(point, sf::Color(240, 200, 80, 120)));
     target.draw(path);
@@ -269,7 +269,7 @@ void RayLevel::render(sf::RenderTarget& target) const
         drawThickLine(target, ray.end, mouse, 2.f, sf::Color(255, 240, 160, 60));
         drawThickLine(target, ray.end, ray.end + ray.normal * 45.f, 3.f, hitColor);
         sf::CircleShape dot(6.f);
-        dot.setOrigin(6.f, 6.f);
+        dot.setOrigin({6.f, 6.f});
         dot.setPosition(ray.end);
         dot.setFillColor(hitColor);
         target.draw(dot);
@@ -286,11 +286,11 @@ void RayLevel::render(sf::RenderTarget& target) const
                                         : "OFF (list order: snags on a seam)";
     sf::Text status("Time order " + order, font, 20);
     status.setFillColor(timeOrder ? sf::Color(120, 230, 140) : hitColor);
-    status.setPosition(60.f, 4.f);
+    status.setPosition({60.f, 4.f});
     target.draw(status);
     sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font, 16);
     rayText.setFillColor(rayColor);
-    rayText.setPosition(700.f, 8.f);
+    rayText.setPosition({700.f, 8.f});
     target.draw(rayText);
 }
 

@@ -51,7 +51,7 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
 {
     const sf::Vector2f along = to - from;
     sf::RectangleShape line({hitbox::lengthOf(along), thickness});
-    line.setOrigin(0.f, thickness / 2.f);
+    line.setOrigin({0.f, thickness / 2.f});
     line.setPosition(from);
     line.setRotation(std::atan2(along.y, along.x) * 180.f / pi);
     line.setFillColor(color);
@@ -165,14 +165,14 @@ void RotatedLevel::handleInput(const Input& input, float)
         dragging = false;
     if (dragging)
         shapes[held].body.center = mouse + grabOffset;
-    if (input.isPressed(sf::Keyboard::Tab) && !shapes.empty())
+    if (input.isPressed(sf::Keyboard::Key::Tab) && !shapes.empty())
         held = (held + 1) % shapes.size();
 
     // BEGIN TASK 3: the mouse wheel turns the held shape
     shapes[held].body.angleDegrees += input.getMouseWheel() * degreesPerNotch;
     // END TASK 3
 
-    if (input.isPressed(sf::Keyboard::Space))
+    if (input.isPressed(sf::Keyboard::Key::Space))
         pushHeldOut();
 }
 
@@ -283,7 +283,7 @@ void RotatedLevel::render(sf::RenderTarget& target) const
             for (const sf::Vector2f& end : {capsule.start, capsule.end})
             {
                 sf::CircleShape cap(capsule.radius, 32);
-                cap.setOrigin(capsule.radius, capsule.radius);
+                cap.setOrigin({capsule.radius, capsule.radius});
                 cap.setPosition(end);
                 cap.setFillColor(fill);
                 target.draw(cap);
@@ -349,7 +349,7 @@ void RotatedLevel::render(sf::RenderTarget& target) const
                 drawOutline(target, pushed, sf::Color(255, 255, 255, 150));
             }
             sf::CircleShape head(7.f, 3);
-            head.setOrigin(7.f, 7.f);
+            head.setOrigin({7.f, 7.f});
             head.setPosition(to);
             head.setRotation(std::atan2(view.axis.y, view.axis.x) * 180.f / pi + 90.f);
             head.setFillColor(mtvColor);
@@ -365,13 +365,13 @@ void RotatedLevel::render(sf::RenderTarget& target) const
                   std::to_string(std::lround(nearest->gap)) + " px)";
     sf::Text text(status, font, 20);
     text.setFillColor(sf::Color::White);
-    text.setPosition(16.f, 10.f);
+    text.setPosition({16.f, 10.f});
     target.draw(text);
     sf::Text legend("bars: both shadows on the axis SAT chose for the nearest shape (yellow: "
                     "held)   green line: a separating line where the AABBs overlap",
                     font, 16);
     legend.setFillColor(sf::Color(190, 190, 200));
-    legend.setPosition(16.f, 38.f);
+    legend.setPosition({16.f, 38.f});
     target.draw(legend);
 }
 

@@ -113,15 +113,15 @@ sf::FloatRect PoolLevel::getTable() const
 void PoolLevel::handleInput(const Input& input, float)
 {
     mouse = input.getMousePosition();
-    if (input.isLeftMousePressed() || input.isPressed(sf::Keyboard::Space))
+    if (input.isLeftMousePressed() || input.isPressed(sf::Keyboard::Key::Space))
         shoot(mouse, shotSpeed);
-    if (input.isPressed(sf::Keyboard::Up))
+    if (input.isPressed(sf::Keyboard::Key::Up))
         shotSpeed = std::fmin(shotSpeed * 1.5f, 100000.f);
-    if (input.isPressed(sf::Keyboard::Down))
+    if (input.isPressed(sf::Keyboard::Key::Down))
         shotSpeed = std::fmax(shotSpeed / 1.5f, 100.f);
-    if (input.isPressed(sf::Keyboard::D))
+    if (input.isPressed(sf::Keyboard::Key::D))
         swept = !swept;
-    if (input.isPressed(sf::Keyboard::R))
+    if (input.isPressed(sf::Keyboard::Key::R))
     {
         balls = rackedBalls();
         cueTrail.assign(1, balls[0].shape.center);
@@ -282,20 +282,20 @@ void PoolLevel::update(float dt)
 void PoolLevel::render(sf::RenderTarget& target) const
 {
     sf::RectangleShape felt({table.width, table.height});
-    felt.setPosition(table.left, table.top);
+    felt.setPosition({table.left, table.top});
     felt.setFillColor(sf::Color(30, 110, 60));
     target.draw(felt);
     for (const sf::FloatRect& cushion : cushions)
     {
         sf::RectangleShape drawn({cushion.width, cushion.height});
-        drawn.setPosition(cushion.left, cushion.top);
+        drawn.setPosition({cushion.left, cushion.top});
         drawn.setFillColor(sf::Color(110, 65, 35));
         target.draw(drawn);
     }
 
     // The cue ball after each step: far apart = fast.
     sf::CircleShape dot(3.f);
-    dot.setOrigin(3.f, 3.f);
+    dot.setOrigin({3.f, 3.f});
     dot.setFillColor(sf::Color(255, 255, 255, 110));
     for (const sf::Vector2f& point : cueTrail)
     {
@@ -308,7 +308,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
         for (const hitbox::Circle& circle : {impact.first, impact.second})
         {
             sf::CircleShape ghost(circle.radius, 32);
-            ghost.setOrigin(circle.radius, circle.radius);
+            ghost.setOrigin({circle.radius, circle.radius});
             ghost.setPosition(circle.center);
             ghost.setFillColor(sf::Color::Transparent);
             ghost.setOutlineColor(sf::Color(255, 240, 120, 150));
@@ -319,7 +319,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
     for (const Ball& ball : balls)
     {
         sf::CircleShape drawn(ball.shape.radius, 32);
-        drawn.setOrigin(ball.shape.radius, ball.shape.radius);
+        drawn.setOrigin({ball.shape.radius, ball.shape.radius});
         drawn.setPosition(ball.shape.center);
         drawn.setFillColor(ball.color);
         target.draw(drawn);
@@ -346,7 +346,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
               : "DISCRETE: move, then look for overlaps (press D)";
     sf::Text title(mode, font, 22);
     title.setFillColor(swept ? sf::Color(140, 240, 160) : sf::Color(255, 110, 90));
-    title.setPosition(20.f, 14.f);
+    title.setPosition({20.f, 14.f});
     target.draw(title);
     const long perStep = std::lround(fastest / 120.f);
     sf::Text speed("fastest ball: " + std::to_string(perStep) + " px per step (a ball is " +
@@ -355,13 +355,13 @@ void PoolLevel::render(sf::RenderTarget& target) const
                    font, 16);
     speed.setFillColor(perStep > 2.f * ballRadius ? sf::Color(255, 170, 60)
                                                   : sf::Color(200, 200, 200));
-    speed.setPosition(20.f, 44.f);
+    speed.setPosition({20.f, 44.f});
     target.draw(speed);
     sf::Text legend("white dots: the cue ball after each step   yellow rings: balls at the "
                     "moment of impact",
                     font, 16);
     legend.setFillColor(sf::Color(200, 200, 200));
-    legend.setPosition(20.f, 630.f);
+    legend.setPosition({20.f, 630.f});
     target.draw(legend);
 }
 

@@ -148,8 +148,8 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
     {
         sf::Text number = makeText(std::to_string(i), labelFont, 20, sf::Color::Black);
         const sf::FloatRect bounds = number.getLocalBounds();
-        number.setPosition(balls[i].position.x - bounds.width / 2.f - bounds.left,
-                           balls[i].position.y - bounds.height / 2.f - bounds.top);
+        number.setPosition({balls[i].position.x - bounds.width / 2.f - bounds.left,
+                            balls[i].position.y - bounds.height / 2.f - bounds.top});
         target.draw(number);
     }
 
@@ -159,7 +159,7 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
     const float cell =
         std::min(40.f, std::min(tableArea.width, tableArea.height) / static_cast<float>(count + 1));
     const sf::Vector2f origin{tableArea.left + cell, tableArea.top + cell};
-    sf::VertexArray cells(sf::Triangles);
+    sf::VertexArray cells(sf::PrimitiveType::Triangles);
     for (std::uint32_t row = 0; row < count; ++row)
         for (std::uint32_t column = 0; column < count; ++column)
         {
@@ -184,10 +184,10 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
     for (std::uint32_t i = 0; i < count; ++i)
     {
         sf::Text columnLabel = makeText(std::to_string(i), labelFont, labelSize, sf::Color::White);
-        columnLabel.setPosition(origin.x + i * cell + cell * 0.25f, origin.y - cell * 0.85f);
+        columnLabel.setPosition({origin.x + i * cell + cell * 0.25f, origin.y - cell * 0.85f});
         target.draw(columnLabel);
         sf::Text rowLabel = columnLabel;
-        rowLabel.setPosition(tableArea.left + cell * 0.2f, origin.y + i * cell + cell * 0.15f);
+        rowLabel.setPosition({tableArea.left + cell * 0.2f, origin.y + i * cell + cell * 0.15f});
         target.draw(rowLabel);
     }
 
@@ -196,12 +196,12 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
                                   std::to_string(count) + "\xc2\xb7" + std::to_string(count - 1) +
                                   "/2 = " + std::to_string(allPairs) + " pairs",
                               labelFont, 18, sf::Color::White);
-    title.setPosition(tableArea.left, tableArea.top - 40.f);
+    title.setPosition({tableArea.left, tableArea.top - 40.f});
     target.draw(title);
     sf::Text key = makeText("grey tested   red overlapping   dark skipped by the rules   "
                             "purple wasted",
                             labelFont, 13, sf::Color(200, 200, 200));
-    key.setPosition(tableArea.left, tableArea.top - 16.f);
+    key.setPosition({tableArea.left, tableArea.top - 16.f});
     target.draw(key);
 }
 
@@ -257,10 +257,10 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
     const sf::Vector2f world = getWorldSize();
     const float top = getArena().top + getArena().height;
     sf::RectangleShape panel({world.x, world.y - top});
-    panel.setPosition(0.f, top);
+    panel.setPosition({0.f, top});
     panel.setFillColor(sf::Color(30, 34, 46));
     target.draw(panel);
-    text.setPosition(10.f, top + 4.f);
+    text.setPosition({10.f, top + 4.f});
     target.draw(text);
 }
 

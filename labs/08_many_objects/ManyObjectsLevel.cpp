@@ -185,31 +185,31 @@ void ManyObjectsLevel::spawnLayersScene()
 
 void ManyObjectsLevel::handleInput(const Input& input, float)
 {
-    if (input.isPressed(sf::Keyboard::Num1))
+    if (input.isPressed(sf::Keyboard::Key::Num1))
         startScene(Scene::Crowd, 1000);
-    if (input.isPressed(sf::Keyboard::Num2))
+    if (input.isPressed(sf::Keyboard::Key::Num2))
     {
         // The table is brute force, so the readout's broadphase line matches it.
         method = hitbox::BroadphaseMethod::BruteForce;
         startScene(Scene::PairTable, 12);
     }
-    if (input.isPressed(sf::Keyboard::Num3))
+    if (input.isPressed(sf::Keyboard::Key::Num3))
         startScene(Scene::Layers, 0);
-    if (input.isPressed(sf::Keyboard::M))
+    if (input.isPressed(sf::Keyboard::Key::M))
         setMethod(static_cast<hitbox::BroadphaseMethod>((static_cast<int>(method) + 1) % 4));
-    if (input.isPressed(sf::Keyboard::LBracket) && gridCellWidths > 1)
+    if (input.isPressed(sf::Keyboard::Key::LBracket) && gridCellWidths > 1)
     {
         gridCellWidths /= 2;
         rebuildBroadphase();
     }
-    if (input.isPressed(sf::Keyboard::RBracket) && gridCellWidths < maxGridCellWidths)
+    if (input.isPressed(sf::Keyboard::Key::RBracket) && gridCellWidths < maxGridCellWidths)
     {
         gridCellWidths *= 2;
         rebuildBroadphase();
     }
 
-    const bool more = input.isPressed(sf::Keyboard::Up);
-    const bool fewer = input.isPressed(sf::Keyboard::Down);
+    const bool more = input.isPressed(sf::Keyboard::Key::Up);
+    const bool fewer = input.isPressed(sf::Keyboard::Key::Down);
     const int count = static_cast<int>(balls.size());
     if (scene == Scene::PairTable && (more || fewer))
         startScene(scene, count + (more ? 1 : -1));

@@ -140,7 +140,7 @@ private:
     bool stopWhenTooSlow = false;
 
     // Drawing caches and frame timing: render() is const, these only help it draw.
-    mutable sf::VertexArray ballVertices{sf::Triangles};
+    mutable sf::VertexArray ballVertices{sf::PrimitiveType::Triangles};
     mutable std::unique_ptr<sf::Font> font;
     mutable sf::Clock frameClock;
     mutable sf::Clock timingLogClock;

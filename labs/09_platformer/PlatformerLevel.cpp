@@ -110,19 +110,20 @@ PlatformerLevel::PlatformerLevel(TileMap levelMap)
 
 void PlatformerLevel::handleInput(const Input& input, float)
 {
-    holdingLeft = input.isKeyDown(sf::Keyboard::A) || input.isKeyDown(sf::Keyboard::Left);
-    holdingRight = input.isKeyDown(sf::Keyboard::D) || input.isKeyDown(sf::Keyboard::Right);
+    holdingLeft = input.isKeyDown(sf::Keyboard::Key::A) || input.isKeyDown(sf::Keyboard::Key::Left);
+    holdingRight =
+        input.isKeyDown(sf::Keyboard::Key::D) || input.isKeyDown(sf::Keyboard::Key::Right);
     // A press is kept until a step uses it, whatever the frame rate.
-    if (input.isPressed(sf::Keyboard::Space) || input.isPressed(sf::Keyboard::W) ||
-        input.isPressed(sf::Keyboard::Up))
+    if (input.isPressed(sf::Keyboard::Key::Space) || input.isPressed(sf::Keyboard::Key::W) ||
+        input.isPressed(sf::Keyboard::Key::Up))
         jumpPressed = true;
-    if (input.isPressed(sf::Keyboard::S) || input.isPressed(sf::Keyboard::Down))
+    if (input.isPressed(sf::Keyboard::Key::S) || input.isPressed(sf::Keyboard::Key::Down))
         divePressed = true;
-    if (input.isPressed(sf::Keyboard::C))
+    if (input.isPressed(sf::Keyboard::Key::C))
         speedCapOn = !speedCapOn;
-    if (input.isPressed(sf::Keyboard::X))
+    if (input.isPressed(sf::Keyboard::Key::X))
         speculative = !speculative;
-    if (input.isPressed(sf::Keyboard::R))
+    if (input.isPressed(sf::Keyboard::Key::R))
         respawn();
 }
 
@@ -315,7 +316,7 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     strip.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(strip);
     sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
-    text.setPosition(10.f, 5.f);
+    text.setPosition({10.f, 5.f});
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);
 }

@@ -99,7 +99,7 @@ private:
 
     TileMap map;
     Player player;
-    sf::VertexArray tileQuads{sf::Triangles}; // built once: the tiles never change
+    sf::VertexArray tileQuads{sf::PrimitiveType::Triangles}; // built once: the tiles never change
     sf::Font font;
 
     // Controls: held keys, and presses kept until the next step uses them.

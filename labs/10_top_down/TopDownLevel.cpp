@@ -108,17 +108,17 @@ void TopDownLevel::placePlayer(sf::Vector2f feet)
 void TopDownLevel::handleInput(const Input& input, float)
 {
     heldDirection = {0.f, 0.f};
-    if (input.isKeyDown(sf::Keyboard::A) || input.isKeyDown(sf::Keyboard::Left))
+    if (input.isKeyDown(sf::Keyboard::Key::A) || input.isKeyDown(sf::Keyboard::Key::Left))
         heldDirection.x -= 1.f;
-    if (input.isKeyDown(sf::Keyboard::D) || input.isKeyDown(sf::Keyboard::Right))
+    if (input.isKeyDown(sf::Keyboard::Key::D) || input.isKeyDown(sf::Keyboard::Key::Right))
         heldDirection.x += 1.f;
-    if (input.isKeyDown(sf::Keyboard::W) || input.isKeyDown(sf::Keyboard::Up))
+    if (input.isKeyDown(sf::Keyboard::Key::W) || input.isKeyDown(sf::Keyboard::Key::Up))
         heldDirection.y -= 1.f;
-    if (input.isKeyDown(sf::Keyboard::S) || input.isKeyDown(sf::Keyboard::Down))
+    if (input.isKeyDown(sf::Keyboard::Key::S) || input.isKeyDown(sf::Keyboard::Key::Down))
         heldDirection.y += 1.f;
-    if (input.isPressed(sf::Keyboard::Space))
+    if (input.isPressed(sf::Keyboard::Key::Space))
         swingPressed = true;
-    if (input.isPressed(sf::Keyboard::R))
+    if (input.isPressed(sf::Keyboard::Key::R))
     {
         buildScene();
         defeats = 0;
@@ -314,7 +314,7 @@ namespace
 void drawBox(sf::RenderTarget& target, const sf::FloatRect& box, sf::Color color)
 {
     sf::RectangleShape shape({box.width, box.height});
-    shape.setPosition(box.left, box.top);
+    shape.setPosition({box.left, box.top});
     shape.setFillColor(color);
     target.draw(shape);
 }
@@ -332,8 +332,8 @@ void drawTree(sf::RenderTarget& target, const Actor& tree)
     const sf::FloatRect trunk{tree.feet.x - 12.f, sprite.top + sprite.height - 60.f, 24.f, 60.f};
     drawBox(target, trunk, trunkColor);
     sf::CircleShape leaves(sprite.width / 2.f);
-    leaves.setPosition(sprite.left, sprite.top);
-    leaves.setScale(1.f, 1.1f);
+    leaves.setPosition({sprite.left, sprite.top});
+    leaves.setScale({1.f, 1.1f});
     leaves.setFillColor(leavesColor);
     leaves.setOutlineThickness(-3.f);
     leaves.setOutlineColor(sf::Color(30, 90, 40));
@@ -348,7 +348,7 @@ void drawPerson(sf::RenderTarget& target, const Actor& actor)
             {sprite.left + 6.f, sprite.top + 22.f, sprite.width - 12.f, sprite.height - 22.f},
             faded(playerColor, fade));
     sf::CircleShape head(14.f);
-    head.setPosition(actor.feet.x - 14.f, sprite.top);
+    head.setPosition({actor.feet.x - 14.f, sprite.top});
     head.setFillColor(faded(sf::Color(245, 205, 170), fade));
     target.draw(head);
 }
@@ -358,8 +358,8 @@ void drawSlime(sf::RenderTarget& target, const Enemy& enemy)
     const sf::FloatRect sprite = enemy.body.spriteBox();
     const bool fade = TopDownLevel::isBlinkedOut(enemy.body);
     sf::CircleShape blob(sprite.width / 2.f);
-    blob.setScale(1.f, sprite.height / sprite.width);
-    blob.setPosition(sprite.left, sprite.top);
+    blob.setScale({1.f, sprite.height / sprite.width});
+    blob.setPosition({sprite.left, sprite.top});
     sf::Color color = enemy.state == EnemyState::Idle ? sf::Color(150, 90, 120) : enemyColor;
     blob.setFillColor(faded(color, fade));
     target.draw(blob);
@@ -393,7 +393,7 @@ void TopDownLevel::render(sf::RenderTarget& target) const
         hud << "   invulnerable " << std::round(player.invulnerable * 10.f) / 10.f << " s";
     hud << "   enemies " << enemies.size() << "   defeats " << defeats;
     sf::Text text(hud.str(), font, 18);
-    text.setPosition(36.f, 28.f);
+    text.setPosition({36.f, 28.f});
     text.setFillColor(sf::Color::White);
     target.draw(text);
 }

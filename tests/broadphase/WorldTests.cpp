@@ -22,7 +22,7 @@ public:
     Recorder(float x, float y, float side = 20.f)
     {
         setSize({side, side});
-        setPosition(x, y);
+        setPosition({x, y});
     }
     void collisionResponse(GameObject* other) override { hits.push_back(other); }
     std::vector<GameObject*> hits;
@@ -127,7 +127,7 @@ TEST(World, CirclesUseTheExactCircleTestAfterTheBoxes)
     EXPECT_EQ(world.checkCollisions(), 0u);
     EXPECT_EQ(world.getBroadphaseStats().pairsFound, 1u);
     EXPECT_EQ(world.getExactTests(), 1u);
-    b.setPosition(12.f, 0.f); // centres 12 apart, radii 10 + 10
+    b.setPosition({12.f, 0.f}); // centres 12 apart, radii 10 + 10
     EXPECT_EQ(world.checkCollisions(), 1u);
 }
 
@@ -138,7 +138,7 @@ TEST(World, ACircleAgainstABoxUsesTheCircleBoxTest)
     world.add(circle, 1, 0xFFFFFFFF, World::Shape::Circle);
     world.add(box);
     EXPECT_EQ(world.checkCollisions(), 0u); // the circle misses the box's corner
-    box.setPosition(15.f, 5.f);
+    box.setPosition({15.f, 5.f});
     EXPECT_EQ(world.checkCollisions(), 1u);
     EXPECT_EQ(circle.hits, std::vector<GameObject*>{&box});
 }

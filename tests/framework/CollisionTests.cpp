@@ -13,7 +13,7 @@ GameObject makeSquare(float x, float y, float size)
 {
     GameObject square;
     square.setSize({size, size});
-    square.setPosition(x, y);
+    square.setPosition({x, y});
     return square;
 }
 
@@ -24,7 +24,7 @@ TEST(Collision, LectureBouncingBallsCallWorks)
     GameObject ball1 = makeSquare(0.f, 0.f, 50.f);
     GameObject ball2 = makeSquare(40.f, 0.f, 50.f);
     EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
-    ball2.setPosition(50.f, 0.f); // circles exactly touching
+    ball2.setPosition({50.f, 0.f}); // circles exactly touching
     EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
     ball1.collisionResponse(NULL); // the lecture's call: the default response does nothing
 }
@@ -35,10 +35,10 @@ TEST(Collision, CircleComesFromTheCentreNotTheCorner)
     // ball. Two balls whose drawn circles overlap must collide.
     GameObject ball1 = makeSquare(100.f, 100.f, 40.f);
     GameObject ball2 = makeSquare(135.f, 100.f, 40.f);
-    ball1.setOrigin(20.f, 20.f);
-    ball2.setOrigin(20.f, 20.f);
+    ball1.setOrigin({20.f, 20.f});
+    ball2.setOrigin({20.f, 20.f});
     EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
-    ball2.setPosition(141.f, 100.f);
+    ball2.setPosition({141.f, 100.f});
     EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
 }
 
@@ -47,7 +47,7 @@ TEST(Collision, BoundingBoxTouchingIsNotACollision)
     GameObject square1 = makeSquare(0.f, 200.f, 50.f);
     GameObject square2 = makeSquare(50.f, 200.f, 50.f);
     EXPECT_FALSE(Collision::checkBoundingBox(&square1, &square2));
-    square2.move(-0.5f, 0.f);
+    square2.move({-0.5f, 0.f});
     EXPECT_TRUE(Collision::checkBoundingBox(&square1, &square2));
 }
 

@@ -25,13 +25,13 @@ public:
     Paddle()
     {
         setSize(sf::Vector2f(20, 100));
-        setOrigin(10, 50);
+        setOrigin({10, 50});
         setCollisionBox(-10, -50, 20, 100);
     }
     void handleInput(float) override
     {
         velocity.y = 0;
-        if (input->isKeyDown(sf::Keyboard::W))
+        if (input->isKeyDown(sf::Keyboard::Key::W))
             velocity.y = -speed;
     }
     void update(float dt) override { move(velocity * dt); }
@@ -54,7 +54,7 @@ public:
         input = in;
         paddle.setInput(input);
         paddle.setWindow(window);
-        paddle.setPosition(100, 300);
+        paddle.setPosition({100, 300});
     }
     void handleInput(float dt) override { paddle.handleInput(dt); }
     void update(float dt) override { paddle.update(dt); }
@@ -71,7 +71,7 @@ public:
 TEST(CourseCompat, StudentPaddleBoxCoversTheShapeAroundItsPosition)
 {
     Paddle paddle;
-    paddle.setPosition(100, 300);
+    paddle.setPosition({100, 300});
     EXPECT_EQ(paddle.getCollisionBox(), sf::FloatRect(90, 250, 20, 100));
 }
 
@@ -79,7 +79,7 @@ TEST(CourseCompat, LevelDrivesObjectsThroughTheProtectedInputPointer)
 {
     Input input;
     Level level(nullptr, &input);
-    input.setKeyDown(sf::Keyboard::W);
+    input.setKeyDown(sf::Keyboard::Key::W);
     level.handleInput(0.5f);
     level.update(0.5f);
     level.render();
@@ -113,7 +113,7 @@ TEST(CourseCompat, ClickOnAnObjectWithTheIntMousePosition)
 {
     Input input;
     Paddle paddle;
-    paddle.setPosition(100, 300);
+    paddle.setPosition({100, 300});
     input.setMousePosition(95, 260);
     EXPECT_TRUE(
         Collision::checkBoundingBox(&paddle, sf::Vector2i(input.getMouseX(), input.getMouseY())));
@@ -130,10 +130,10 @@ TEST(CourseCompat, LectureBallsWithTopLeftOriginCollideAsTheSlidesSay)
     GameObject ball2;
     ball1.setSize(sf::Vector2f(100, 100));
     ball2.setSize(sf::Vector2f(100, 100));
-    ball1.setPosition(0, 200);
-    ball2.setPosition(99, 200); // centres 99 apart, radii add to 100
+    ball1.setPosition({0, 200});
+    ball2.setPosition({99, 200}); // centres 99 apart, radii add to 100
     EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
-    ball2.setPosition(100, 200); // exactly touching: not a collision
+    ball2.setPosition({100, 200}); // exactly touching: not a collision
     EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
 }
 

@@ -15,7 +15,7 @@ TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
     hitbox::DebugRenderer debug;
     debug.box({0.f, 0.f, 10.f, 10.f}, hitbox::DebugRenderer::freeColor);
     ASSERT_EQ(debug.getVertices().getVertexCount(), 4u * 6u); // two triangles a line
-    EXPECT_EQ(debug.getVertices().getPrimitiveType(), sf::Triangles);
+    EXPECT_EQ(debug.getVertices().getPrimitiveType(), sf::PrimitiveType::Triangles);
     EXPECT_EQ(debug.getVertices()[0].color, hitbox::DebugRenderer::freeColor);
 }
 

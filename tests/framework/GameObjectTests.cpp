@@ -40,9 +40,9 @@ TEST(GameObject, UnsetBoxIsTheWholeShapeAndFollowsSizeAndOrigin)
 {
     GameObject object;
     object.setSize({40.f, 20.f});
-    object.setPosition(100.f, 50.f);
+    object.setPosition({100.f, 50.f});
     expectBoxNear(object.getCollisionBox(), {100.f, 50.f, 40.f, 20.f});
-    object.setOrigin(20.f, 10.f);
+    object.setOrigin({20.f, 10.f});
     expectBoxNear(object.getCollisionBox(), {80.f, 40.f, 40.f, 20.f});
     object.setSize({60.f, 30.f});
     expectBoxNear(object.getCollisionBox(), {80.f, 40.f, 60.f, 30.f});
@@ -53,9 +53,9 @@ TEST(GameObject, BoxIsMeasuredFromTheOriginPoint)
     // The course's pattern: centre origin, box from -w/2, -h/2 covers the whole shape.
     GameObject object;
     object.setSize({32.f, 32.f});
-    object.setOrigin(16.f, 16.f);
+    object.setOrigin({16.f, 16.f});
     object.setCollisionBox(-16.f, -16.f, 32.f, 32.f);
-    object.setPosition(200.f, 100.f);
+    object.setPosition({200.f, 100.f});
     expectBoxNear(object.getCollisionBox(), {184.f, 84.f, 32.f, 32.f});
     expectBoxNear(object.getCollisionBox(), object.getGlobalBounds());
 }
@@ -66,7 +66,7 @@ TEST(GameObject, LectureStyleBoxAtTopLeftOrigin)
     GameObject square;
     square.setSize({50.f, 50.f});
     square.setCollisionBox(sf::FloatRect(0.f, 0.f, 50.f, 50.f));
-    square.setPosition(0.f, 200.f);
+    square.setPosition({0.f, 200.f});
     expectBoxNear(square.getCollisionBox(), {0.f, 200.f, 50.f, 50.f});
 }
 
@@ -75,7 +75,7 @@ TEST(GameObject, SmallerBoxGivesAMargin)
     GameObject object;
     object.setSize({50.f, 50.f});
     object.setCollisionBox(5.f, 10.f, 40.f, 30.f);
-    object.setPosition(100.f, 100.f);
+    object.setPosition({100.f, 100.f});
     expectBoxNear(object.getCollisionBox(), {105.f, 110.f, 40.f, 30.f});
 }
 
@@ -83,11 +83,11 @@ TEST(GameObject, BoxScalesWithTheObject)
 {
     GameObject object;
     object.setSize({10.f, 10.f});
-    object.setOrigin(5.f, 5.f);
-    object.setPosition(100.f, 100.f);
-    object.setScale(2.f, 3.f);
+    object.setOrigin({5.f, 5.f});
+    object.setPosition({100.f, 100.f});
+    object.setScale({2.f, 3.f});
     expectBoxNear(object.getCollisionBox(), {90.f, 85.f, 20.f, 30.f});
-    object.setScale(-2.f, 1.f); // mirrored: still a box with a positive size
+    object.setScale({-2.f, 1.f}); // mirrored: still a box with a positive size
     expectBoxNear(object.getCollisionBox(), {90.f, 95.f, 20.f, 10.f});
 }
 
@@ -95,8 +95,8 @@ TEST(GameObject, RotatedBoxIsTheEnclosingAxisAlignedBox)
 {
     GameObject object;
     object.setSize({20.f, 10.f});
-    object.setOrigin(10.f, 5.f);
-    object.setPosition(100.f, 100.f);
+    object.setOrigin({10.f, 5.f});
+    object.setPosition({100.f, 100.f});
     object.setRotation(90.f);
     expectBoxNear(object.getCollisionBox(), {95.f, 90.f, 10.f, 20.f});
     object.setRotation(45.f);
@@ -133,8 +133,8 @@ TEST(GameObject, DefaultCircleIsInscribedInTheCollisionBox)
     // origin other than the corner. Hitbox uses the collision box.
     GameObject ball;
     ball.setSize({40.f, 40.f});
-    ball.setOrigin(20.f, 20.f);
-    ball.setPosition(300.f, 200.f);
+    ball.setOrigin({20.f, 20.f});
+    ball.setPosition({300.f, 200.f});
     const hitbox::Circle circle = ball.getBoundingCircle();
     EXPECT_EQ(circle.center, sf::Vector2f(300.f, 200.f));
     EXPECT_FLOAT_EQ(circle.radius, 20.f);
@@ -144,15 +144,15 @@ TEST(GameObject, DefaultCircleUsesTheShorterSideAndTheScale)
 {
     GameObject object;
     object.setSize({60.f, 20.f});
-    object.setPosition(0.f, 0.f);
+    object.setPosition({0.f, 0.f});
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 10.f);
     EXPECT_EQ(object.getBoundingCircle().center, sf::Vector2f(30.f, 10.f));
-    object.setScale(2.f, 2.f);
+    object.setScale({2.f, 2.f});
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 20.f);
     // Stretched one way: still the circle inside the world box, whichever side is shorter.
-    object.setScale(0.1f, 1.f); // a 6 x 20 box
+    object.setScale({0.1f, 1.f}); // a 6 x 20 box
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 3.f);
-    object.setScale(1.f, 3.f); // a 60 x 60 box
+    object.setScale({1.f, 3.f}); // a 60 x 60 box
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 30.f);
     EXPECT_EQ(object.getCollisionBox(), sf::FloatRect(0.f, 0.f, 60.f, 60.f));
 }
@@ -161,8 +161,8 @@ TEST(GameObject, ConfiguredCircleIsMeasuredFromTheOriginPoint)
 {
     GameObject object;
     object.setSize({50.f, 50.f});
-    object.setOrigin(25.f, 25.f);
-    object.setPosition(100.f, 100.f);
+    object.setOrigin({25.f, 25.f});
+    object.setPosition({100.f, 100.f});
     object.setBoundingCircle({0.f, -10.f}, 8.f);
     EXPECT_EQ(object.getBoundingCircle().center, sf::Vector2f(100.f, 90.f));
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 8.f);
@@ -174,8 +174,8 @@ TEST(GameObject, CircleTurnsWithTheObject)
 {
     GameObject object;
     object.setSize({50.f, 50.f});
-    object.setOrigin(25.f, 25.f);
-    object.setPosition(100.f, 100.f);
+    object.setOrigin({25.f, 25.f});
+    object.setPosition({100.f, 100.f});
     object.setBoundingCircle({10.f, 0.f}, 5.f);
     object.setRotation(90.f);
     const hitbox::Circle circle = object.getBoundingCircle();

@@ -8,44 +8,44 @@
 TEST(Input, PressIsSeenForOneFrameDownUntilReleased)
 {
     Input input;
-    input.setKeyDown(sf::Keyboard::W);
-    EXPECT_TRUE(input.isKeyDown(sf::Keyboard::W));
-    EXPECT_TRUE(input.isPressed(sf::Keyboard::W));
+    input.setKeyDown(sf::Keyboard::Key::W);
+    EXPECT_TRUE(input.isKeyDown(sf::Keyboard::Key::W));
+    EXPECT_TRUE(input.isPressed(sf::Keyboard::Key::W));
     input.update();
-    EXPECT_TRUE(input.isKeyDown(sf::Keyboard::W));
-    EXPECT_FALSE(input.isPressed(sf::Keyboard::W));
-    input.setKeyUp(sf::Keyboard::W);
-    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::W));
-    EXPECT_TRUE(input.isReleased(sf::Keyboard::W));
+    EXPECT_TRUE(input.isKeyDown(sf::Keyboard::Key::W));
+    EXPECT_FALSE(input.isPressed(sf::Keyboard::Key::W));
+    input.setKeyUp(sf::Keyboard::Key::W);
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Key::W));
+    EXPECT_TRUE(input.isReleased(sf::Keyboard::Key::W));
     input.update();
-    EXPECT_FALSE(input.isReleased(sf::Keyboard::W));
+    EXPECT_FALSE(input.isReleased(sf::Keyboard::Key::W));
 }
 
 TEST(Input, KeyRepeatIsNotANewPress)
 {
     Input input;
-    input.setKeyDown(sf::Keyboard::Space);
+    input.setKeyDown(sf::Keyboard::Key::Space);
     input.update();
-    input.setKeyDown(sf::Keyboard::Space); // the operating system's auto-repeat
-    EXPECT_FALSE(input.isPressed(sf::Keyboard::Space));
+    input.setKeyDown(sf::Keyboard::Key::Space); // the operating system's auto-repeat
+    EXPECT_FALSE(input.isPressed(sf::Keyboard::Key::Space));
 }
 
 TEST(Input, PressAndReleaseInOneFrameIsStillAPress)
 {
     Input input;
-    input.setKeyDown(sf::Keyboard::A);
-    input.setKeyUp(sf::Keyboard::A);
-    EXPECT_TRUE(input.isPressed(sf::Keyboard::A));
-    EXPECT_TRUE(input.isReleased(sf::Keyboard::A));
-    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::A));
+    input.setKeyDown(sf::Keyboard::Key::A);
+    input.setKeyUp(sf::Keyboard::Key::A);
+    EXPECT_TRUE(input.isPressed(sf::Keyboard::Key::A));
+    EXPECT_TRUE(input.isReleased(sf::Keyboard::Key::A));
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Key::A));
 }
 
 TEST(Input, UnknownAndOutOfRangeKeysAreIgnored)
 {
     Input input;
-    input.setKeyDown(sf::Keyboard::Unknown); // -1: the old framework wrote outside its array
+    input.setKeyDown(sf::Keyboard::Key::Unknown); // -1: the old framework wrote outside its array
     input.setKeyDown(100000);
-    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Unknown));
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Key::Unknown));
     EXPECT_FALSE(input.isKeyDown(100000));
     EXPECT_FALSE(input.isPressed(-5));
 }
@@ -116,10 +116,10 @@ TEST(Input, ReleaseAllLetsGoOfHeldKeys)
 {
     // Focus lost while a key is held: its "up" event never comes.
     Input input;
-    input.setKeyDown(sf::Keyboard::Up);
+    input.setKeyDown(sf::Keyboard::Key::Up);
     input.setMouseLDown(true);
     input.releaseAll();
-    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Up));
+    EXPECT_FALSE(input.isKeyDown(sf::Keyboard::Key::Up));
     EXPECT_FALSE(input.isMouseLDown());
 }
 

@@ -241,7 +241,7 @@ TEST(BallPaddle, ABallGrazingAPaddleCornerBouncesOnceAndGoesOn)
     // Found by an hour of computer play (seed 8): after bouncing off the paddle's end the
     // ball sat a rounding error inside the paddle and was "hit" again every step, forever.
     Court court;
-    court.right.setPosition(court.right.getPosition().x, 457.152618f);
+    court.right.setPosition({court.right.getPosition().x, 457.152618f});
     court.place({1125.71973f, 514.053162f}, {923.210205f, -520.848267f});
     int paddleHits = 0;
     for (int i = 0; i < 30; ++i)

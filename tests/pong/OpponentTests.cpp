@@ -49,8 +49,8 @@ void weakPlayer(const PongLevel& pong, Input& input)
         pongtest::steerTowards(input, paddleY, pong.getBall().getPosition().y, 20.f);
     else
     {
-        input.setKeyUp(sf::Keyboard::W);
-        input.setKeyUp(sf::Keyboard::S);
+        input.setKeyUp(sf::Keyboard::Key::W);
+        input.setKeyUp(sf::Keyboard::Key::S);
     }
 }
 

@@ -87,9 +87,9 @@ std::string playScripted(unsigned seed, float seconds)
             pongtest::steerTowards(input, pong.getPaddle(Side::Left).getPosition().y,
                                    pong.getBall().getPosition().y, 10.f);
         if (pong.getScreen() == Screen::Win && i % 600 == 0)
-            input.setKeyDown(sf::Keyboard::Space);
+            input.setKeyDown(sf::Keyboard::Key::Space);
         else
-            input.setKeyUp(sf::Keyboard::Space);
+            input.setKeyUp(sf::Keyboard::Key::Space);
         step(pong, input);
     }
     return snapshot(pong);

@@ -94,7 +94,7 @@ TEST(PongMatch, SpaceOnTheWinScreenStartsARematchFromNilNil)
     PongLevel pong(twoPlayerSettings());
     pong.showWinScreen(11, 4);
     Input input;
-    input.setKeyDown(sf::Keyboard::Space);
+    input.setKeyDown(sf::Keyboard::Key::Space);
     step(pong, input);
     EXPECT_EQ(pong.getScreen(), Screen::Play);
     EXPECT_EQ(pong.getScore().pointsOf(Side::Left), 0);
@@ -116,9 +116,9 @@ TEST(PongMatch, ComputerAgainstComputerStartsTheNextMatchByItself)
 TEST(PongScreens, NumberKeysOnTheTitleChooseTheMode)
 {
     const std::pair<sf::Keyboard::Key, Mode> choices[] = {
-        {sf::Keyboard::Num1, Mode::OnePlayer},
-        {sf::Keyboard::Num2, Mode::TwoPlayers},
-        {sf::Keyboard::Num3, Mode::ComputerVsComputer}};
+        {sf::Keyboard::Key::Num1, Mode::OnePlayer},
+        {sf::Keyboard::Key::Num2, Mode::TwoPlayers},
+        {sf::Keyboard::Key::Num3, Mode::ComputerVsComputer}};
     for (const auto& [key, mode] : choices)
     {
         PongLevel pong;
@@ -136,13 +136,13 @@ TEST(PongScreens, DOnTheTitleChangesTheDifficultyAndArrowsThePointsToWin)
 {
     PongLevel pong;
     Input input;
-    input.setKeyDown(sf::Keyboard::D);
+    input.setKeyDown(sf::Keyboard::Key::D);
     step(pong, input);
     EXPECT_EQ(pong.getDifficulty(), Difficulty::Hard); // normal -> hard
-    input.setKeyUp(sf::Keyboard::D);
-    input.setKeyDown(sf::Keyboard::Left);
+    input.setKeyUp(sf::Keyboard::Key::D);
+    input.setKeyDown(sf::Keyboard::Key::Left);
     step(pong, input);
-    input.setKeyDown(sf::Keyboard::Num1);
+    input.setKeyDown(sf::Keyboard::Key::Num1);
     step(pong, input);
     EXPECT_EQ(pong.getScore().getPointsToWin(), 10);
 }
@@ -157,10 +157,10 @@ TEST(PongScreens, LeftAloneOnTheTitleTheGamePlaysItselfUntilAKeyIsPressed)
     EXPECT_TRUE(pong.getBall().isMoving());
 
     Input input;
-    input.setKeyDown(sf::Keyboard::F1); // the debug key is not "somebody wants to play"
+    input.setKeyDown(sf::Keyboard::Key::F1); // the debug key is not "somebody wants to play"
     step(pong, input);
     EXPECT_TRUE(pong.isAttractMode());
-    input.setKeyDown(sf::Keyboard::A);
+    input.setKeyDown(sf::Keyboard::Key::A);
     step(pong, input);
     EXPECT_EQ(pong.getScreen(), Screen::Title);
 }
@@ -181,8 +181,8 @@ TEST(PongKeys, WAndSMoveTheLeftPaddleUpAndDownAndArrowsTheRightOne)
     const float leftStart = pong.getPaddle(Side::Left).getPosition().y;
     const float rightStart = pong.getPaddle(Side::Right).getPosition().y;
     Input input;
-    input.setKeyDown(sf::Keyboard::W);
-    input.setKeyDown(sf::Keyboard::Down);
+    input.setKeyDown(sf::Keyboard::Key::W);
+    input.setKeyDown(sf::Keyboard::Key::Down);
     for (int i = 0; i < 12; ++i)
         step(pong, input);
     EXPECT_LT(pong.getPaddle(Side::Left).getPosition().y, leftStart);
@@ -194,7 +194,7 @@ TEST(PongKeys, PaddlesStopShortOfTheWallsLeavingRoomForTheBall)
     PongLevel pong(twoPlayerSettings());
     pong.startMatch(Mode::TwoPlayers);
     Input input;
-    input.setKeyDown(sf::Keyboard::W);
+    input.setKeyDown(sf::Keyboard::Key::W);
     for (int i = 0; i < stepsFor(2.f); ++i)
         step(pong, input);
     const float gap = pong.getPaddle(Side::Left).getCollisionBox().top - pong.getArena().playTop();
@@ -205,12 +205,12 @@ TEST(PongKeys, MTogglesTheSound)
 {
     PongLevel pong;
     Input input;
-    input.setKeyDown(sf::Keyboard::M);
+    input.setKeyDown(sf::Keyboard::Key::M);
     step(pong, input);
     EXPECT_TRUE(pong.isMuted());
-    input.setKeyUp(sf::Keyboard::M);
+    input.setKeyUp(sf::Keyboard::Key::M);
     step(pong, input);
-    input.setKeyDown(sf::Keyboard::M);
+    input.setKeyDown(sf::Keyboard::Key::M);
     step(pong, input);
     EXPECT_FALSE(pong.isMuted());
 }

@@ -34,12 +34,12 @@ inline long long stepsFor(float seconds)
 // Hold `up` or `down` (or neither) so the paddle heads for `targetY`.
 inline void steerTowards(Input& input, float paddleY, float targetY, float deadZone)
 {
-    input.setKeyUp(sf::Keyboard::W);
-    input.setKeyUp(sf::Keyboard::S);
+    input.setKeyUp(sf::Keyboard::Key::W);
+    input.setKeyUp(sf::Keyboard::Key::S);
     if (targetY < paddleY - deadZone)
-        input.setKeyDown(sf::Keyboard::W);
+        input.setKeyDown(sf::Keyboard::Key::W);
     else if (targetY > paddleY + deadZone)
-        input.setKeyDown(sf::Keyboard::S);
+        input.setKeyDown(sf::Keyboard::Key::S);
 }
 
 // A person playing the left paddle; decides the keys from what is on screen.

@@ -14,9 +14,9 @@ TEST(Sounds, ABeepHasTheRequestedLength)
 
 TEST(Sounds, ABeepIsAudibleButNotFullScaleAndEndsSilentlyWithoutAClick)
 {
-    const std::vector<sf::Int16> beep = synthesizeBeep(460.f, 0.05f, 44100);
+    const std::vector<std::int16_t> beep = synthesizeBeep(460.f, 0.05f, 44100);
     int loudest = 0;
-    for (sf::Int16 sample : beep)
+    for (std::int16_t sample : beep)
         loudest = std::max(loudest, std::abs(static_cast<int>(sample)));
     EXPECT_GT(loudest, 4000);
     EXPECT_LT(loudest, 16000);

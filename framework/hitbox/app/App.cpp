@@ -3,6 +3,7 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Display.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Loop.h"
 #include "hitbox/app/private/Window.h"
 
 #include <cstdlib>
@@ -24,33 +25,48 @@ int runHeadless(Level& level, const Options& options, const ProgramInfo& info)
     return 0;
 }
 
+// The loop's host without a window: no input, nothing drawn, exactly one step per frame.
+class HeadlessHost : public LoopHost
+{
+public:
+    explicit HeadlessHost(long long frames) : framesLeft(frames) {}
+
+    bool isRunning() const override { return framesLeft > 0; }
+    float processInput(Input&) override
+    {
+        --framesLeft;
+        return stepSeconds;
+    }
+    int stepsToRun(int) override { return 1; }
+    void render(const Level&) override {}
+
+private:
+    long long framesLeft;
+};
+
 } // namespace
 
 void simulate(Level& level, long long frames)
 {
-    const Input noInput;
-    for (long long frame = 0; frame < frames; ++frame)
-    {
-        level.handleInput(noInput, stepSeconds);
-        level.update(stepSeconds);
-    }
+    HeadlessHost host(frames);
+    runLoop(level, host);
 }
 
 sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize)
 {
     if (windowSize.x == 0 || windowSize.y == 0 || !(worldSize.x > 0.f) || !(worldSize.y > 0.f))
-        return {0.f, 0.f, 1.f, 1.f};
+        return sf::FloatRect({0.f, 0.f}, {1.f, 1.f});
     const float windowAspect = static_cast<float>(windowSize.x) / static_cast<float>(windowSize.y);
     const float worldAspect = worldSize.x / worldSize.y;
     if (windowAspect > worldAspect)
     {
         // Window too wide: bars left and right.
         const float width = worldAspect / windowAspect;
-        return {(1.f - width) / 2.f, 0.f, width, 1.f};
+        return sf::FloatRect({(1.f - width) / 2.f, 0.f}, {width, 1.f});
     }
     // Window too tall: bars above and below.
     const float height = windowAspect / worldAspect;
-    return {0.f, (1.f - height) / 2.f, 1.f, height};
+    return sf::FloatRect({0.f, (1.f - height) / 2.f}, {1.f, height});
 }
 
 int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel)

@@ -1,5 +1,7 @@
 #include "hitbox/app/Assets.h"
 
+#include "hitbox/sfml/Graphics.h"
+
 #include <SFML/System/Err.hpp>
 
 #include <cstdlib>
@@ -77,7 +79,7 @@ sf::Font loadFont(const std::string& relativePath)
     // SFML prints its own multi-line complaint; keep it and say one clear line instead.
     std::ostringstream sfmlMessage;
     std::streambuf* previous = sf::err().rdbuf(sfmlMessage.rdbuf());
-    const bool loaded = font.loadFromFile(path);
+    const bool loaded = openFont(font, path);
     sf::err().rdbuf(previous);
     if (!loaded)
         throw AssetError("Hitbox: the font '" + path +

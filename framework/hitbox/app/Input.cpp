@@ -1,5 +1,7 @@
 #include "hitbox/app/Input.h"
 
+#include "hitbox/app/Keys.h"
+
 #include <cmath>
 
 namespace
@@ -7,7 +9,7 @@ namespace
 
 bool isKnownKey(int key)
 {
-    return key >= 0 && key < sf::Keyboard::KeyCount;
+    return key >= 0 && key < hitbox::keyCount;
 }
 
 } // namespace
@@ -178,7 +180,7 @@ float Input::getMouseWheel() const
 
 void Input::releaseAll()
 {
-    for (int key = 0; key < sf::Keyboard::KeyCount; ++key)
+    for (int key = 0; key < hitbox::keyCount; ++key)
         setKeyUp(key);
     setMouseLDown(false);
     setMouseRDown(false);

@@ -23,13 +23,19 @@ public:
         PRESSED // went down this frame
     };
 
-    // Keys are sf::Keyboard key codes (sf::Keyboard::W converts to int). Codes outside
-    // the keyboard's range, such as sf::Keyboard::Unknown (-1), are ignored.
+    // Keys are sf::Keyboard::Key values (sf::Keyboard::Key::W) or their int codes. Codes
+    // outside the keyboard's range, such as sf::Keyboard::Key::Unknown (-1), are ignored.
     void setKeyDown(int key);
     void setKeyUp(int key);
     bool isKeyDown(int key) const;
     bool isPressed(int key) const;  // went down this frame
     bool isReleased(int key) const; // went up this frame
+    // The same with sf::Keyboard::Key, which SFML 3 no longer converts to int by itself.
+    void setKeyDown(sf::Keyboard::Key key) { setKeyDown(static_cast<int>(key)); }
+    void setKeyUp(sf::Keyboard::Key key) { setKeyUp(static_cast<int>(key)); }
+    bool isKeyDown(sf::Keyboard::Key key) const { return isKeyDown(static_cast<int>(key)); }
+    bool isPressed(sf::Keyboard::Key key) const { return isPressed(static_cast<int>(key)); }
+    bool isReleased(sf::Keyboard::Key key) const { return isReleased(static_cast<int>(key)); }
 
     // The mouse position. In Hitbox programs it is in world coordinates (already mapped
     // through the view, so it stays right after a resize); the int versions round it.

@@ -25,8 +25,8 @@ const float pi = 3.14159265f;
 
 void DebugRenderer::line(sf::Vector2f from, sf::Vector2f to, sf::Color color)
 {
-    // Each line is a thin quad (two triangles) rather than a 1-pixel sf::Lines segment, so
-    // outlines stay visible on a lecture-hall projector.
+    // Each line is a thin quad (two triangles) rather than a 1-pixel sf::PrimitiveType::Lines
+    // segment, so outlines stay visible on a lecture-hall projector.
     const sf::Vector2f along = to - from;
     const float length = std::sqrt(along.x * along.x + along.y * along.y);
     const sf::Vector2f side = length > 0.f

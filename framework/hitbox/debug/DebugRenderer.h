@@ -48,7 +48,7 @@ public:
     const sf::VertexArray& getVertices() const;
 
 private:
-    sf::VertexArray vertices{sf::Triangles};
+    sf::VertexArray vertices{sf::PrimitiveType::Triangles};
 };
 
 } // namespace hitbox

@@ -5,7 +5,7 @@
 // framework is listed in the README ("Differences from the course's old framework").
 //
 // The collision box is measured from the object's position, i.e. from its origin point:
-//     setOrigin(16, 16);
+//     setOrigin({16, 16});
 //     setCollisionBox(-16, -16, 32, 32);   // covers the whole 32 x 32 shape
 // Until a box is set, the collision box is the whole shape and follows setSize/setOrigin.
 #pragma once

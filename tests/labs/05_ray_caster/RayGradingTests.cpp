@@ -114,8 +114,8 @@ TEST(Task2SweepAndSlide, TheLabFieldIsNeverEntered)
 {
     RayLevel level;
     Input input;
-    const std::vector<sf::Keyboard::Key> keys = {sf::Keyboard::Right, sf::Keyboard::Up,
-                                                 sf::Keyboard::Left, sf::Keyboard::Down};
+    const std::vector<sf::Keyboard::Key> keys = {sf::Keyboard::Key::Right, sf::Keyboard::Key::Up,
+                                                 sf::Keyboard::Key::Left, sf::Keyboard::Key::Down};
     for (int step = 0; step < 120 * 12; ++step)
     {
         // Hold two keys at a time, changing every 0.75 s: diagonal moves into everything.

@@ -164,7 +164,7 @@ TEST(Task4PushOut, SpaceMovesTheHeldShapeOutAlongTheMtv)
     const sf::Vector2f expectedMove = nearest->axis * -nearest->gap;
 
     Input input;
-    input.setKeyDown(sf::Keyboard::Space);
+    input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
     const sf::Vector2f moved = level.getShapes()[0].body.center - before;
     EXPECT_NEAR(moved.x, expectedMove.x, 1e-2f);
@@ -178,7 +178,7 @@ TEST(Task4PushOut, OutOfTheCapsuleToo)
                         {{{250.f, 250.f}, {60.f, 25.f}, -20.f}, true}});
     ASSERT_TRUE(level.isOverlapping(0));
     Input input;
-    input.setKeyDown(sf::Keyboard::Space);
+    input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
     EXPECT_FALSE(level.isOverlapping(0));
 }
@@ -198,7 +198,7 @@ TEST(Task4PushOut, ADraggedShapeIsPushedOutOfWhatItWasDroppedOn)
     input.setMouseLDown(false);
     stepWith(level, input);
     ASSERT_TRUE(level.isOverlapping(1));
-    input.setKeyDown(sf::Keyboard::Space);
+    input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
     EXPECT_FALSE(level.isOverlapping(1));
     EXPECT_FALSE(level.isOverlapping(0));

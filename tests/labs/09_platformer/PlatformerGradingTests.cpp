@@ -54,7 +54,7 @@ TEST(Task1Jump, JumpFromTheFloorRisesAboutFourTiles)
     Game game(platformertest::room);
     game.run(1.f);
     const float standingTop = game.position().y;
-    game.tap(sf::Keyboard::Space);
+    game.tap(sf::Keyboard::Key::Space);
     const float top = highestTop(game, 1.f);
     // v^2 / 2g = 1140^2 / 6600 = 197 pixels, give or take one step.
     const float expected = Player::jumpSpeed * Player::jumpSpeed / (2.f * Player::gravity);
@@ -66,7 +66,7 @@ TEST(Task1Jump, JumpPressedInTheAirDoesNothing)
 {
     Game game(platformertest::deepShaft(40));
     game.frame(); // falling from the start
-    game.tap(sf::Keyboard::Space);
+    game.tap(sf::Keyboard::Key::Space);
     EXPECT_GT(game.velocity().y, 0.f) << "still falling: no jumping off thin air";
 }
 
@@ -74,14 +74,14 @@ TEST(Task1Jump, NoSecondJumpAtTheTopOfTheFirst)
 {
     Game single(platformertest::room);
     single.run(1.f);
-    single.tap(sf::Keyboard::Space);
+    single.tap(sf::Keyboard::Key::Space);
     const float singleTop = highestTop(single, 1.f);
 
     Game twice(platformertest::room);
     twice.run(1.f);
-    twice.tap(sf::Keyboard::Space);
+    twice.tap(sf::Keyboard::Key::Space);
     twice.run(0.25f);
-    twice.tap(sf::Keyboard::Space);
+    twice.tap(sf::Keyboard::Key::Space);
     EXPECT_FLOAT_EQ(highestTop(twice, 1.f), singleTop);
 }
 
@@ -167,7 +167,7 @@ TEST(Task4SpeedCap, EveryStepMovesLessThanATileEvenWhenDiving)
 {
     Game game(platformertest::deepShaft(200));
     game.run(0.2f);
-    game.tap(sf::Keyboard::S); // dive: asks for 13 500 px/s
+    game.tap(sf::Keyboard::Key::S); // dive: asks for 13 500 px/s
     for (int frame = 0; frame < 120; ++frame)
     {
         const float before = game.position().y;
@@ -202,7 +202,7 @@ TEST(Task4SpeculativeContacts, PlayerRunsAndStopsAtAWallLikeTheDiscreteVersion)
 {
     Game game(platformertest::room);
     game.level.setSpeculativeContacts(true);
-    game.input.setKeyDown(sf::Keyboard::D);
+    game.input.setKeyDown(sf::Keyboard::Key::D);
     game.run(3.f);
     EXPECT_NEAR(game.position().x + Player::width, 9 * TileMap::tileSize, 0.01f);
     EXPECT_NEAR(game.feet(), platformertest::roomFloorTop, 0.01f);
@@ -215,7 +215,7 @@ TEST(Movement, RunningSpeedsUpToTheTopSpeedAndNoFurther)
 {
     Game game(platformertest::room);
     game.run(1.f);
-    game.input.setKeyDown(sf::Keyboard::D);
+    game.input.setKeyDown(sf::Keyboard::Key::D);
     game.run(0.05f);
     EXPECT_NEAR(game.velocity().x, Player::runAcceleration * 0.05f, 1.f);
     game.run(0.5f);
@@ -226,9 +226,9 @@ TEST(Movement, LettingGoBrakesToAStopFasterThanStartingUp)
 {
     Game game(platformertest::room);
     game.run(1.f);
-    game.input.setKeyDown(sf::Keyboard::A);
+    game.input.setKeyDown(sf::Keyboard::Key::A);
     game.run(0.4f);
-    game.input.setKeyUp(sf::Keyboard::A);
+    game.input.setKeyUp(sf::Keyboard::Key::A);
     int stepsToStop = 0;
     while (game.velocity().x != 0.f && stepsToStop < 1000)
     {
@@ -243,7 +243,7 @@ TEST(Movement, LettingGoBrakesToAStopFasterThanStartingUp)
 TEST(Task1Movement, RunningIntoAWallStopsFlushAgainstIt)
 {
     Game game(platformertest::room);
-    game.input.setKeyDown(sf::Keyboard::A);
+    game.input.setKeyDown(sf::Keyboard::Key::A);
     game.run(3.f);
     EXPECT_NEAR(game.position().x, TileMap::tileSize, 0.01f);
     EXPECT_EQ(game.velocity().x, 0.f);
@@ -259,9 +259,9 @@ TEST(Movement, SameKeysGiveTheSameJumpAtAnyFrameRate)
         Game game(platformertest::room);
         const float dt = 1.f / framesPerSecond;
         game.run(0.5f, dt);
-        game.input.setKeyDown(sf::Keyboard::D);
+        game.input.setKeyDown(sf::Keyboard::Key::D);
         game.run(0.5f, dt);
-        game.tap(sf::Keyboard::Space, dt);
+        game.tap(sf::Keyboard::Key::Space, dt);
         game.run(0.3f - dt, dt); // the tap was one frame of the 0.3 s
         return game.position();
     };
@@ -282,7 +282,7 @@ TEST(Task1Grounded, WalkingOffALedgeIsNotGrounded)
     game.level.placePlayer({64.f, platformertest::ledgeTop - Player::height});
     game.run(0.1f);
     ASSERT_TRUE(game.level.isGrounded());
-    game.input.setKeyDown(sf::Keyboard::D);
+    game.input.setKeyDown(sf::Keyboard::Key::D);
     while (game.position().x < platformertest::ledgeRight + 1.f)
         game.frame();
     game.frame();
@@ -293,7 +293,7 @@ TEST(Grounded, PressedAgainstAWallInTheAirIsNotGrounded)
 {
     Game game(platformertest::room);
     game.level.placePlayer({60.f, 60.f});
-    game.input.setKeyDown(sf::Keyboard::A);
+    game.input.setKeyDown(sf::Keyboard::Key::A);
     game.run(0.15f);
     EXPECT_NEAR(game.position().x, TileMap::tileSize, 0.01f) << "against the left wall";
     EXPECT_FALSE(game.level.isGrounded());

@@ -50,7 +50,7 @@ TEST(Task1PerAxis, WalkingIntoAWallStopsTheFeetFlushAgainstIt)
     Game game;
     game.level.addWall({600.f, 200.f, 40.f, 300.f});
     game.level.placePlayer({500.f, 350.f});
-    game.input.setKeyDown(sf::Keyboard::D);
+    game.input.setKeyDown(sf::Keyboard::Key::D);
     game.run(1.f);
     const sf::FloatRect feet = game.player().hitbox();
     EXPECT_FLOAT_EQ(feet.left + feet.width, 600.f);
@@ -61,8 +61,8 @@ TEST(Task1PerAxis, WalkingDiagonallyIntoAWallSlidesAlongIt)
     Game game;
     game.level.addWall({300.f, 200.f, 600.f, 40.f}); // a wall above the player
     game.level.placePlayer({400.f, 270.f});
-    game.input.setKeyDown(sf::Keyboard::W);
-    game.input.setKeyDown(sf::Keyboard::D);
+    game.input.setKeyDown(sf::Keyboard::Key::W);
+    game.input.setKeyDown(sf::Keyboard::Key::D);
     game.run(0.5f);
     const sf::FloatRect feet = game.player().hitbox();
     EXPECT_FLOAT_EQ(feet.top, 240.f) << "stopped by the wall on y";
@@ -89,7 +89,7 @@ TEST(Task1PerAxis, ATreeTrunkBlocksButTheLeavesDoNot)
     const sf::FloatRect trunk = game.level.getTrees().at(0).hitbox();
     // Walk up from below: stopped by the small trunk box, deep inside the tree's picture.
     game.level.placePlayer({600.f, 420.f});
-    game.input.setKeyDown(sf::Keyboard::W);
+    game.input.setKeyDown(sf::Keyboard::Key::W);
     game.run(1.f);
     EXPECT_FLOAT_EQ(game.player().hitbox().top, trunk.top + trunk.height);
     // Beside the trunk, walking up: nothing stops the player behind the leaves.
@@ -218,14 +218,14 @@ TEST(Sword, ASwingHitsTheEnemyInFrontAndThreeHitsDefeatIt)
     Game game;
     game.level.addEnemy({560.f, 300.f});
     game.level.placePlayer({500.f, 300.f});
-    game.tap(sf::Keyboard::D); // face right
-    game.tap(sf::Keyboard::Space);
+    game.tap(sf::Keyboard::Key::D); // face right
+    game.tap(sf::Keyboard::Key::Space);
     ASSERT_EQ(game.level.getEnemies().size(), 1u);
     EXPECT_EQ(game.level.getEnemies()[0].body.health, TopDownLevel::enemyHealth - 1);
     for (int swing = 0; swing < 6 && !game.level.getEnemies().empty(); ++swing)
     {
         game.level.placePlayer({game.level.getEnemies()[0].body.feet.x - 60.f, 300.f});
-        game.tap(sf::Keyboard::Space);
+        game.tap(sf::Keyboard::Key::Space);
         game.run(0.5f);
     }
     EXPECT_TRUE(game.level.getEnemies().empty());

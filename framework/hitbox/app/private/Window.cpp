@@ -1,10 +1,13 @@
 #include "hitbox/app/private/Window.h"
 
 #include "hitbox/app/Assets.h"
-#include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Keys.h"
+#include "hitbox/app/Loop.h"
 #include "hitbox/app/Screenshot.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Events.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics.hpp>
 
@@ -16,8 +19,6 @@ namespace hitbox
 namespace
 {
 
-const char* sharedKeys = "F1 debug boxes   P pause   N step   F12 screenshot   Esc quit";
-
 struct FrameSettings
 {
     bool showDebug = false;
@@ -27,7 +28,7 @@ struct FrameSettings
 
 std::string helpLine(const Level& level, const FrameSettings& settings)
 {
-    std::string line = sharedKeys;
+    std::string line = sharedKeysHelp();
     const std::string levelKeys = level.getHelpText();
     if (!levelKeys.empty())
         line += "   |   " + levelKeys;
@@ -53,22 +54,22 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
 
     const float barHeight = 24.f;
     sf::RectangleShape bar({world.x, barHeight});
-    bar.setPosition(0.f, world.y - barHeight);
+    bar.setPosition({0.f, world.y - barHeight});
     bar.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(bar);
-    sf::Text help(helpLine(level, settings), font, 14);
+    sf::Text help = makeText(font, helpLine(level, settings), 14);
     help.setFillColor(sf::Color(220, 220, 220));
-    help.setPosition(8.f, world.y - barHeight + 3.f);
+    help.setPosition({8.f, world.y - barHeight + 3.f});
     target.draw(help);
 
     if (settings.paused)
     {
-        sf::Text paused("PAUSED  -  P to resume, N for one step", font, 22);
+        sf::Text paused = makeText(font, "PAUSED  -  P to resume, N for one step", 22);
         paused.setFillColor(sf::Color::White);
         paused.setOutlineColor(sf::Color::Black);
         paused.setOutlineThickness(2.f);
-        const sf::FloatRect size = paused.getLocalBounds();
-        paused.setPosition((world.x - size.width) / 2.f, 12.f);
+        const float width = rectSize(paused.getLocalBounds()).x;
+        paused.setPosition({(world.x - width) / 2.f, 12.f});
         target.draw(paused);
     }
 }
@@ -76,35 +77,34 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
 sf::View worldView(const Level& level, sf::Vector2u windowSize)
 {
     const sf::Vector2f world = level.getWorldSize();
-    sf::View view(sf::FloatRect(0.f, 0.f, world.x, world.y));
+    sf::View view(sf::FloatRect({0.f, 0.f}, world));
     view.setViewport(letterboxViewport(windowSize, world));
     return view;
 }
 
-void feedInput(Input& input, const sf::Event& event)
+void feedInput(Input& input, const WindowEvent& event)
 {
-    switch (event.type)
+    using Kind = WindowEvent::Kind;
+    const bool pressed = event.kind == Kind::MouseButtonPressed;
+    switch (event.kind)
     {
-    case sf::Event::KeyPressed:
-        input.setKeyDown(event.key.code);
+    case Kind::KeyPressed:
+        input.setKeyDown(static_cast<int>(event.key));
         break;
-    case sf::Event::KeyReleased:
-        input.setKeyUp(event.key.code);
+    case Kind::KeyReleased:
+        input.setKeyUp(static_cast<int>(event.key));
         break;
-    case sf::Event::MouseButtonPressed:
-    case sf::Event::MouseButtonReleased:
-    {
-        const bool down = event.type == sf::Event::MouseButtonPressed;
-        if (event.mouseButton.button == sf::Mouse::Left)
-            input.setMouseLDown(down);
-        else if (event.mouseButton.button == sf::Mouse::Right)
-            input.setMouseRDown(down);
+    case Kind::MouseButtonPressed:
+    case Kind::MouseButtonReleased:
+        if (event.button == sf::Mouse::Button::Left)
+            input.setMouseLDown(pressed);
+        else if (event.button == sf::Mouse::Button::Right)
+            input.setMouseRDown(pressed);
         break;
-    }
-    case sf::Event::MouseWheelScrolled:
-        input.addMouseWheel(event.mouseWheelScroll.delta);
+    case Kind::MouseWheelScrolled:
+        input.addMouseWheel(event.wheelDelta);
         break;
-    case sf::Event::LostFocus:
+    case Kind::FocusLost:
         input.releaseAll();
         break;
     default:
@@ -112,87 +112,103 @@ void feedInput(Input& input, const sf::Event& event)
     }
 }
 
-} // namespace
-
-int runWindow(Level& level, const Options& options, const ProgramInfo& info)
+// The loop's host with a window: events and the shared keys in, one drawn frame out.
+class WindowHost : public LoopHost
 {
-    const sf::Font font = loadFont();
-    const sf::Vector2f world = level.getWorldSize();
-    sf::RenderWindow window(
-        sf::VideoMode(static_cast<unsigned>(world.x), static_cast<unsigned>(world.y)), info.title);
-    window.setFramerateLimit(120);
-
-    Input input;
-    FixedStep fixedStep(stepSeconds);
-    FrameSettings settings;
-    settings.showDebug = options.debugBoxes;
-    bool pausedByKey = false;
-    bool pausedByFocus = false;
-    sf::Vector2i mousePixel;
-    sf::Clock frameClock;
-    sf::Clock fpsClock;
-    int framesCounted = 0;
-
-    while (window.isOpen())
+public:
+    WindowHost(Level& level, const Options& options, const ProgramInfo& info)
+        : level(level), font(loadFont()),
+          window(videoMode(static_cast<unsigned>(level.getWorldSize().x),
+                           static_cast<unsigned>(level.getWorldSize().y)),
+                 info.title)
     {
-        bool stepOnce = false;
-        sf::Event event;
-        while (window.pollEvent(event))
-        {
-            feedInput(input, event);
-            if (event.type == sf::Event::Closed)
-                window.close();
-            else if (event.type == sf::Event::LostFocus)
-                pausedByFocus = true;
-            else if (event.type == sf::Event::GainedFocus)
-                pausedByFocus = false;
-            else if (event.type == sf::Event::MouseMoved)
-                mousePixel = {event.mouseMove.x, event.mouseMove.y};
-            else if (event.type == sf::Event::KeyPressed)
-            {
-                const sf::Keyboard::Key key = event.key.code;
-                if (key == sf::Keyboard::F1)
-                    settings.showDebug = !settings.showDebug;
-                else if (key == sf::Keyboard::P)
-                    pausedByKey = !pausedByKey;
-                else if (key == sf::Keyboard::N)
-                    stepOnce = true;
-                else if (key == sf::Keyboard::F12)
-                {
-                    sf::Texture capture;
-                    capture.create(window.getSize().x, window.getSize().y);
-                    capture.update(window);
-                    const std::string path = freeScreenshotName("", screenshotStamp());
-                    const SaveResult saved = saveImage(capture.copyToImage(), path);
-                    if (saved)
-                        std::cout << "Saved " << path << std::endl;
-                    else
-                        std::cerr << "Could not save " << path << ": " << saved.problem
-                                  << std::endl;
-                }
-                else if (key == sf::Keyboard::Escape && !level.handleEscape())
-                    window.close();
-            }
-        }
+        window.setFramerateLimit(static_cast<unsigned>(stepsPerSecond));
+        settings.showDebug = options.debugBoxes;
+    }
 
-        // Recomputed every frame, so the mouse is right after a resize or a view change.
-        const sf::View view = worldView(level, window.getSize());
-        input.setMousePosition(window.mapPixelToCoords(mousePixel, view));
+    bool isRunning() const override { return window.isOpen(); }
 
-        settings.paused = pausedByKey || pausedByFocus;
-        const float frameSeconds = frameClock.restart().asSeconds();
-        int steps = settings.paused ? 0 : fixedStep.advance(frameSeconds);
-        if (settings.paused && stepOnce)
-            steps = 1;
-        for (int step = 0; step < steps; ++step)
-        {
-            level.handleInput(input, stepSeconds);
-            level.update(stepSeconds);
-            input.update(); // a press is seen by exactly one step
-        }
+    float processInput(Input& input) override
+    {
         if (settings.paused)
             input.update(); // presses while paused are not saved up for later
+        stepOnce = false;
+        WindowEvent event;
+        while (pollEvent(window, event))
+        {
+            feedInput(input, event);
+            if (event.kind == WindowEvent::Kind::Closed)
+                window.close();
+            else if (event.kind == WindowEvent::Kind::FocusLost)
+                pausedByFocus = true;
+            else if (event.kind == WindowEvent::Kind::FocusGained)
+                pausedByFocus = false;
+            else if (event.kind == WindowEvent::Kind::MouseMoved)
+                mousePixel = event.mousePixel;
+            else if (event.kind == WindowEvent::Kind::KeyPressed)
+                actOnSharedKey(findSharedKey(static_cast<int>(event.key)));
+        }
+        settings.paused = pausedByKey || pausedByFocus;
+        // Recomputed every frame, so the mouse is right after a resize or a view change.
+        input.setMousePosition(
+            window.mapPixelToCoords(mousePixel, worldView(level, window.getSize())));
+        return frameClock.restart().asSeconds();
+    }
 
+    int stepsToRun(int due) override
+    {
+        if (settings.paused)
+            return stepOnce ? 1 : 0;
+        return due;
+    }
+
+    void render(const Level& drawn) override
+    {
+        countFrame();
+        window.setView(worldView(drawn, window.getSize()));
+        drawFrame(window, drawn, font, settings);
+        window.display();
+    }
+
+private:
+    void actOnSharedKey(const SharedKey* shared)
+    {
+        if (shared == nullptr)
+            return;
+        switch (shared->action)
+        {
+        case SharedAction::ToggleDebug:
+            settings.showDebug = !settings.showDebug;
+            break;
+        case SharedAction::Pause:
+            pausedByKey = !pausedByKey;
+            break;
+        case SharedAction::Step:
+            stepOnce = true;
+            break;
+        case SharedAction::Screenshot:
+            saveWindowPicture();
+            break;
+        case SharedAction::Quit:
+            if (!level.handleEscape())
+                window.close();
+            break;
+        }
+    }
+
+    void saveWindowPicture()
+    {
+        const std::string path = freeScreenshotName("", screenshotStamp());
+        const SaveResult saved = saveImage(captureWindow(window), path);
+        if (saved)
+            std::cout << "Saved " << path << std::endl;
+        else
+            std::cerr << "Could not save " << path << ": " << saved.problem << std::endl;
+    }
+
+    // Frames per second for the help line, measured over half a second.
+    void countFrame()
+    {
         ++framesCounted;
         if (fpsClock.getElapsedTime().asSeconds() >= 0.5f)
         {
@@ -200,11 +216,27 @@ int runWindow(Level& level, const Options& options, const ProgramInfo& info)
                 static_cast<int>(framesCounted / fpsClock.restart().asSeconds() + 0.5f);
             framesCounted = 0;
         }
-
-        window.setView(view);
-        drawFrame(window, level, font, settings);
-        window.display();
     }
+
+    Level& level;
+    const sf::Font font;
+    sf::RenderWindow window;
+    FrameSettings settings;
+    bool pausedByKey = false;
+    bool pausedByFocus = false;
+    bool stepOnce = false;
+    sf::Vector2i mousePixel;
+    sf::Clock frameClock;
+    sf::Clock fpsClock;
+    int framesCounted = 0;
+};
+
+} // namespace
+
+int runWindow(Level& level, const Options& options, const ProgramInfo& info)
+{
+    WindowHost host(level, options, info);
+    runLoop(level, host);
     return 0;
 }
 
@@ -215,14 +247,14 @@ int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info
 
     const sf::Vector2f world = level.getWorldSize();
     sf::RenderTexture canvas;
-    if (!canvas.create(static_cast<unsigned>(world.x), static_cast<unsigned>(world.y)))
+    if (!makeCanvas(canvas, static_cast<unsigned>(world.x), static_cast<unsigned>(world.y)))
     {
         std::cerr << info.title << ": could not create an image to draw into." << std::endl;
         return 1;
     }
     FrameSettings settings;
     settings.showDebug = options.debugBoxes;
-    canvas.setView(sf::View(sf::FloatRect(0.f, 0.f, world.x, world.y)));
+    canvas.setView(sf::View(sf::FloatRect({0.f, 0.f}, world)));
     drawFrame(canvas, level, font, settings);
     canvas.display();
     const SaveResult saved = saveImage(canvas.getTexture().copyToImage(), options.screenshotPath);

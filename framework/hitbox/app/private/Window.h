@@ -1,5 +1,5 @@
-// Window.h - the windowed half of hitbox::App: the frame loop, the keys every program
-// shares, the help line and screenshots. Only App.cpp calls these.
+// Window.h - the windowed half of hitbox::App: the window the loop (Loop.h) runs in, where
+// the shared keys (Keys.h) act, the help line and screenshots. Only App.cpp calls these.
 #pragma once
 
 #include "hitbox/app/App.h"

@@ -1,0 +1,17 @@
+#include "hitbox/sfml/Audio.h"
+
+namespace hitbox
+{
+
+bool loadMonoSamples(sf::SoundBuffer& buffer, const std::vector<std::int16_t>& samples,
+                     unsigned sampleRate)
+{
+#if SFML_VERSION_MAJOR >= 3
+    return buffer.loadFromSamples(samples.data(), samples.size(), 1, sampleRate,
+                                  {sf::SoundChannel::Mono});
+#else
+    return buffer.loadFromSamples(samples.data(), samples.size(), 1, sampleRate);
+#endif
+}
+
+} // namespace hitbox

@@ -1,0 +1,49 @@
+// Graphics.h - drawing calls whose form differs between SFML 2 and SFML 3, one helper each.
+//
+// Where both versions accept the same call (setPosition({x, y}), sf::FloatRect({x, y},
+// {w, h}), sf::PrimitiveType::Triangles, sf::Keyboard::Key::A), use that call directly.
+#pragma once
+
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/Rect.hpp>
+#include <SFML/Graphics/Text.hpp>
+#include <SFML/Graphics/Transformable.hpp>
+#include <SFML/Window/VideoMode.hpp>
+
+#include <string>
+
+namespace sf
+{
+class Image;
+class RenderTexture;
+class RenderWindow;
+} // namespace sf
+
+namespace hitbox
+{
+
+// A text to draw. SFML 3's sf::Text needs its font when it is made, SFML 2's takes
+// (string, font, size) in another order.
+sf::Text makeText(const sf::Font& font, const sf::String& string, unsigned characterSize);
+
+// Loads a font file; false when it cannot (SFML 2: loadFromFile, SFML 3: openFromFile).
+bool openFont(sf::Font& font, const std::string& path);
+
+// A window mode of `width` x `height` pixels.
+sf::VideoMode videoMode(unsigned width, unsigned height);
+
+// Makes `canvas` `width` x `height` pixels; false when the graphics driver cannot.
+bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height);
+
+// What `window` shows now, as an image (for screenshots).
+sf::Image captureWindow(const sf::RenderWindow& window);
+
+// Rotation in degrees, clockwise (SFML 3 uses sf::Angle, SFML 2 a float in degrees).
+void setRotationDegrees(sf::Transformable& shape, float degrees);
+float getRotationDegrees(const sf::Transformable& shape);
+
+// A rectangle's corner and size (SFML 3: position/size, SFML 2: left/top/width/height).
+sf::Vector2f rectPosition(const sf::FloatRect& rect);
+sf::Vector2f rectSize(const sf::FloatRect& rect);
+
+} // namespace hitbox
