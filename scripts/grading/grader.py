@@ -260,7 +260,7 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     """Builds the lab's tests against the student's files and runs every instructor test.
     Returns a dict: results (TestResult per instructor test), notes (why a lab got nothing)."""
     if not any(submission.find(lab, relative, files) for relative in lab.student_files):
-        return {"results": [TestResult(t, False, "not submitted") for t in lab.tests],
+        return {"results": [TestResult(t, False, "not submitted") for t in lab.tests], "not_submitted": True,
                 "notes": ["not submitted: none of the lab's files (" + ", ".join(lab.student_files) + ") is in the submission"]}
     work = submission.scratch / lab.name
     lab_copy = work / "src" / lab.folder  # a clean copy of the instructor's lab folder
@@ -444,7 +444,7 @@ def write_reports(report, labs, out):
                     "output": f"{passed}/{total} tests passed" + "".join(
                         f"\n- {r.name}: {r.message}" for r in failures)})
         feedback.append("")
-        for task, passed, total, mark, failures in rows:
+        for task, passed, total, mark, failures in [] if graded.get("not_submitted") else rows:
             for result in failures:
                 feedback += [f"**{result.name}** (task {task}) failed:", "", "```", result.message.strip(), "```", ""]
         failures = sum(not r.passed for r in graded["results"])
