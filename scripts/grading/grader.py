@@ -298,10 +298,10 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     level_objects, test_objects, log = [], [], []
     failed = False
     for entry in lab.compile:
-        arguments = shlex.split(entry["command"])
+        # (-Werror dropped: a student's unused variable warns, it does not fail the lab.)
+        arguments = [a.replace(instructor_lab, str(lab_copy)) for a in shlex.split(entry["command"]) if a != "-Werror"]
         output_index = arguments.index("-o") + 1
         original_output = arguments[output_index]
-        arguments = [a.replace(instructor_lab, str(lab_copy)) for a in arguments if a != "-Werror"]
         source = arguments[arguments.index("-c") + 1]
         if source in own_sources:
             output = work / "objects" / original_output
@@ -338,7 +338,8 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
         failed = done.returncode != 0
     (work / "build.log").write_text("\n".join(log))
     if failed:
-        errors = [line for line in "\n".join(log).splitlines() if "error" in line][:20]
+        errors = [line for line in "\n".join(log).splitlines()
+                  if re.search(r"error|undefined reference|multiple definition|cannot find", line)][:20]
         notes.append("did not build: no test of this lab ran")
         message = "did not build:\n" + "\n".join(errors).replace(str(lab_copy) + "/", "")
         return {"results": [TestResult(t, False, message) for t in lab.tests], "notes": notes}
@@ -519,7 +520,7 @@ def main():
           f"submission(s), {options.jobs} at a time", flush=True)
     out = Path(options.out)
     out.mkdir(parents=True, exist_ok=True)
-    scratch = Path(tempfile.mkdtemp(prefix="grading-", dir=Path(options.build)))
+    scratch = Path(tempfile.mkdtemp(prefix="grading-", dir=build.dir))
     all_rows = []
     lock = threading.Lock()
     done = 0
@@ -541,7 +542,8 @@ def main():
             if options.gradescope:
                 Path(options.gradescope).parent.mkdir(parents=True, exist_ok=True)
                 Path(options.gradescope).write_text(json.dumps(gradescope, indent=1) + "\n")
-    shutil.rmtree(scratch, ignore_errors=True)
+    if not os.environ.get("GRADING_KEEP_SCRATCH"):
+        shutil.rmtree(scratch, ignore_errors=True)
     with open(out / "grades.csv", "w", newline="") as gradebook:
         writer = csv.writer(gradebook, lineterminator="\n")
         writer.writerow(["student", "lab", "task", "tests passed", "tests total", "mark"])
