@@ -446,6 +446,10 @@ def write_reports(report, labs, out):
                         f"\n- {r.name}: {r.message}" for r in failures)})
         feedback.append("")
         for task, passed, total, mark, failures in [] if graded.get("not_submitted") else rows:
+            passed_names = [r.name for r in graded["results"] if r.passed and lab.task_of(r.name) == task]
+            if passed_names:
+                feedback += [f"Task {task}, passed: " + ", ".join(f"`{n}`" for n in passed_names), ""]
+        for task, passed, total, mark, failures in [] if graded.get("not_submitted") else rows:
             for result in failures:
                 feedback += [f"**{result.name}** (task {task}) failed:", "", "```", result.message.strip(), "```", ""]
         failures = sum(not r.passed for r in graded["results"])
