@@ -16,6 +16,7 @@ work=build/check-fair-marks
 while [[ $# -gt 0 ]]; do
     case $1 in
         --lab) chosen+=("$2"); shift 2 ;;
+        --lab=*) chosen+=("${1#--lab=}"); shift ;;
         --build) build_options=(--build "$2"); shift 2 ;;
         *) work=$1; shift ;;
     esac

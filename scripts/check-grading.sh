@@ -15,10 +15,12 @@
 #                                          (touching counts as a hit): tasks 2 and 3 only
 #   define-test                            starter + "#define TEST(...)" in Ball.h (ignored)
 #                                          and in BallsLevel.cpp (refused): no task
+# Then runs scripts/check-fair-marks.sh on the labs listed in fair_labs below.
 # Usage: scripts/check-grading.sh [--build DIR] [WORK_DIR]    (default build/check-grading)
 #   --build DIR  the instructor's build to grade with (default build/grading; CI: build/debug)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/lab-tests.sh
 work=build/check-grading
 build_options=()
 while [[ $# -gt 0 ]]; do
@@ -122,3 +124,26 @@ if [[ $problems -gt 0 ]]; then
     exit 1
 fi
 echo "check-grading: every faked submission got no marks for the tasks it faked; the solution got all"
+
+# The handout's GitHub Classroom workflow parses as YAML and has one 1-point test per task.
+rm -rf "$work/handout"
+./scripts/make-handout.sh "$work/handout" >/dev/null
+python3 - "$work/handout/.github/workflows/classroom.yml" "$(for lab in $(lab_names); do lab_tasks "$(lab_folder "$lab")"; done | wc -l)" <<'EOF'
+import sys
+import yaml  # Debian: python3-yaml
+workflow = yaml.safe_load(open(sys.argv[1]))
+steps = workflow["jobs"]["grade"]["steps"]
+graders = [s for s in steps if str(s.get("uses", "")).startswith("classroom-resources/autograding-command-grader")]
+reporter = [s for s in steps if str(s.get("uses", "")).startswith("classroom-resources/autograding-grading-reporter")]
+assert len(graders) == int(sys.argv[2]), f"{len(graders)} Classroom tests for {sys.argv[2]} tasks"
+assert all(g["with"]["max-score"] == 1 and g["with"]["command"] for g in graders)
+assert len(reporter) == 1 and reporter[0]["with"]["runners"].split(",") == [g["id"] for g in graders]
+for g in graders:
+    assert f"{g['id'].upper()}_RESULTS" in reporter[0]["env"], g["id"]
+print(f"check-grading: the Classroom workflow parses: {len(graders)} tests of 1 point, one per task")
+EOF
+
+# The labs whose tests are proven fair (one mistake costs one task): check-fair-marks.sh
+# leaves each of their tasks undone in turn. Add a lab here once its tests pass that check.
+fair_labs=(lab02_bouncing_balls lab04_bullet_through_paper)
+./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"

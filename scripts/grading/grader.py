@@ -260,7 +260,7 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     """Builds the lab's tests against the student's files and runs every instructor test.
     Returns a dict: results (TestResult per instructor test), notes (why a lab got nothing)."""
     if not any(submission.find(lab, relative, files) for relative in lab.student_files):
-        return {"results": [TestResult(t, False, "not submitted") for t in lab.tests],
+        return {"results": [TestResult(t, False, "not submitted") for t in lab.tests], "not_submitted": True,
                 "notes": ["not submitted: none of the lab's files (" + ", ".join(lab.student_files) + ") is in the submission"]}
     work = submission.scratch / lab.name
     lab_copy = work / "src" / lab.folder  # a clean copy of the instructor's lab folder
@@ -298,10 +298,10 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     level_objects, test_objects, log = [], [], []
     failed = False
     for entry in lab.compile:
-        arguments = shlex.split(entry["command"])
+        # (-Werror dropped: a student's unused variable warns, it does not fail the lab.)
+        arguments = [a.replace(instructor_lab, str(lab_copy)) for a in shlex.split(entry["command"]) if a != "-Werror"]
         output_index = arguments.index("-o") + 1
         original_output = arguments[output_index]
-        arguments = [a.replace(instructor_lab, str(lab_copy)) for a in arguments if a != "-Werror"]
         source = arguments[arguments.index("-c") + 1]
         if source in own_sources:
             output = work / "objects" / original_output
@@ -338,7 +338,8 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
         failed = done.returncode != 0
     (work / "build.log").write_text("\n".join(log))
     if failed:
-        errors = [line for line in "\n".join(log).splitlines() if "error" in line][:20]
+        errors = [line for line in "\n".join(log).splitlines()
+                  if re.search(r"error|undefined reference|multiple definition|cannot find", line)][:20]
         notes.append("did not build: no test of this lab ran")
         message = "did not build:\n" + "\n".join(errors).replace(str(lab_copy) + "/", "")
         return {"results": [TestResult(t, False, message) for t in lab.tests], "notes": notes}
@@ -444,7 +445,11 @@ def write_reports(report, labs, out):
                     "output": f"{passed}/{total} tests passed" + "".join(
                         f"\n- {r.name}: {r.message}" for r in failures)})
         feedback.append("")
-        for task, passed, total, mark, failures in rows:
+        for task, passed, total, mark, failures in [] if graded.get("not_submitted") else rows:
+            passed_names = [r.name for r in graded["results"] if r.passed and lab.task_of(r.name) == task]
+            if passed_names:
+                feedback += [f"Task {task}, passed: " + ", ".join(f"`{n}`" for n in passed_names), ""]
+        for task, passed, total, mark, failures in [] if graded.get("not_submitted") else rows:
             for result in failures:
                 feedback += [f"**{result.name}** (task {task}) failed:", "", "```", result.message.strip(), "```", ""]
         failures = sum(not r.passed for r in graded["results"])
@@ -519,7 +524,7 @@ def main():
           f"submission(s), {options.jobs} at a time", flush=True)
     out = Path(options.out)
     out.mkdir(parents=True, exist_ok=True)
-    scratch = Path(tempfile.mkdtemp(prefix="grading-", dir=Path(options.build)))
+    scratch = Path(tempfile.mkdtemp(prefix="grading-", dir=build.dir))
     all_rows = []
     lock = threading.Lock()
     done = 0
@@ -541,7 +546,8 @@ def main():
             if options.gradescope:
                 Path(options.gradescope).parent.mkdir(parents=True, exist_ok=True)
                 Path(options.gradescope).write_text(json.dumps(gradescope, indent=1) + "\n")
-    shutil.rmtree(scratch, ignore_errors=True)
+    if not os.environ.get("GRADING_KEEP_SCRATCH"):
+        shutil.rmtree(scratch, ignore_errors=True)
     with open(out / "grades.csv", "w", newline="") as gradebook:
         writer = csv.writer(gradebook, lineterminator="\n")
         writer.writerow(["student", "lab", "task", "tests passed", "tests total", "mark"])

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 // The tests do not use the numbers at the top of Ball.h (students are invited to change
 // them): each test sets up its own balls at its own speed, and places them by the radius
@@ -188,43 +189,63 @@ TEST(Task2TestEachPairWithTheBoundingCircle, EveryPairIsTested)
     EXPECT_EQ(level.getBall(3).getHitCount(), 0);
 }
 
+// Task 3's tests call bounceApart (task 3's code) on their own balls, moved by the test
+// itself, so they need neither the wall bounce (task 1) nor the pair test (task 2): a
+// mistake there costs only its own task. Every step: both balls move, then bounceApart.
+namespace
+{
+void stepApart(std::vector<Ball>& balls, int steps)
+{
+    for (int step = 0; step < steps; ++step)
+    {
+        for (Ball& ball : balls)
+            ball.move(ball.getVelocity() * hitbox::stepSeconds);
+        for (std::size_t i = 0; i < balls.size(); ++i)
+            for (std::size_t j = i + 1; j < balls.size(); ++j)
+                bounceApart(balls[i], balls[j]);
+    }
+}
+
+int stepsFor(float seconds)
+{
+    return static_cast<int>(seconds * hitbox::stepsPerSecond);
+}
+} // namespace
+
 TEST(Task3BounceApartLikeBilliardBalls, HeadOnBallsReverseAfterContactAndNeverOverlap)
 {
     // The lecture's example: two balls on one line, flying at each other.
-    BallsLevel level = emptyLevel();
-    const sf::Vector2f world = level.getWorldSize();
-    level.addBall({world.x * 0.25f, world.y / 2.f}, {testSpeed, 0.f});
-    level.addBall({world.x * 0.75f, world.y / 2.f}, {-testSpeed, 0.f});
+    std::vector<Ball> balls{
+        Ball(middle - sf::Vector2f{300.f, 0.f}, {testSpeed, 0.f}, sf::Color::White),
+        Ball(middle + sf::Vector2f{300.f, 0.f}, {-testSpeed, 0.f}, sf::Color::White)};
     float worstOverlap = 0.f;
     int stepsSinceTheyMet = -1;
-    // Until a quarter of a second after they meet: long enough to bounce, too short to
-    // reach a wall.
+    // Until a quarter of a second after they meet: long enough to bounce.
     for (int step = 0; step < 4 * 120 && stepsSinceTheyMet < 30; ++step)
     {
-        hitbox::simulate(level, 1);
-        const float overlap = overlapOf(level.getBall(0), level.getBall(1));
+        stepApart(balls, 1);
+        const float overlap = overlapOf(balls[0], balls[1]);
         worstOverlap = std::max(worstOverlap, overlap);
         if (stepsSinceTheyMet >= 0 || overlap > -1.f)
             ++stepsSinceTheyMet;
     }
     ASSERT_GE(stepsSinceTheyMet, 0) << "the balls should meet within four seconds";
     EXPECT_LE(worstOverlap, overlapTolerance) << "after a step the balls may not overlap";
-    EXPECT_FLOAT_EQ(level.getBall(0).getVelocity().x, -testSpeed) << "the left ball goes back left";
-    EXPECT_FLOAT_EQ(level.getBall(1).getVelocity().x, testSpeed)
-        << "the right ball goes back right";
+    EXPECT_FLOAT_EQ(balls[0].getVelocity().x, -testSpeed) << "the left ball goes back left";
+    EXPECT_FLOAT_EQ(balls[1].getVelocity().x, testSpeed) << "the right ball goes back right";
 }
 
 TEST(Task3BounceApartLikeBilliardBalls, MovingBallHittingABallAtRestStopsAndPassesItsSpeedOn)
 {
     // Equal masses, elastic, head-on: the velocities are exchanged (Newton's cradle).
     const float gap = 100.f; // between the balls' edges
-    BallsLevel level = emptyLevel();
-    level.addBall(middle - sf::Vector2f{2.f * radius() + gap, 0.f}, {testSpeed, 0.f});
-    level.addBall(middle, {});
-    run(level, gap / testSpeed + 0.3f);
-    EXPECT_VEC_NEAR(level.getBall(0).getVelocity(), sf::Vector2f(0.f, 0.f), 0.01f)
+    std::vector<Ball> balls{
+        Ball(middle - sf::Vector2f{2.f * radius() + gap, 0.f}, {testSpeed, 0.f}, sf::Color::White),
+        Ball(middle, {}, sf::Color::White)};
+    stepApart(balls, stepsFor(gap / testSpeed + 0.3f));
+    EXPECT_VEC_NEAR(balls[0].getVelocity(), sf::Vector2f(0.f, 0.f), 0.01f)
         << "the moving ball should stop dead";
-    EXPECT_VEC_NEAR(level.getBall(1).getVelocity(), sf::Vector2f(testSpeed, 0.f), 0.01f)
+    EXPECT_VEC_NEAR(balls[1].getVelocity(), sf::Vector2f(testSpeed, 0.f), 0.01f)
         << "the ball at rest should leave at the moving ball's speed";
 }
 
@@ -233,80 +254,74 @@ TEST(Task3BounceApartLikeBilliardBalls, GlancingHitKeepsMomentumAndEnergy)
     // Both drift down at the same speed and close in along x, one radius apart sideways,
     // so they meet off-centre (the line between the centres 30 degrees from their path).
     const float r = radius();
-    BallsLevel level = emptyLevel();
     const sf::Vector2f startA{testSpeed, 0.2f * testSpeed};
     const sf::Vector2f startB{-0.5f * testSpeed, 0.2f * testSpeed};
-    level.addBall(middle - sf::Vector2f{4.f * r, r / 2.f}, startA);
-    level.addBall(middle + sf::Vector2f{0.f, r / 2.f}, startB);
+    std::vector<Ball> balls{Ball(middle - sf::Vector2f{4.f * r, r / 2.f}, startA, sf::Color::White),
+                            Ball(middle + sf::Vector2f{0.f, r / 2.f}, startB, sf::Color::White)};
     // They touch when 2r * cos(30 degrees) apart along x, closing at 1.5 * testSpeed.
     const float secondsToMeet = (4.f - std::sqrt(3.f)) * r / (1.5f * testSpeed);
-    run(level, secondsToMeet + 0.2f); // before any wall
-    const sf::Vector2f a = level.getBall(0).getVelocity();
-    const sf::Vector2f b = level.getBall(1).getVelocity();
-    ASSERT_GT(level.getBall(0).getHitCount(), 0) << "the balls should have met";
+    stepApart(balls, stepsFor(secondsToMeet + 0.2f));
+    const sf::Vector2f a = balls[0].getVelocity();
+    const sf::Vector2f b = balls[1].getVelocity();
+    ASSERT_GT(length(a - startA), 0.1f * testSpeed) << "the hit should change the velocities";
     EXPECT_VEC_NEAR(a + b, startA + startB, 0.05f) << "total momentum is kept";
     EXPECT_NEAR(dot(a, a) + dot(b, b), dot(startA, startA) + dot(startB, startB), 1.f)
         << "total kinetic energy is kept (an elastic collision)";
-    EXPECT_GT(length(a - startA), 0.1f * testSpeed) << "the hit should change the velocities";
 }
 
 TEST(Task3BounceApartLikeBilliardBalls, OverlappingBallsArePushedApartUntilTheyTouch)
 {
     const float r = radius();
-    BallsLevel level = emptyLevel();
-    level.addBall(middle, {});
-    level.addBall(middle + sf::Vector2f{r, 0.f}, {}); // overlapping by one radius
-    hitbox::simulate(level, 1);
-    EXPECT_NEAR(overlapOf(level.getBall(0), level.getBall(1)), 0.f, overlapTolerance)
+    Ball first(middle, {}, sf::Color::White);
+    Ball second(middle + sf::Vector2f{r, 0.f}, {}, sf::Color::White); // overlapping by one radius
+    bounceApart(first, second);
+    EXPECT_NEAR(overlapOf(first, second), 0.f, overlapTolerance)
         << "pushed apart until they just touch";
-    EXPECT_NEAR(level.getBall(0).getPosition().x + level.getBall(1).getPosition().x,
-                2.f * middle.x + r, 0.01f)
+    EXPECT_NEAR(first.getPosition().x + second.getPosition().x, 2.f * middle.x + r, 0.01f)
         << "each ball moves half the overlap, so their midpoint stays put";
 }
 
 TEST(Task3BounceApartLikeBilliardBalls, BallsAlreadyMovingApartAreNotPulledBack)
 {
     // Overlapping but separating (e.g. pushed together by a wall): no sticking together.
-    BallsLevel level = emptyLevel();
-    level.addBall(middle, {-testSpeed, 0.f});
-    level.addBall(middle + sf::Vector2f{1.4f * radius(), 0.f}, {testSpeed, 0.f});
-    hitbox::simulate(level, 1);
-    EXPECT_FLOAT_EQ(level.getBall(0).getVelocity().x, -testSpeed);
-    EXPECT_FLOAT_EQ(level.getBall(1).getVelocity().x, testSpeed);
+    Ball first(middle, {-testSpeed, 0.f}, sf::Color::White);
+    Ball second(middle + sf::Vector2f{1.4f * radius(), 0.f}, {testSpeed, 0.f}, sf::Color::White);
+    bounceApart(first, second);
+    EXPECT_FLOAT_EQ(first.getVelocity().x, -testSpeed);
+    EXPECT_FLOAT_EQ(second.getVelocity().x, testSpeed);
 }
 
-TEST(Task3BounceApartLikeBilliardBalls, ManyBallsStayInsideAndApart)
+TEST(Task3BounceApartLikeBilliardBalls, BallsOnlyTouchingAreLeftAlone)
 {
-    // Up to twenty balls spread over the window in a grid (5 x 4, fewer when the balls are
-    // too big for that), flying in as many directions.
+    // The edge rule: centres exactly 2r apart, closing in: touching is not colliding yet.
+    Ball first(middle, {testSpeed, 0.f}, sf::Color::White);
+    Ball second(middle + sf::Vector2f{2.f * radius(), 0.f}, {-testSpeed, 0.f}, sf::Color::White);
+    bounceApart(first, second);
+    EXPECT_FLOAT_EQ(first.getVelocity().x, testSpeed);
+    EXPECT_FLOAT_EQ(second.getVelocity().x, -testSpeed);
+}
+
+TEST(Task3BounceApartLikeBilliardBalls, ACrowdOfBallsNeverOverlaps)
+{
+    // Twenty balls in a 5 x 4 grid, flying in as many directions, in a world with no walls
+    // (the test moves them itself), for two seconds.
     const float r = radius();
-    BallsLevel level = emptyLevel();
-    const sf::Vector2f world = level.getWorldSize();
-    const int columns = std::clamp(static_cast<int>(world.x / (2.5f * r)), 2, 5);
-    const int rows = std::clamp(static_cast<int>(world.y / (2.5f * r)), 1, 4);
-    for (int i = 0; i < columns * rows; ++i)
+    const sf::Vector2f world{12.f * r * 5.f, 12.f * r * 4.f};
+    std::vector<Ball> balls;
+    for (int i = 0; i < 20; ++i)
     {
-        const labtesting::CrowdStart start =
-            labtesting::crowdStart(i, columns, rows, world, testSpeed);
-        level.addBall(start.position, start.velocity);
+        const labtesting::CrowdStart start = labtesting::crowdStart(i, 5, 4, world, testSpeed);
+        balls.emplace_back(start.position, start.velocity, sf::Color::White);
     }
     // In a crowd a ball pushed out of one ball can be pushed into another in the same
     // step; allow what two balls close in one step.
     const float crowdTolerance = 2.f * testSpeed * hitbox::stepSeconds + overlapTolerance;
-    for (int step = 0; step < 10 * 120; ++step)
+    for (int step = 0; step < 2 * 120; ++step)
     {
-        hitbox::simulate(level, 1);
-        for (int i = 0; i < level.getBallCount(); ++i)
-        {
-            const sf::Vector2f c = level.getBall(i).getPosition();
-            // (A ball pushed by another can end a step slightly past a wall; its own
-            // update puts it back in the next step.)
-            const float low = r - crowdTolerance;
-            ASSERT_TRUE(c.x >= low && c.x <= world.x - low && c.y >= low && c.y <= world.y - low)
-                << "ball " << i << " left the window at step " << step;
-            for (int j = i + 1; j < level.getBallCount(); ++j)
-                ASSERT_LE(overlapOf(level.getBall(i), level.getBall(j)), crowdTolerance)
+        stepApart(balls, 1);
+        for (std::size_t i = 0; i < balls.size(); ++i)
+            for (std::size_t j = i + 1; j < balls.size(); ++j)
+                ASSERT_LE(overlapOf(balls[i], balls[j]), crowdTolerance)
                     << "balls " << i << " and " << j << " at step " << step;
-        }
     }
 }
