@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libbox2d-dev xvfb xauth clang-format)
+          libbox2d-dev xvfb xauth clang-format ffmpeg)
 
 missing=()
 for package in "${packages[@]}"; do
