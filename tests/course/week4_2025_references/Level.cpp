@@ -21,7 +21,7 @@ Level::Level(sf::RenderWindow& hwnd, Input& in) :
 	m_coin.setFillColor(sf::Color::Yellow);
 	m_coin.setCollider(true);
 
-	if (m_font.openFromFile("font/arial.ttf"))
+	if (m_font.openFromFile("font/DejaVuSans.ttf"))
 		m_text.setString("Arrow keys move; F flips");
 }
 
