@@ -9,9 +9,9 @@
 # Each folder is built as `cmake -DHITBOX_COURSE_LAB_DIR=<folder>` (see README.md), then run
 # for a few seconds under Xvfb and photographed. A lab passes when it builds, is still
 # running when it is closed, and the picture is not blank (more than the screen's black and
-# one clear colour). 2019-24 labs (SFML 2) run here; 2025-26 labs need SFML 3, which on
-# Debian 12 is in the Debian unstable root (scripts/sid-root.sh): this script runs itself
-# there for them.
+# one clear colour). 2019-24 labs need SFML 2 and 2025-26 labs SFML 3: a lab whose SFML is
+# not installed here is built and run in the Debian unstable root (scripts/sid-root.sh,
+# SFML 3), shown on this machine's Xvfb; such a folder must be inside this checkout.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,81 +20,94 @@ labs=()
 while [[ $# -gt 0 ]]; do
     case "$1" in
     --screenshots) screenshots="$(mkdir -p "$2" && cd "$2" && pwd)"; shift 2 ;;
-    -h | --help) sed -n '2,15p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,14p' "$0"; exit 0 ;;
     *) labs+=("$1"); shift ;;
     esac
 done
 if [[ ${#labs[@]} -eq 0 ]]; then
     for folder in tests/course/*/; do labs+=("${folder%/}"); done
 fi
-for tool in xvfb-run ffmpeg; do
+for tool in xvfb-run ffmpeg python3; do
     command -v "$tool" >/dev/null || { echo "check-course-labs: needs $tool (./scripts/install-deps.sh)" >&2; exit 2; }
 done
 
-# The generation of a lab folder (2019 or 2025), as the build will decide it.
-generation_of() {
-    cmake "-DHITBOX_PRINT_GENERATION_OF=$1" -P framework/cmake/HitboxCourseLab.cmake 2>&1
-}
-sfml_major_here() {
-    local version
-    version=$(pkg-config --modversion sfml-graphics 2>/dev/null || echo 0)
-    echo "${version%%.*}"
-}
-
-build=build/course
-[[ $(sfml_major_here) == 3 ]] && build=build/course-sfml3
-mkdir -p "$build"
-launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+sfml_major_here=$(pkg-config --modversion sfml-graphics 2>/dev/null || echo 0)
+sfml_major_here=${sfml_major_here%%.*}
 seconds_to_run=4
 failed=0
-sfml3_labs=()
 
 for lab in "${labs[@]}"; do
+    name="$(basename "$lab")"
     if [[ ! -f $lab/Main.cpp ]]; then
-        echo "FAIL $lab: not a lab folder (no Main.cpp in it)" >&2
+        echo "FAIL $name: not a lab folder (no Main.cpp in it)" >&2
         failed=1
         continue
     fi
-    name="$(basename "$lab")"
-    generation=$(generation_of "$lab")
-    if [[ $generation == 2025 && $(sfml_major_here) != 3 ]]; then
-        sfml3_labs+=("$lab") # below, in the root with SFML 3
-        continue
+    # The generation decides the SFML major; the build says the same (HitboxCourseLab.cmake).
+    generation=$(cmake "-DHITBOX_PRINT_GENERATION_OF=$lab" -P framework/cmake/HitboxCourseLab.cmake)
+    sfml_major=2
+    [[ $generation == 2025 ]] && sfml_major=3
+    inside=()                 # run build and program here...
+    build=build/course-sfml$sfml_major
+    launcher=$(command -v ccache || true)
+    lab_path="$(cd "$lab" && pwd)"
+    if [[ $sfml_major != "$sfml_major_here" ]]; then
+        inside=(scripts/sid-root.sh run) # ...or in the root, where this checkout is /hitbox
+        build=build/sid-course
+        launcher=""
+        lab_path="$(realpath --relative-to=. "$lab")"
+        if [[ $sfml_major != 3 || $lab_path == ../* ]]; then
+            echo "FAIL $name: needs SFML $sfml_major, not installed here (only folders inside this checkout can use scripts/sid-root.sh)" >&2
+            failed=1
+            continue
+        fi
+        # Until Hitbox's own SFML 3 port is in (HitboxSFML.cmake accepting SFML 3), these
+        # labs cannot be built: say so on one line rather than fail or pass in silence.
+        if ! grep -q 'SFML 3' framework/cmake/HitboxSFML.cmake; then
+            echo "SKIP $name: a 2025-26 lab; Hitbox does not build on SFML 3 yet (HitboxSFML.cmake)" >&2
+            continue
+        fi
     fi
-    lab="$(cd "$lab" && pwd)"
-    echo "== $name ($generation-generation course framework): build"
-    # One build folder for every lab: the framework is compiled once. The converted copies
+
+    echo "== $name ($generation-generation course framework, SFML $sfml_major): build"
+    # One build folder per SFML major: the framework is compiled once. The converted copies
     # of the previous lab's files and its run folder are removed so nothing is picked up by
     # mistake.
     rm -rf "$build/course_lab_sources" "$build/course_lab_run"
-    if ! cmake -S . -B "$build" -DHITBOX_COURSE_LAB_DIR="$lab" -DHITBOX_BUILD_TESTS=OFF \
-        -DHITBOX_BUILD_BENCHMARKS=OFF "${launcher[@]}" >"$build/configure.log" 2>&1 ||
-        ! cmake --build "$build" --target course_lab -j 2; then
+    mkdir -p "$build"
+    if ! "${inside[@]}" cmake -S . -B "$build" -DHITBOX_COURSE_LAB_DIR="$lab_path" \
+        -DHITBOX_BUILD_TESTS=OFF -DHITBOX_BUILD_BENCHMARKS=OFF \
+        -DCMAKE_CXX_COMPILER_LAUNCHER="$launcher" >"$build/configure.log" 2>&1 ||
+        ! "${inside[@]}" cmake --build "$build" --target course_lab -j 2; then
         echo "FAIL $name: does not build (configure log: $build/configure.log)" >&2
         failed=1
         continue
     fi
+    grep -m1 "Course lab:" "$build/configure.log" || true
 
     echo "== $name: run for $seconds_to_run seconds"
     shot="${screenshots:-$PWD/$build}/$name.png"
     rm -f "$shot"
     # Start the lab, let it run, photograph the screen, then close it. Exit code 0 means it
-    # was still running when closed; anything else is a crash or an early exit.
+    # was still running when closed; anything else is a crash or an early exit. The X server
+    # accepts any local client (-ac), so a program in the Debian root can use it too; setsid
+    # puts the program (and, in the root, the commands around it) in a group of its own.
     runner='
-        "$1" & lab_pid=$!
-        sleep "$2"
+        inside=$1 build=$2 seconds=$3 shot=$4
+        setsid $inside env DISPLAY="$DISPLAY" ALSOFT_DRIVERS=null \
+            sh -c "cd \"$build/course_lab_run\" && exec ../course_lab" & lab_pid=$!
+        sleep "$seconds"
         kill -0 "$lab_pid" 2>/dev/null || { wait "$lab_pid"; echo "exited early with code $?" >&2; exit 1; }
-        ffmpeg -loglevel error -f x11grab -draw_mouse 0 -video_size 1920x1920 -i "$DISPLAY" -frames:v 1 "$3"
-        kill "$lab_pid"; wait "$lab_pid" 2>/dev/null; exit 0'
-    if ! (cd "$build/course_lab_run" && ALSOFT_DRIVERS=null xvfb-run -a -s "-screen 0 1920x1920x24" \
-        sh -c "$runner" runner "$PWD/../course_lab" "$seconds_to_run" "$shot"); then
+        ffmpeg -loglevel error -f x11grab -draw_mouse 0 -video_size 1920x1920 -i "$DISPLAY" -frames:v 1 "$shot"
+        kill -- "-$lab_pid"; wait "$lab_pid" 2>/dev/null; exit 0'
+    if ! xvfb-run -a -s "-screen 0 1920x1920x24 -ac" \
+        sh -c "$runner" runner "${inside[*]}" "$build" "$seconds_to_run" "$shot"; then
         echo "FAIL $name: did not keep running" >&2
         failed=1
         continue
     fi
     # Blank: nothing but the screen's black and the window's clear colour.
-    colours=$(ffmpeg -loglevel error -i "$shot" -vf scale=320:-1:flags=neighbor -f rawvideo -pix_fmt rgb24 - |
+    colours=$(ffmpeg -loglevel error -i "$shot" -vf scale=480:-1:flags=neighbor -f rawvideo -pix_fmt rgb24 - |
         python3 -c 'import sys; d = sys.stdin.buffer.read(); print(len({d[i:i + 3] for i in range(0, len(d), 3)}))')
     if [[ $colours -le 2 ]]; then
         echo "FAIL $name: the window stayed blank ($colours colours; screenshot: $shot)" >&2
@@ -103,20 +116,4 @@ for lab in "${labs[@]}"; do
     fi
     echo "ok   $name (screenshot: $shot, $colours colours)"
 done
-
-if [[ ${#sfml3_labs[@]} -gt 0 ]]; then
-    echo "== ${#sfml3_labs[@]} lab(s) of the 2025-26 generation: in the Debian unstable root (SFML 3)"
-    relative=()
-    for lab in "${sfml3_labs[@]}"; do relative+=("$(realpath --relative-to=. "$lab")"); done
-    shots=()
-    [[ -n $screenshots ]] && shots=(--screenshots "$(realpath --relative-to=. "$screenshots")")
-    # Until Hitbox's own SFML 3 port is in (HitboxSFML.cmake accepting SFML 3), these labs
-    # cannot be built: say so on one line rather than fail or pass in silence.
-    if ! grep -q 'SFML 3' framework/cmake/HitboxSFML.cmake; then
-        echo "SKIP ${relative[*]}: Hitbox does not build on SFML 3 yet (HitboxSFML.cmake)" >&2
-        exit $failed
-    fi
-    scripts/sid-root.sh create
-    scripts/sid-root.sh run ./scripts/check-course-labs.sh "${shots[@]}" "${relative[@]}" || failed=1
-fi
 exit $failed
