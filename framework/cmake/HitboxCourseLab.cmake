@@ -37,9 +37,11 @@ set(HITBOX_COURSE_LAB_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 # from the folder's own Framework/ headers or, without them, from its code.
 function(hitbox_find_course_lab_generation lab_folder)
     get_filename_component(lab_folder "${lab_folder}" ABSOLUTE BASE_DIR "${CMAKE_SOURCE_DIR}")
-    # What only the 2025-26 framework and its labs write: m_ members, Scancodes, SFML 3's
-    # event.getIf<>(), levels taking the window by reference.
-    set(new_generation_signs "m_velocity|m_collisionBox|Scancode|Scan::|getIf<|RenderWindow&")
+    # What only the 2025-26 framework writes (m_ members, Scancodes, BaseLevel taking the
+    # window by reference) and what only its labs write (SFML 3's event->getIf<>(),
+    # Scancodes). A reference to a window alone is no sign in lab code: older labs have
+    # helpers taking one.
+    set(signs "m_velocity|m_collisionBox|Scancode|Scan::|RenderWindow&")
     set(evidence "")
     foreach(header GameObject.h Input.h BaseLevel.h)
         if(EXISTS "${lab_folder}/Framework/${header}")
@@ -47,13 +49,14 @@ function(hitbox_find_course_lab_generation lab_folder)
         endif()
     endforeach()
     if(NOT evidence)
+        set(signs "getIf<|Scancode|Scan::|m_velocity|m_collisionBox")
         file(GLOB evidence "${lab_folder}/*.cpp" "${lab_folder}/*.h")
     endif()
     set(generation 2019)
     foreach(file IN LISTS evidence)
         # file(STRINGS) follows a byte-order mark, so a UTF-16 Main.cpp is read too.
-        file(STRINGS "${file}" signs REGEX "${new_generation_signs}")
-        if(signs)
+        file(STRINGS "${file}" found REGEX "${signs}")
+        if(found)
             set(generation 2025)
             break()
         endif()
