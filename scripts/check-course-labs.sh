@@ -8,8 +8,8 @@
 #
 # Each folder is built as `cmake -DHITBOX_COURSE_LAB_DIR=<folder>` (see README.md), then run
 # for a few seconds under Xvfb and photographed. A lab passes when it builds, is still
-# running when it is closed, and the picture is not blank (more than the screen's black and
-# one clear colour). 2019-24 labs need SFML 2 and 2025-26 labs SFML 3: a lab whose SFML is
+# running when it is closed, every picture, font and sound it asked for loaded, and the
+# picture is not blank (more than the screen's black and one clear colour). 2019-24 labs need SFML 2 and 2025-26 labs SFML 3: a lab whose SFML is
 # not installed here is built and run in the Debian unstable root (scripts/sid-root.sh,
 # SFML 3), shown on this machine's Xvfb; such a folder must be inside this checkout.
 set -euo pipefail
@@ -93,16 +93,22 @@ for lab in "${labs[@]}"; do
     # accepts any local client (-ac), so a program in the Debian root can use it too; setsid
     # puts the program (and, in the root, the commands around it) in a group of its own.
     runner='
-        inside=$1 build=$2 seconds=$3 shot=$4
+        inside=$1 build=$2 seconds=$3 shot=$4 log=$5
         setsid $inside env DISPLAY="$DISPLAY" ALSOFT_DRIVERS=null \
-            sh -c "cd \"$build/course_lab_run\" && exec ../course_lab" & lab_pid=$!
+            sh -c "cd \"$build/course_lab_run\" && exec ../course_lab" >"$log" 2>&1 & lab_pid=$!
         sleep "$seconds"
-        kill -0 "$lab_pid" 2>/dev/null || { wait "$lab_pid"; echo "exited early with code $?" >&2; exit 1; }
+        kill -0 "$lab_pid" 2>/dev/null || { wait "$lab_pid"; echo "exited early with code $? (output: $log)" >&2; exit 1; }
         ffmpeg -loglevel error -f x11grab -draw_mouse 0 -video_size 1920x1920 -i "$DISPLAY" -frames:v 1 "$shot"
         kill -- "-$lab_pid"; wait "$lab_pid" 2>/dev/null; exit 0'
     if ! xvfb-run -a -s "-screen 0 1920x1920x24 -ac" \
-        sh -c "$runner" runner "${inside[*]}" "$build" "$seconds_to_run" "$shot"; then
+        sh -c "$runner" runner "${inside[*]}" "$build" "$seconds_to_run" "$shot" "$build/run.log"; then
         echo "FAIL $name: did not keep running" >&2
+        failed=1
+        continue
+    fi
+    # SFML says when a picture, font or sound does not load (a white box, no text, silence).
+    if grep -E "Failed to (load|open)" "$build/run.log" >&2; then
+        echo "FAIL $name: a file did not load (output: $build/run.log)" >&2
         failed=1
         continue
     fi
