@@ -1,15 +1,21 @@
 # Copies one source file of a course lab folder into the build tree so that g++ and clang
 # can read it, the way Visual Studio reads the original:
 #   - UTF-16 (Visual Studio's "Unicode" save, with or without its byte-order mark) becomes
-#     UTF-8; a UTF-8 file is copied as it is.
+#     UTF-8; a UTF-8 byte-order mark is dropped (g++ accepts one only at the very start of a
+#     file, and the #line below comes first).
 #   - Include lines written with Windows backslashes (#include "Framework\GameObject.h")
 #     get forward slashes, which every compiler accepts.
+#   - Windows finds files whatever their letter case: an include that names no file as
+#     written (#include "player.h" for Player.h, "Vector" for Vector.h) is rewritten to the
+#     file it names when letter case is ignored and, failing that, with ".h" added. It is
+#     looked for beside the including file, in the lab folder and in SEARCH_DIRS.
 #   - A #line directive names the original file, so compiler errors point at the file the
 #     student edits, not at this copy.
 # Only these changes are made: line numbers stay the same.
 #
 # Usage (CMake script mode, works on every OS):
-#   cmake -DINPUT=<lab>/Main.cpp -DOUTPUT=<build>/Main.cpp -P HitboxConvertCourseSource.cmake
+#   cmake -DINPUT=<lab>/Main.cpp -DOUTPUT=<build>/Main.cpp [-DLAB_DIR=<lab>]
+#         [-DSEARCH_DIRS=<dir>;<dir>] -P HitboxConvertCourseSource.cmake
 cmake_minimum_required(VERSION 3.16)
 
 if(NOT INPUT OR NOT OUTPUT)
@@ -82,7 +88,10 @@ endfunction()
 file(READ "${INPUT}" start_hex LIMIT 4 HEX)
 string(TOLOWER "${start_hex}" start_hex)
 set(utf16 FALSE)
-if(start_hex MATCHES "^fffe")
+set(utf8_skip_bytes 0)
+if(start_hex MATCHES "^efbbbf")
+    set(utf8_skip_bytes 3) # UTF-8 with a byte-order mark ("UTF-8 with signature")
+elseif(start_hex MATCHES "^fffe")
     set(utf16 TRUE)
     set(little_endian TRUE)
     set(skip_bytes 2)
@@ -105,7 +114,7 @@ if(utf16)
     string(TOLOWER "${content_hex}" content_hex)
     hitbox_utf16_hex_to_utf8(content "${content_hex}" ${little_endian})
 else()
-    file(READ "${INPUT}" content)
+    file(READ "${INPUT}" content OFFSET ${utf8_skip_bytes})
 endif()
 
 # Backslashes in include lines become forward slashes. Only the include lines change:
@@ -115,6 +124,49 @@ list(REMOVE_DUPLICATES include_lines)
 foreach(include_line IN LISTS include_lines)
     if(include_line MATCHES "\\\\")
         string(REPLACE "\\" "/" fixed_line "${include_line}")
+        string(REPLACE "${include_line}" "${fixed_line}" content "${content}")
+    endif()
+endforeach()
+
+# Letter case in quoted includes: an include that names no file as written is matched,
+# ignoring case, against the headers in each folder an include may be found in (the
+# including file's own folder first, as the compiler searches).
+get_filename_component(input_dir "${INPUT}" DIRECTORY)
+set(search_dirs "${input_dir}")
+if(LAB_DIR)
+    list(APPEND search_dirs "${LAB_DIR}")
+endif()
+list(APPEND search_dirs ${SEARCH_DIRS})
+string(REGEX MATCHALL "#[ \t]*include[ \t]*\"[^\"\r\n]*\"" quoted_includes "${content}")
+list(REMOVE_DUPLICATES quoted_includes)
+foreach(include_line IN LISTS quoted_includes)
+    string(REGEX REPLACE "^.*\"(.*)\"$" "\\1" named "${include_line}")
+    set(found "")
+    foreach(dir IN LISTS search_dirs)
+        if(EXISTS "${dir}/${named}")
+            set(found "${named}") # as written: nothing to do
+            break()
+        endif()
+    endforeach()
+    if(found)
+        continue()
+    endif()
+    string(TOLOWER "${named}" wanted)
+    foreach(dir IN LISTS search_dirs)
+        file(GLOB_RECURSE candidates RELATIVE "${dir}" "${dir}/*.h" "${dir}/*.hpp")
+        foreach(candidate IN LISTS candidates)
+            string(TOLOWER "${candidate}" lower_candidate)
+            if(lower_candidate STREQUAL wanted OR lower_candidate STREQUAL "${wanted}.h")
+                set(found "${candidate}")
+                break()
+            endif()
+        endforeach()
+        if(found)
+            break()
+        endif()
+    endforeach()
+    if(found)
+        string(REPLACE "\"${named}\"" "\"${found}\"" fixed_line "${include_line}")
         string(REPLACE "${include_line}" "${fixed_line}" content "${content}")
     endif()
 endforeach()

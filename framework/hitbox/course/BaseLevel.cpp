@@ -2,6 +2,11 @@
 
 const sf::Color BaseLevel::backgroundColor(100, 149, 237);
 
+BaseLevel::BaseLevel(sf::RenderWindow* hwnd, Input* in, GameState* gs, AudioManager* aud)
+    : window(hwnd), input(in), gameState(gs), audio(aud)
+{
+}
+
 void BaseLevel::beginDraw()
 {
     if (window != nullptr)

@@ -1,7 +1,8 @@
 // BaseLevel.h - the course's old level base class, kept so old lab code builds unchanged.
 //
-// A course lab's Level derives from it, sets `window` and `input` in its constructor, and
-// is driven by the lab's own Main.cpp with a variable dt:
+// A course lab's Level derives from it, sets `window` and `input` (and, from week 10,
+// `gameState` and `audio`) in its constructor, and is driven by the lab's own Main.cpp with
+// a variable dt:
 //     level.handleInput(dt); level.update(dt); level.render();
 // New Hitbox programs derive from hitbox::Level instead (Level.h): a fixed step, a render
 // that only reads state, and tests that need no window.
@@ -12,9 +13,16 @@
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/RenderWindow.hpp>
 
+class AudioManager; // Framework/AudioManager.h
+class GameState;    // Framework/GameState.h, or the lab's own copy
+
 class BaseLevel
 {
 public:
+    BaseLevel() = default;
+    // The later weeks' form: the level is handed everything it may use.
+    BaseLevel(sf::RenderWindow* hwnd, Input* in, GameState* gs = nullptr,
+              AudioManager* aud = nullptr);
     virtual ~BaseLevel() = default;
 
     virtual void handleInput(float dt) = 0;
@@ -33,4 +41,7 @@ protected:
     // Set by the derived level's constructor (Level(sf::RenderWindow* hwnd, Input* in)).
     sf::RenderWindow* window = nullptr;
     Input* input = nullptr;
+    // Weeks 10 and 11: Main.cpp owns these and hands them to every level.
+    GameState* gameState = nullptr;
+    AudioManager* audio = nullptr;
 };

@@ -9,7 +9,8 @@
 class Vector
 {
 public:
-    Vector() = delete; // a static class: call Vector::magnitude(v) directly
+    // Every function is static: call Vector::magnitude(v) directly. Old lab code also makes
+    // a Vector object or derives from Vector; both still work.
 
     // The length of the vector, in the vector's units (pixels, pixels per second...).
     static float magnitude(sf::Vector2f vector);

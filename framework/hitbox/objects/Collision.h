@@ -19,7 +19,8 @@ class GameObject;
 class Collision
 {
 public:
-    Collision() = delete; // a static class: call Collision::checkBoundingBox(...) directly
+    // Every function is static: call Collision::checkBoundingBox(...) directly. Old lab code
+    // also writes `Collision collision;` or derives from Collision; both still work.
 
     // Bounding circles (no square root). The circles come from each object's
     // getBoundingCircle(): by default the circle inside its collision box.

@@ -1,0 +1,15 @@
+#include "Framework/BaseLevel.h"
+
+BaseLevel::BaseLevel(sf::RenderWindow& window, Input& input) : m_window(window), m_input(input)
+{
+}
+
+void BaseLevel::beginDraw()
+{
+    m_window.clear(sf::Color(100, 149, 237));
+}
+
+void BaseLevel::endDraw()
+{
+    m_window.display();
+}

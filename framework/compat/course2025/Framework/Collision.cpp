@@ -1,0 +1,42 @@
+#include "Framework/Collision.h"
+
+#include "hitbox/geometry/Overlap.h"
+
+#include <algorithm>
+
+namespace
+{
+
+// The one place where the course's SFML 3 types meet Hitbox's geometry types.
+sf::FloatRect toGeometryBox(const sf::FloatRect& box)
+{
+    return box;
+}
+
+hitbox::Circle inscribedCircle(const GameObject& object)
+{
+    const sf::FloatRect box = object.getCollisionBox();
+    hitbox::Circle circle;
+    circle.center = box.position + box.size / 2.f;
+    circle.radius = std::min(box.size.x, box.size.y) / 2.f;
+    return circle;
+}
+
+} // namespace
+
+bool Collision::checkBoundingBox(const GameObject& first, const GameObject& second)
+{
+    return &first != &second && hitbox::boxVsBox(toGeometryBox(first.getCollisionBox()),
+                                                 toGeometryBox(second.getCollisionBox()));
+}
+
+bool Collision::checkBoundingBox(const GameObject& object, const sf::Vector2i& point)
+{
+    return hitbox::pointInBox(sf::Vector2f(point), toGeometryBox(object.getCollisionBox()));
+}
+
+bool Collision::checkBoundingCircle(const GameObject& first, const GameObject& second)
+{
+    return &first != &second &&
+           hitbox::circleVsCircle(inscribedCircle(first), inscribedCircle(second));
+}
