@@ -69,7 +69,7 @@ std::vector<sf::FloatRect> labField()
 RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f}) {}
 
 RayLevel::RayLevel(std::vector<sf::FloatRect> solidBoxes, sf::Vector2f playerStart)
-    : solids(std::move(solidBoxes)), mouse(760.f, 110.f), font(hitbox::loadFont())
+    : solids(std::move(solidBoxes)), mouse(760.f, 110.f)
 {
     player.setSize(playerSize);
     player.setPosition(playerStart);
@@ -276,7 +276,7 @@ void RayLevel::render(sf::RenderTarget& target) const
     }
     if (stuck)
     {
-        sf::Text stuckText("stuck!", font, 18);
+        sf::Text stuckText("stuck!", font.get(), 18);
         stuckText.setFillColor(hitColor);
         stuckText.setPosition(player.getPosition() + sf::Vector2f{-8.f, -30.f});
         target.draw(stuckText);
@@ -284,11 +284,12 @@ void RayLevel::render(sf::RenderTarget& target) const
 
     const std::string order = timeOrder ? "ON  (nearest contact first: slides over the seams)"
                                         : "OFF (list order: snags on a seam)";
-    sf::Text status("Time order " + order, font, 20);
+    sf::Text status("Time order " + order, font.get(), 20);
     status.setFillColor(timeOrder ? sf::Color(120, 230, 140) : hitColor);
     status.setPosition(60.f, 4.f);
     target.draw(status);
-    sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font, 16);
+    sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font.get(),
+                     16);
     rayText.setFillColor(rayColor);
     rayText.setPosition(700.f, 8.f);
     target.draw(rayText);

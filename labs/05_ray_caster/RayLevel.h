@@ -7,10 +7,9 @@
 // over the seams between them only works if the contacts are handled in TIME ORDER (seed 004).
 #pragma once
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/objects/GameObject.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <cstddef>
 #include <vector>
@@ -85,5 +84,5 @@ private:
     std::vector<SolidHit> lastHits;
     bool stuck = false;              // wanted to move this step but hardly moved
     std::vector<sf::Vector2f> trail; // where the player has been, for the picture
-    sf::Font font;
+    hitbox::LazyFont font;           // read by the first render(): tests need no font file
 };

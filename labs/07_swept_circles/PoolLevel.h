@@ -10,10 +10,9 @@
 
 #include "Ball.h"
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Sweep.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <cstddef>
 #include <vector>
@@ -93,5 +92,5 @@ private:
         sf::Vector2f where;       // the cue ball's centre when it touched
         float stepFraction = 0.f; // when, as a fraction of that whole step
     } cueImpact;                  // the cue ball's latest ball-ball impact
-    sf::Font font;
+    hitbox::LazyFont font;        // read by the first render(): tests need no font file
 };

@@ -92,8 +92,7 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector
     // [/slide]
 }
 
-PlatformerLevel::PlatformerLevel(TileMap levelMap)
-    : map(std::move(levelMap)), font(hitbox::loadFont())
+PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
 {
     respawn();
     for (int row = 0; row < map.getRows(); ++row)
@@ -128,16 +127,14 @@ void PlatformerLevel::handleInput(const Input& input, float)
 
 // [slide:platformer-fixed-step]
 // Frame-rate independence: whatever dt the caller passes (a 30 Hz laptop, a 240 Hz
-// monitor), the level simulates whole steps of exactly Player::fixedStep, so the same
-// key presses give the same jump everywhere. Leftover time waits for the next call.
+// monitor), the level simulates whole steps of exactly hitbox::stepSeconds, so the same
+// key presses give the same jump everywhere. hitbox::FixedStep keeps the leftover time for
+// the next call and, after a long stall, skips time rather than freezing to catch up.
 void PlatformerLevel::update(float dt)
 {
-    unsimulatedTime += std::min(dt, 0.25f); // after a long stall, skip time rather than freeze
-    while (unsimulatedTime >= Player::fixedStep)
-    {
+    const int steps = fixedStep.advance(dt);
+    for (int i = 0; i < steps; ++i)
         step();
-        unsimulatedTime -= Player::fixedStep;
-    }
 }
 // [/slide]
 
@@ -148,7 +145,7 @@ void PlatformerLevel::step()
         controls = {false, true, stepCount % 60 == 0, false};
     jumpPressed = false;
     divePressed = false;
-    player.steer(controls, grounded, speedCapOn, Player::fixedStep);
+    player.steer(controls, grounded, speedCapOn, hitbox::stepSeconds);
 
     const sf::FloatRect before = player.getBox();
     contacts.clear();
@@ -171,7 +168,7 @@ void PlatformerLevel::step()
 
 void PlatformerLevel::moveThenResolve(const sf::FloatRect& before)
 {
-    player.setPosition(player.getPosition() + player.getVelocity() * Player::fixedStep);
+    player.setPosition(player.getPosition() + player.getVelocity() * hitbox::stepSeconds);
     resolvePenetration(before);
 }
 
@@ -255,7 +252,7 @@ hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2
 // slides along the surface. A fast player can no longer pass through a thin floor.
 void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
 {
-    sf::Vector2f move = player.getVelocity() * Player::fixedStep;
+    sf::Vector2f move = player.getVelocity() * hitbox::stepSeconds;
     for (int pass = 0; pass < maxResolvePasses && (move.x != 0.f || move.y != 0.f); ++pass)
     {
         const hitbox::Hit first = firstHitAlong(player.getBox(), move);
@@ -314,7 +311,7 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     sf::RectangleShape strip({map.getSizeInPixels().x, hudTextSize + 14.f});
     strip.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(strip);
-    sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
+    sf::Text text(hud.str(), font.get(), static_cast<unsigned>(hudTextSize));
     text.setPosition(10.f, 5.f);
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);

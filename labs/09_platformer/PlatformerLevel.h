@@ -15,11 +15,13 @@
 #include "Player.h"
 #include "TileMap.h"
 
+#include "hitbox/app/App.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/geometry/Sweep.h"
 
-#include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
 
 #include <array>
@@ -100,7 +102,7 @@ private:
     TileMap map;
     Player player;
     sf::VertexArray tileQuads{sf::Triangles}; // built once: the tiles never change
-    sf::Font font;
+    hitbox::LazyFont font;                    // read by the first render(): tests need no font file
 
     // Controls: held keys, and presses kept until the next step uses them.
     bool holdingLeft = false;
@@ -111,7 +113,7 @@ private:
     bool speedCapOn = true;
     bool speculative = false;
     bool demo = false;
-    float unsimulatedTime = 0.f; // seconds handed to update() but not yet simulated
+    hitbox::FixedStep fixedStep{hitbox::stepSeconds}; // frame time -> whole steps
     long long stepCount = 0;
     int fallsOutOfWorld = 0;
 

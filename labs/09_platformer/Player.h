@@ -7,6 +7,8 @@
 
 #include "TileMap.h"
 
+#include "hitbox/app/App.h"
+
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/System/Vector2.hpp>
 
@@ -35,8 +37,7 @@ public:
     // The speed cap against tunnelling (seed 001): in one step the player may move less
     // than one tile, so it cannot jump over a tile between two steps.
     static constexpr float maxFallSpeed = 2250.f; // px/s
-    static constexpr float fixedStep = 1.f / 120.f;
-    static_assert(maxFallSpeed * fixedStep < TileMap::tileSize,
+    static_assert(maxFallSpeed * hitbox::stepSeconds < TileMap::tileSize,
                   "the speed cap must keep every step shorter than a tile");
 
     explicit Player(sf::Vector2f startPosition = {});

@@ -22,7 +22,6 @@ const sf::Vector2f enemyHitbox{34.f, 18.f};
 const sf::Vector2f enemySprite{48.f, 40.f};
 const sf::Vector2f trunkHitbox{22.f, 14.f};
 const sf::Vector2f treeSprite{96.f, 150.f};
-const sf::Vector2f worldSize{1200.f, 675.f};
 const float wallThickness = 24.f;
 const float helpBarHeight = 24.f;
 
@@ -34,7 +33,7 @@ const sf::Color trunkColor{110, 75, 45};
 const sf::Color leavesColor{40, 120, 55};
 } // namespace
 
-TopDownLevel::TopDownLevel() : font(hitbox::loadFont())
+TopDownLevel::TopDownLevel()
 {
     buildScene();
 }
@@ -45,11 +44,12 @@ void TopDownLevel::clearScene()
     trees.clear();
     walls.clear();
     solids.clear();
-    const float playBottom = worldSize.y - helpBarHeight;
-    addWall({0.f, 0.f, worldSize.x, wallThickness});
-    addWall({0.f, playBottom - wallThickness, worldSize.x, wallThickness});
+    const sf::Vector2f world = getWorldSize();
+    const float playBottom = world.y - helpBarHeight;
+    addWall({0.f, 0.f, world.x, wallThickness});
+    addWall({0.f, playBottom - wallThickness, world.x, wallThickness});
     addWall({0.f, 0.f, wallThickness, playBottom});
-    addWall({worldSize.x - wallThickness, 0.f, wallThickness, playBottom});
+    addWall({world.x - wallThickness, 0.f, wallThickness, playBottom});
 }
 
 void TopDownLevel::buildScene()
@@ -371,7 +371,7 @@ void drawSlime(sf::RenderTarget& target, const Enemy& enemy)
 
 void TopDownLevel::render(sf::RenderTarget& target) const
 {
-    drawBox(target, {0.f, 0.f, worldSize.x, worldSize.y}, groundColor);
+    drawBox(target, {{0.f, 0.f}, getWorldSize()}, groundColor);
     for (const sf::FloatRect& wall : walls)
         drawBox(target, wall, wallColor);
 
@@ -392,7 +392,7 @@ void TopDownLevel::render(sf::RenderTarget& target) const
     if (player.invulnerable > 0.f)
         hud << "   invulnerable " << std::round(player.invulnerable * 10.f) / 10.f << " s";
     hud << "   enemies " << enemies.size() << "   defeats " << defeats;
-    sf::Text text(hud.str(), font, 18);
+    sf::Text text(hud.str(), font.get(), 18);
     text.setPosition(36.f, 28.f);
     text.setFillColor(sf::Color::White);
     target.draw(text);
