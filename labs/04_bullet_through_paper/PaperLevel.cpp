@@ -111,7 +111,7 @@ void PaperLevel::handleInput(const Input& input, float)
 
 // [slide:lab04-discrete-vs-swept]
 // Discrete: move first, then look. Only the END of the step is ever tested, so a step
-// longer than bullet + wall can jump from one side to the other (seed 000).
+// longer than bullet + wall can jump from one side to the other.
 void PaperLevel::stepDiscrete(Bullet& bullet, sf::Vector2f step)
 {
     bullet.moveBy(step);

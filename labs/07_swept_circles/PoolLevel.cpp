@@ -143,7 +143,8 @@ BallEvent PoolLevel::findFirstEvent(float seconds) const
 {
     BallEvent first;
     // BEGIN TASK 1: the earliest ball-ball time of impact
-    // Every pair, both moving: only their relative move matters (seed 003's quadratic).
+    // Every pair, both moving: only their relative move matters (the quadratic of
+    // Ericson, Real-Time Collision Detection, 5.5 "Dynamic intersection tests").
     for (std::size_t a = 0; a < balls.size(); ++a)
         for (std::size_t b = a + 1; b < balls.size(); ++b)
         {
@@ -198,7 +199,7 @@ PoolLevel::bounceBalls(sf::Vector2f first, sf::Vector2f second, sf::Vector2f nor
 {
     // BEGIN TASK 2: equal balls swap their speeds along the normal
     // Only the part of the velocity along the line between the centres changes; equal
-    // masses simply exchange that part (seed 003's elastic response with m1 == m2).
+    // masses simply exchange that part (an elastic response with m1 == m2).
     const float closing = hitbox::dot(first - second, normal);
     if (closing >= 0.f)
         return {first, second}; // already moving apart

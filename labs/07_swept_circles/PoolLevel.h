@@ -4,7 +4,7 @@
 // a ball hitting a cushion), what happens FIRST, and when? Every ball moves up to that moment,
 // that one collision is answered, and the rest of the step is simulated the same way. Because
 // the sweeps look at the whole move, a ball at any speed hits the ball in its way instead of
-// jumping over it (seed 003: swept circles, the quadratic, elastic response).
+// jumping over it (swept circles: Ericson, Real-Time Collision Detection, 5.5).
 // Press D for the discrete version (move, then look for overlaps) to see the difference.
 #pragma once
 

@@ -151,7 +151,7 @@ void ManyObjectsLevel::spawnCrowd(int count)
 void ManyObjectsLevel::spawnPairTableBalls(int count)
 {
     // Every third ball is a pickup: with the rules of task 3, pickup-pickup cells of the
-    // table stay untested (seed 002: 98 tests instead of 253).
+    // table stay untested.
     const sf::FloatRect arena = tableSceneArena;
     const float margin = tableBallRadius;
     std::uniform_real_distribution<float> x(arena.left + margin, arena.left + arena.width - margin);

@@ -44,7 +44,7 @@ void addQuad(sf::VertexArray& quads, const sf::FloatRect& box, sf::Color color)
 } // namespace
 
 // [slide:platformer-collision-points]
-// Seed 001's points: A bottom, B top, C left, D right, then the four corners, checked in
+// The collision points: A bottom, B top, C left, D right, then the four corners, checked in
 // this order. With a player at most 1.5 tiles tall no tile can slip between two points.
 const std::array<CollisionPoint, 8> PlatformerLevel::collisionPoints = {{
     {"bottom", {0.f, 1.f}},
@@ -84,7 +84,7 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector
     // [slide:platformer-least-penetration]
     // BEGIN TASK 2: push a corner out along the axis of least penetration
     // A corner cannot tell whether it came in from above or from the side. The shallower
-    // way out is nearly always the way it came in (seed 001). Ties: the x axis.
+    // way out is nearly always the way it came in. Ties: the x axis.
     return depthY < depthX ? pushY : pushX;
     // STARTER TASK 2
     // return hitbox::Contact{}; // for now a corner inside a tile is ignored
@@ -226,7 +226,7 @@ void PlatformerLevel::applyPush(const hitbox::Contact& push)
         velocity -= push.normal * intoSurface;
     player.setVelocity(velocity);
     // Pushed up = something under the feet: a floor. This is the only way to be grounded
-    // (seed 001: the bottom point, or a bottom corner resolved along y).
+    // (the bottom point, or a bottom corner resolved along y).
     if (push.normal.y < 0.f)
         grounded = true;
     contacts.push_back(push);
@@ -247,9 +247,10 @@ hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2
 }
 
 // [slide:platformer-speculative]
-// Speculative contacts (seed 000): instead of moving and then repairing, sweep the player's
-// box along its move and stop it where it would first touch a tile. The rest of the move
-// slides along the surface. A fast player can no longer pass through a thin floor.
+// Speculative contacts (Katy Coe, "2D Platform Games Part 1: Collision Detection for Dummies"):
+// instead of moving and then repairing, sweep the player's box along its move and stop it where it
+// would first touch a tile. The rest of the move slides along the surface. A fast player can no
+// longer pass through a thin floor.
 void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
 {
     sf::Vector2f move = player.getVelocity() * hitbox::stepSeconds;

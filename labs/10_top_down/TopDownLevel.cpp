@@ -130,7 +130,8 @@ void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
     // BEGIN TASK 1: move along x and resolve, then along y and resolve
     // [slide:topdown-per-axis]
     // One axis at a time, so we always know which way the actor came in: moving right
-    // into a wall, its right edge goes back to the wall's left edge (seed 003).
+    // into a wall, its right edge goes back to the wall's left edge (as in Rodrigo
+    // Monteiro, "The guide to implementing 2D platformers", tile-based movement).
     actor.feet.x += move.x;
     for (const sf::FloatRect& solid : solids)
         if (hitbox::boxVsBox(actor.hitbox(), solid))

@@ -1,6 +1,6 @@
-// TopDownLevel.h - Lab 10: a Zelda-like scene seen from above (seed 003).
+// TopDownLevel.h - Lab 10: a Zelda-like scene seen from above.
 //
-// The player walks among walls, rocks, trees and a few slimes. Seed 003's ideas, each
+// The player walks among walls, rocks, trees and a few slimes. The ideas, each
 // somewhere you can find it:
 //   - a hitbox smaller than the sprite: only the feet collide (Actor.h);
 //   - per-axis move-then-resolve: move along x, push out of walls along x; then the same
