@@ -5,14 +5,16 @@
 // is drawn. The left and right sides are open: leaving there scores a point.
 #pragma once
 
+#include "hitbox/app/Level.h"
+
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/System/Vector2.hpp>
 
 struct Arena
 {
-    sf::Vector2f size{1200.f, 675.f}; // the whole world, in pixels
-    float bottomMargin = 24.f;        // the framework's help line sits here, below the wall
-    float wallThickness = 12.f;       // the part of each wall that is drawn
+    sf::Vector2f size = hitbox::defaultWorldSize; // the whole world, in pixels
+    float bottomMargin = 24.f;  // the framework's help line sits here, below the wall
+    float wallThickness = 12.f; // the part of each wall that is drawn
 
     // The first and last y the ball and the paddles may occupy.
     float playTop() const;

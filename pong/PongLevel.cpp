@@ -56,7 +56,7 @@ PongLevel::PongLevel(const PongSettings& pongSettings)
       // shift the other's.
       leftComputer(settings.difficulty, settings.seed * 2u + 1u),
       rightComputer(settings.difficulty, settings.seed * 2u + 2u), score(settings.pointsToWin),
-      random(settings.seed), mode(settings.mode), font(hitbox::loadFont())
+      random(settings.seed), mode(settings.mode)
 {
     ball.placeAt({arena.centerX(), arena.centerY()});
     ballStepStart = ball.getPosition();

@@ -14,9 +14,8 @@
 #include "Paddle.h"
 #include "Score.h"
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <memory>
 #include <random>
@@ -138,6 +137,6 @@ private:
     int rightMatchesWon = 0;
     long long paddleHitsTotal = 0;
 
-    sf::Font font;
+    hitbox::LazyFont font;          // read by the first render(): tests need no font file
     std::unique_ptr<Sounds> sounds; // null: silent (headless runs, tests)
 };

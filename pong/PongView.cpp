@@ -86,8 +86,8 @@ void PongLevel::render(sf::RenderTarget& target) const
         target.draw(rightPaddle);
         const sf::FloatRect panel{centerX - 330.f, 110.f, 660.f, 420.f};
         drawPanel(target, panel);
-        drawCentered(target, font, "PONG", 96, centerX, 140.f, scoreColor);
-        drawCentered(target, font,
+        drawCentered(target, font.get(), "PONG", 96, centerX, 140.f, scoreColor);
+        drawCentered(target, font.get(),
                      "first to " + std::to_string(settings.pointsToWin) +
                          "   -   computer: " + nameOf(settings.difficulty),
                      22, centerX, 260.f, highlightColor);
@@ -97,19 +97,19 @@ void PongLevel::render(sf::RenderTarget& target) const
         float y = 315.f;
         for (const std::string& line : menu)
         {
-            drawCentered(target, font, line, 24, centerX, y, scoreColor);
+            drawCentered(target, font.get(), line, 24, centerX, y, scoreColor);
             y += 40.f;
         }
-        drawCentered(target, font, "left alone, the game plays itself", 16, centerX, 490.f,
+        drawCentered(target, font.get(), "left alone, the game plays itself", 16, centerX, 490.f,
                      dimTextColor);
         return;
     }
 
     // Scores either side of the net, big enough to read from the back of a lecture hall.
-    drawCentered(target, font, std::to_string(score.pointsOf(Side::Left)), 88, centerX - 110.f,
-                 36.f, scoreColor);
-    drawCentered(target, font, std::to_string(score.pointsOf(Side::Right)), 88, centerX + 110.f,
-                 36.f, scoreColor);
+    drawCentered(target, font.get(), std::to_string(score.pointsOf(Side::Left)), 88,
+                 centerX - 110.f, 36.f, scoreColor);
+    drawCentered(target, font.get(), std::to_string(score.pointsOf(Side::Right)), 88,
+                 centerX + 110.f, 36.f, scoreColor);
     const std::string status =
         attractMode ? "DEMO  -  press any key to play" : describeMode(mode, settings.difficulty);
     // On a dark strip, so the net does not run through the words.
@@ -117,10 +117,11 @@ void PongLevel::render(sf::RenderTarget& target) const
     strip.setPosition({centerX - 220.f, arena.playBottom() - 48.f});
     strip.setFillColor(sf::Color(18, 20, 28));
     target.draw(strip);
-    drawCentered(target, font, status, 18, centerX, arena.playBottom() - 34.f,
+    drawCentered(target, font.get(), status, 18, centerX, arena.playBottom() - 34.f,
                  attractMode ? highlightColor : dimTextColor);
     if (muted)
-        drawCentered(target, font, "sound off (M)", 16, arena.size.x - 80.f, 24.f, dimTextColor);
+        drawCentered(target, font.get(), "sound off (M)", 16, arena.size.x - 80.f, 24.f,
+                     dimTextColor);
 
     target.draw(leftPaddle);
     target.draw(rightPaddle);
@@ -133,16 +134,16 @@ void PongLevel::render(sf::RenderTarget& target) const
     // Win screen.
     const sf::FloatRect panel{centerX - 320.f, 190.f, 640.f, 250.f};
     drawPanel(target, panel);
-    drawCentered(target, font, winnerLine(mode, score.getWinner()), 56, centerX, 225.f,
+    drawCentered(target, font.get(), winnerLine(mode, score.getWinner()), 56, centerX, 225.f,
                  highlightColor);
-    drawCentered(target, font,
+    drawCentered(target, font.get(),
                  std::to_string(score.pointsOf(Side::Left)) + "  -  " +
                      std::to_string(score.pointsOf(Side::Right)),
                  40, centerX, 310.f, scoreColor);
     const std::string next = mode == Mode::ComputerVsComputer
                                  ? "the next match starts by itself   -   Esc: menu"
                                  : "Space: play again   -   Esc: menu";
-    drawCentered(target, font, next, 20, centerX, 385.f, dimTextColor);
+    drawCentered(target, font.get(), next, 20, centerX, 385.f, dimTextColor);
 }
 
 void PongLevel::renderDebug(hitbox::DebugRenderer& debug) const

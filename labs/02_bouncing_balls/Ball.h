@@ -4,6 +4,7 @@
 // bounding circle (by default the circle inside the collision box) is the ball itself.
 #pragma once
 
+#include "hitbox/app/Level.h"
 #include "hitbox/objects/GameObject.h"
 
 // The numbers to play with.
@@ -28,7 +29,7 @@ public:
     float getFlash() const;
 
 private:
-    sf::Vector2f worldSize{1200.f, 675.f};
+    sf::Vector2f worldSize = hitbox::defaultWorldSize;
     int hitCount = 0;
     float flash = 0.f;
 };

@@ -5,6 +5,7 @@
 // the middle. The origin is the centre of the picture, so getPosition() is the centre.
 #pragma once
 
+#include "hitbox/app/Level.h"
 #include "hitbox/objects/GameObject.h"
 
 // The numbers to play with.
@@ -29,7 +30,7 @@ public:
     float getFlash() const;
 
 private:
-    sf::Vector2f worldSize{1200.f, 675.f};
+    sf::Vector2f worldSize = hitbox::defaultWorldSize;
     int hitCount = 0;
     float flash = 0.f;
 };

@@ -59,7 +59,7 @@ sf::Text makeText(const sf::Font& font, const std::string& words, unsigned size,
 }
 } // namespace
 
-PaperLevel::PaperLevel() : nextSpeed(firstSpeed), font(hitbox::loadFont())
+PaperLevel::PaperLevel() : nextSpeed(firstSpeed)
 {
     wall = {wallX, 95.f, wallThickness, 480.f};
 }
@@ -111,7 +111,7 @@ void PaperLevel::handleInput(const Input& input, float)
 
 // [slide:lab04-discrete-vs-swept]
 // Discrete: move first, then look. Only the END of the step is ever tested, so a step
-// longer than bullet + wall can jump from one side to the other (seed 000).
+// longer than bullet + wall can jump from one side to the other.
 void PaperLevel::stepDiscrete(Bullet& bullet, sf::Vector2f step)
 {
     bullet.moveBy(step);
@@ -210,12 +210,12 @@ void PaperLevel::drawLane(sf::RenderTarget& target, Lane lane) const
     const std::string title = discrete
                                   ? "DISCRETE test: is the bullet inside the wall after the step?"
                                   : "SWEPT test: does the whole move of the step touch the wall?";
-    target.draw(makeText(font, title, 20, sf::Color::White, {20.f, y - 72.f}));
+    target.draw(makeText(font.get(), title, 20, sf::Color::White, {20.f, y - 72.f}));
 
     const LaneScore score = getScore(lane);
-    target.draw(makeText(font, "hits " + std::to_string(score.hits), 26, hitColor,
+    target.draw(makeText(font.get(), "hits " + std::to_string(score.hits), 26, hitColor,
                          {wallX + 50.f, y - 80.f}));
-    target.draw(makeText(font, "misses " + std::to_string(score.misses), 26,
+    target.draw(makeText(font.get(), "misses " + std::to_string(score.misses), 26,
                          score.misses > 0 ? missColor : sf::Color(160, 160, 160),
                          {wallX + 170.f, y - 80.f}));
 
@@ -234,7 +234,7 @@ void PaperLevel::drawLane(sf::RenderTarget& target, Lane lane) const
     if (!bullet->isFlying())
     {
         const bool hit = bullet->hitTheWall();
-        target.draw(makeText(font, hit ? "HIT" : "MISSED", 22, hit ? hitColor : missColor,
+        target.draw(makeText(font.get(), hit ? "HIT" : "MISSED", 22, hit ? hitColor : missColor,
                              {wallX + 50.f, y + 34.f}));
     }
     if (!bullet->isFlying() && !bullet->hitTheWall())
@@ -244,7 +244,7 @@ void PaperLevel::drawLane(sf::RenderTarget& target, Lane lane) const
     {
         const float stepLength = bullet->getSpeed() * hitbox::stepSeconds;
         const float window = bullet->getSize().x + wall.width;
-        target.draw(makeText(font,
+        target.draw(makeText(font.get(),
                              "CAN TUNNEL: one step is " + withSpaces(std::lround(stepLength)) +
                                  " px, bullet + wall only " + std::to_string(std::lround(window)) +
                                  " px",
@@ -266,7 +266,7 @@ void PaperLevel::drawJumpOverWall(sf::RenderTarget& target, const Bullet& bullet
         jump.setFillColor(missColor);
         target.draw(jump);
         // render() always has a window, so measuring text is safe here.
-        sf::Text label = makeText(font, "passed through unseen", 16, missColor, {0.f, 0.f});
+        sf::Text label = makeText(font.get(), "passed through unseen", 16, missColor, {0.f, 0.f});
         label.setPosition({wall.left - 12.f - label.getLocalBounds().width, y + 48.f});
         target.draw(label);
         return;
@@ -291,9 +291,10 @@ void PaperLevel::render(sf::RenderTarget& target) const
         shot += "   -   shot " + std::to_string(shotsFired) + ": " +
                 withSpaces(std::lround(bullet->getSpeed())) + " px/s = " + perStep + " px per step";
     }
-    target.draw(makeText(font, shot, 24, sf::Color::White, {20.f, 16.f}));
-    target.draw(makeText(font, "wall: 4 px   bullet: 12 px   faint boxes: where each step ended",
-                         16, sf::Color(170, 170, 180), {20.f, 600.f}));
+    target.draw(makeText(font.get(), shot, 24, sf::Color::White, {20.f, 16.f}));
+    target.draw(makeText(font.get(),
+                         "wall: 4 px   bullet: 12 px   faint boxes: where each step ended", 16,
+                         sf::Color(170, 170, 180), {20.f, 600.f}));
 }
 
 void PaperLevel::renderDebug(hitbox::DebugRenderer& debug) const

@@ -7,9 +7,8 @@
 
 #include "Bullet.h"
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <memory>
 
@@ -63,5 +62,5 @@ private:
     float nextSpeed;
     float secondsUntilNextShot = 0.f;
     int shotsFired = 0;
-    sf::Font font;
+    hitbox::LazyFont font; // read by the first render(): tests need no font file
 };

@@ -3,6 +3,7 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/geometry/Resolve.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
@@ -69,7 +70,7 @@ std::vector<sf::FloatRect> labField()
 RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f}) {}
 
 RayLevel::RayLevel(std::vector<sf::FloatRect> solidBoxes, sf::Vector2f playerStart)
-    : solids(std::move(solidBoxes)), mouse(760.f, 110.f), font(hitbox::loadFont())
+    : solids(std::move(solidBoxes)), mouse(760.f, 110.f)
 {
     player.setSize(playerSize);
     player.setPosition(playerStart);
@@ -132,7 +133,7 @@ const RayHit& RayLevel::getRay() const
     return ray;
 }
 
-const std::vector<SolidHit>& RayLevel::getLastHits() const
+const std::vector<hitbox::Hit>& RayLevel::getLastHits() const
 {
     return lastHits;
 }
@@ -168,51 +169,36 @@ RayHit RayLevel::castRay(sf::Vector2f from, sf::Vector2f to) const
 }
 // [/slide]
 
-std::vector<SolidHit> RayLevel::solidsInTheWay(sf::Vector2f move) const
-{
-    std::vector<SolidHit> inTheWay;
-    for (std::size_t i = 0; i < solids.size(); ++i)
-    {
-        const hitbox::Hit hit = hitbox::sweepBoxVsBox(player.getCollisionBox(), move, solids[i]);
-        if (hit)
-            inTheWay.push_back({i, hit.time});
-    }
-    return inTheWay;
-}
-
-bool RayLevel::isNearer(const SolidHit& a, const SolidHit& b) const
-{
-    const sf::Vector2f center = hitbox::centerOf(player.getCollisionBox());
-    const sf::Vector2f toA = hitbox::centerOf(solids[a.index]) - center;
-    const sf::Vector2f toB = hitbox::centerOf(solids[b.index]) - center;
-    return dot(toA, toA) < dot(toB, toB);
-}
-
-// [slide:lab05-slide-time-order]
+// [slide:lab05-move-and-slide]
 void RayLevel::movePlayer(sf::Vector2f velocity, float dt)
 {
-    lastHits = solidsInTheWay(velocity * dt); // every solid this move runs into, and when
-    // BEGIN TASK 3: handle the nearest contact first (ties: the nearer solid)
-    if (timeOrder)
-        std::sort(lastHits.begin(), lastHits.end(),
-                  [&](const SolidHit& a, const SolidHit& b)
-                  { return a.time != b.time ? a.time < b.time : isNearer(a, b); });
-    // END TASK 3
-    // BEGIN TASK 2: slide - remove the part of the velocity that goes into each surface
-    for (const SolidHit& candidate : lastHits)
-    {
-        const hitbox::Hit now = // sweep again: earlier answers may have steered clear
-            hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[candidate.index]);
-        if (!now)
-            continue;
-        if (now.startedInside)
-            player.move(now.normal * now.depth); // already overlapping: push out first
-        const float into = dot(velocity, now.normal);
-        if (into < 0.f)
-            velocity -= now.normal * into * (1.f - now.time); // keep only the part up to the touch
-    }
+    // BEGIN TASK 2: move the player's box with hitbox::moveBoxAndSlide, then follow it
+    // moveBoxAndSlide sweeps the whole move against every solid, handles the hits nearest in
+    // time first (unless timeOrder is off) and removes the part of the velocity that goes
+    // into each surface: the box ends touching walls and keeps sliding along them.
+    const sf::FloatRect box = player.getCollisionBox();
+    const hitbox::MoveResult moved = hitbox::moveBoxAndSlide(box, velocity, dt, solids, timeOrder);
+    player.move(moved.box.left - box.left, moved.box.top - box.top);
+    lastHits = moved.hits;
+    // STARTER TASK 2
+    // player.move(velocity * dt); // no collision yet: the player walks through walls
+    // lastHits.clear();
     // END TASK 2
-    player.move(velocity * dt);
+}
+// [/slide]
+
+// [slide:lab05-stuck]
+bool isSnagged(sf::Vector2f wanted, sf::Vector2f moved)
+{
+    // BEGIN TASK 3: moving less than a tenth of the wanted distance is stuck
+    // Compare squared lengths: no square root needed. Not wanting to move is never stuck.
+    const float wantedSquared = dot(wanted, wanted);
+    return wantedSquared > 0.f && dot(moved, moved) < 0.01f * wantedSquared;
+    // STARTER TASK 3
+    // (void)wanted;
+    // (void)moved;
+    // return false;
+    // END TASK 3
 }
 // [/slide]
 
@@ -225,9 +211,7 @@ void RayLevel::update(float dt)
     player.setVelocity(direction * playerSpeed);
     const sf::Vector2f before = player.getPosition();
     movePlayer(player.getVelocity(), dt);
-    // Wanting to move but barely moving: snagged (or pressed into a corner).
-    const sf::Vector2f moved = player.getPosition() - before;
-    stuck = length > 0.f && dot(moved, moved) < 0.01f * playerSpeed * dt * playerSpeed * dt;
+    stuck = isSnagged(player.getVelocity() * dt, player.getPosition() - before);
 
     trail.push_back(player.getPosition() + playerSize / 2.f);
     if (trail.size() > trailLength)
@@ -276,7 +260,7 @@ void RayLevel::render(sf::RenderTarget& target) const
     }
     if (stuck)
     {
-        sf::Text stuckText("stuck!", font, 18);
+        sf::Text stuckText("stuck!", font.get(), 18);
         stuckText.setFillColor(hitColor);
         stuckText.setPosition(player.getPosition() + sf::Vector2f{-8.f, -30.f});
         target.draw(stuckText);
@@ -284,11 +268,12 @@ void RayLevel::render(sf::RenderTarget& target) const
 
     const std::string order = timeOrder ? "ON  (nearest contact first: slides over the seams)"
                                         : "OFF (list order: snags on a seam)";
-    sf::Text status("Time order " + order, font, 20);
+    sf::Text status("Time order " + order, font.get(), 20);
     status.setFillColor(timeOrder ? sf::Color(120, 230, 140) : hitColor);
     status.setPosition({60.f, 4.f});
     target.draw(status);
-    sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font, 16);
+    sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font.get(),
+                     16);
     rayText.setFillColor(rayColor);
     rayText.setPosition({700.f, 8.f});
     target.draw(rayText);
@@ -296,8 +281,8 @@ void RayLevel::render(sf::RenderTarget& target) const
 
 void RayLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
-    for (const SolidHit& hit : lastHits)
-        debug.box(solids[hit.index], hitbox::DebugRenderer::touchingColor);
+    for (const hitbox::Hit& hit : lastHits) // where each hit touched, and its normal
+        debug.arrow(hit.point, hit.point + hit.normal * 24.f, hitbox::DebugRenderer::normalColor);
     // The swept area of the next quarter second, and the player's velocity.
     debug.objectBox(player, !lastHits.empty());
     if (ray.hit)

@@ -2,15 +2,17 @@
 //
 // Part 1: cast a ray (a segment) from the player's centre to the mouse against every box and
 // keep the NEAREST hit: that is what a gun, a line of sight or a laser needs.
-// Part 2: move the player with a swept box, so it stops at walls at any speed, and slide
-// along them instead of sticking. Part 3: the floor is made of separate tiles, and sliding
-// over the seams between them only works if the contacts are handled in TIME ORDER (seed 004).
+// Part 2: move the player with hitbox::moveBoxAndSlide, which sweeps its box so it stops at
+// walls at any speed and slides along them. Its floor is made of separate tiles: sliding over
+// the seams only works because the contacts are handled in TIME ORDER (T turns that off).
+// Part 3: notice when a step snags. (The ladder of javidx9's video "Arbitrary Rectangle
+// Collision Detection & Resolution", OneLoneCoder, 2020.)
 #pragma once
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
+#include "hitbox/geometry/Sweep.h"
 #include "hitbox/objects/GameObject.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <cstddef>
 #include <vector>
@@ -27,12 +29,9 @@ struct RayHit
     int boxIndex = -1;   // which of getSolids() it hit, -1 when none
 };
 
-// One solid the player's move for this step would run into, and when.
-struct SolidHit
-{
-    std::size_t index = 0; // into getSolids()
-    float time = 1.f;      // fraction of the step, 0..1
-};
+// Task 3: true when a step that wanted to move by `wanted` moved by less than a tenth of
+// that (`moved`): snagged on a seam or pressed into a corner. A zero `wanted` is never stuck.
+bool isSnagged(sf::Vector2f wanted, sf::Vector2f moved);
 
 class RayLevel : public hitbox::Level
 {
@@ -61,18 +60,14 @@ public:
     const GameObject& getPlayer() const;
     const std::vector<sf::FloatRect>& getSolids() const;
     const RayHit& getRay() const;
-    // The solids the player's last step ran into, in the order they were handled.
-    const std::vector<SolidHit>& getLastHits() const;
+    // The hits of the player's last step, in the order moveBoxAndSlide resolved them.
+    const std::vector<hitbox::Hit>& getLastHits() const;
     // The player wanted to move in the last step but hardly moved (snagged or cornered).
     bool isStuck() const;
 
 private:
-    // Move the player by velocity * dt, sliding along what it runs into (tasks 2 and 3).
+    // Move the player by velocity * dt, sliding along what it runs into (task 2).
     void movePlayer(sf::Vector2f velocity, float dt);
-    // Every solid the player's box would run into moving by `move`, with the time of each.
-    std::vector<SolidHit> solidsInTheWay(sf::Vector2f move) const;
-    // For ties in time: is solid a's centre nearer the player's centre than solid b's?
-    bool isNearer(const SolidHit& a, const SolidHit& b) const;
 
     std::vector<sf::FloatRect> solids;
     GameObject player;
@@ -82,8 +77,8 @@ private:
     sf::Vector2f mouse;
     sf::Vector2f lastMouseReading;
     RayHit ray;
-    std::vector<SolidHit> lastHits;
+    std::vector<hitbox::Hit> lastHits;
     bool stuck = false;              // wanted to move this step but hardly moved
     std::vector<sf::Vector2f> trail; // where the player has been, for the picture
-    sf::Font font;
+    hitbox::LazyFont font;           // read by the first render(): tests need no font file
 };

@@ -118,7 +118,7 @@ hitbox::Capsule Shape::capsule() const
 RotatedLevel::RotatedLevel() : RotatedLevel(labShapes()) {}
 
 RotatedLevel::RotatedLevel(std::vector<Shape> startShapes)
-    : shapes(std::move(startShapes)), overlapping(shapes.size(), false), font(hitbox::loadFont())
+    : shapes(std::move(startShapes)), overlapping(shapes.size(), false)
 {
     update(0.f); // so the pairs are known before the first step
 }
@@ -363,13 +363,13 @@ void RotatedLevel::render(sf::RenderTarget& target) const
     else if (nearest)
         status += "apart from its nearest neighbour (gap " +
                   std::to_string(std::lround(nearest->gap)) + " px)";
-    sf::Text text(status, font, 20);
+    sf::Text text(status, font.get(), 20);
     text.setFillColor(sf::Color::White);
     text.setPosition({16.f, 10.f});
     target.draw(text);
     sf::Text legend("bars: both shadows on the axis SAT chose for the nearest shape (yellow: "
                     "held)   green line: a separating line where the AABBs overlap",
-                    font, 16);
+                    font.get(), 16);
     legend.setFillColor(sf::Color(190, 190, 200));
     legend.setPosition({16.f, 38.f});
     target.draw(legend);

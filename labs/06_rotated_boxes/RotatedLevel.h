@@ -9,10 +9,9 @@
 
 #include "Sat.h"
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Capsule.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <vector>
 
@@ -75,5 +74,5 @@ private:
     sf::Vector2f grabOffset;
     std::vector<PairView> pairs;
     std::vector<bool> overlapping;
-    sf::Font font;
+    hitbox::LazyFont font; // read by the first render(): tests need no font file
 };

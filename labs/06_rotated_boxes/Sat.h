@@ -4,7 +4,8 @@
 // polygons it is enough to try the lines at right angles to their edges: project (cast the
 // "shadow" of) both shapes onto each edge's normal; if the shadows do not overlap on one of
 // those axes, a line fits there. If they overlap on every axis, the axis where they overlap
-// least is the shortest way out: the minimum translation vector (seeds 002 and 003).
+// least is the shortest way out: the minimum translation vector (Ericson, Real-Time
+// Collision Detection, 4.4).
 // The framework's hitbox::polygonVsPolygon (Polygon.h) does the same; the tests compare.
 #pragma once
 

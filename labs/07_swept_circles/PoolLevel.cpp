@@ -62,8 +62,7 @@ float lengthSquared(sf::Vector2f vector)
 PoolLevel::PoolLevel() : PoolLevel(rackedBalls(), labTable) {}
 
 PoolLevel::PoolLevel(std::vector<Ball> startBalls, sf::FloatRect playingArea)
-    : balls(std::move(startBalls)), table(playingArea), mouse(900.f, 350.f),
-      font(hitbox::loadFont())
+    : balls(std::move(startBalls)), table(playingArea), mouse(900.f, 350.f)
 {
     const float t = cushionThickness;
     cushions = {
@@ -144,7 +143,8 @@ BallEvent PoolLevel::findFirstEvent(float seconds) const
 {
     BallEvent first;
     // BEGIN TASK 1: the earliest ball-ball time of impact
-    // Every pair, both moving: only their relative move matters (seed 003's quadratic).
+    // Every pair, both moving: only their relative move matters (the quadratic of
+    // Ericson, Real-Time Collision Detection, 5.5 "Dynamic intersection tests").
     for (std::size_t a = 0; a < balls.size(); ++a)
         for (std::size_t b = a + 1; b < balls.size(); ++b)
         {
@@ -199,7 +199,7 @@ PoolLevel::bounceBalls(sf::Vector2f first, sf::Vector2f second, sf::Vector2f nor
 {
     // BEGIN TASK 2: equal balls swap their speeds along the normal
     // Only the part of the velocity along the line between the centres changes; equal
-    // masses simply exchange that part (seed 003's elastic response with m1 == m2).
+    // masses simply exchange that part (an elastic response with m1 == m2).
     const float closing = hitbox::dot(first - second, normal);
     if (closing >= 0.f)
         return {first, second}; // already moving apart
@@ -330,7 +330,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
         char when[96];
         std::snprintf(when, sizeof(when), "cue ball stopped where it touched: t = %.2f of its step",
                       cueImpact.stepFraction);
-        sf::Text label(when, font, 16);
+        sf::Text label(when, font.get(), 16);
         label.setFillColor(sf::Color::White);
         label.setOutlineColor(sf::Color::Black);
         label.setOutlineThickness(1.5f);
@@ -344,22 +344,22 @@ void PoolLevel::render(sf::RenderTarget& target) const
     const std::string mode =
         swept ? "TIME OF IMPACT: first collision first, then the rest of the step"
               : "DISCRETE: move, then look for overlaps (press D)";
-    sf::Text title(mode, font, 22);
+    sf::Text title(mode, font.get(), 22);
     title.setFillColor(swept ? sf::Color(140, 240, 160) : sf::Color(255, 110, 90));
     title.setPosition({20.f, 14.f});
     target.draw(title);
-    const long perStep = std::lround(fastest / 120.f);
+    const long perStep = std::lround(fastest * hitbox::stepSeconds);
     sf::Text speed("fastest ball: " + std::to_string(perStep) + " px per step (a ball is " +
                        std::to_string(std::lround(2.f * ballRadius)) +
                        " px wide)   next shot: " + std::to_string(std::lround(shotSpeed)) + " px/s",
-                   font, 16);
+                   font.get(), 16);
     speed.setFillColor(perStep > 2.f * ballRadius ? sf::Color(255, 170, 60)
                                                   : sf::Color(200, 200, 200));
     speed.setPosition({20.f, 44.f});
     target.draw(speed);
     sf::Text legend("white dots: the cue ball after each step   yellow rings: balls at the "
                     "moment of impact",
-                    font, 16);
+                    font.get(), 16);
     legend.setFillColor(sf::Color(200, 200, 200));
     legend.setPosition({20.f, 630.f});
     target.draw(legend);

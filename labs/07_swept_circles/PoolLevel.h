@@ -4,16 +4,15 @@
 // a ball hitting a cushion), what happens FIRST, and when? Every ball moves up to that moment,
 // that one collision is answered, and the rest of the step is simulated the same way. Because
 // the sweeps look at the whole move, a ball at any speed hits the ball in its way instead of
-// jumping over it (seed 003: swept circles, the quadratic, elastic response).
+// jumping over it (swept circles: Ericson, Real-Time Collision Detection, 5.5).
 // Press D for the discrete version (move, then look for overlaps) to see the difference.
 #pragma once
 
 #include "Ball.h"
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Sweep.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <cstddef>
 #include <vector>
@@ -93,5 +92,5 @@ private:
         sf::Vector2f where;       // the cue ball's centre when it touched
         float stepFraction = 0.f; // when, as a fraction of that whole step
     } cueImpact;                  // the cue ball's latest ball-ball impact
-    sf::Font font;
+    hitbox::LazyFont font;        // read by the first render(): tests need no font file
 };

@@ -1,6 +1,6 @@
 // Lab 7 - Swept circles
 // Teaches: finding collisions by time of impact. Each step, the first collision (ball-ball
-// from the quadratic of seed 003, ball-cushion from the rounded box) is found, everything
+// from the quadratic (Ericson, 5.5), ball-cushion from the rounded box) is found, everything
 // moves up to it, it is answered with an elastic bounce, and the rest of the step goes round
 // again: a ball at any speed hits the ball in its way. D switches to the discrete version.
 // Keys: click/Space shoot at the mouse, Up/Down shot speed, D discrete/swept, R rack again,

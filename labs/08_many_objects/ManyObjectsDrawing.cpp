@@ -11,19 +11,17 @@
 
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 
 namespace
 {
 const sf::Color plainColor{90, 160, 230};
-const sf::Color touchingColor{240, 100, 80};
 const sf::Color shipColors[] = {{80, 210, 255}, {255, 160, 60}};
 const sf::Color bulletColors[] = {{170, 235, 255}, {255, 215, 150}};
 const sf::Color pickupColor{235, 215, 70};
 
 const sf::Color cellUntested{44, 48, 60};
 const sf::Color cellTested{95, 110, 135};
-const sf::Color cellOverlapping{240, 90, 80};
+const sf::Color cellOverlapping = hitbox::DebugRenderer::touchingColor;
 const sf::Color cellWasted{210, 60, 210}; // on or below the diagonal, or tested twice
 
 const sf::FloatRect tableArea{660.f, 60.f, 500.f, 500.f};
@@ -35,7 +33,7 @@ const float squareBelowRadius = 2.5f;
 sf::Color colorOf(const Ball& ball)
 {
     if (ball.responses > 0 && ball.kind != BallKind::Bullet)
-        return touchingColor;
+        return hitbox::DebugRenderer::touchingColor;
     switch (ball.kind)
     {
     case BallKind::Ship:
@@ -106,17 +104,8 @@ sf::Text makeText(const std::string& text, const sf::Font& font, unsigned size, 
 
 } // namespace
 
-const sf::Font& ManyObjectsLevel::getFont() const
-{
-    // Loaded the first time something is drawn, so tests never need the font file.
-    if (!font)
-        font = std::make_unique<sf::Font>(hitbox::loadFont());
-    return *font;
-}
-
 void ManyObjectsLevel::render(sf::RenderTarget& target) const
 {
-    measureFrame();
     drawBalls(target);
     if (scene == Scene::PairTable)
         drawPairTable(target);
@@ -128,7 +117,7 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
 {
     // Every ball goes into ONE vertex array and ONE draw call. 10,000 sf::CircleShape draws
     // would cost more than all the collision detection.
-    ballVertices.clear();
+    sf::VertexArray ballVertices(sf::PrimitiveType::Triangles);
     for (const Ball& ball : balls)
     {
         if (ball.radius < squareBelowRadius)
@@ -142,7 +131,7 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
 
 void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
 {
-    const sf::Font& labelFont = getFont();
+    const sf::Font& labelFont = font.get();
     // Numbers on the balls, so a cell (i, j) can be found in the picture.
     for (std::size_t i = 0; i < balls.size(); ++i)
     {
@@ -237,8 +226,8 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
                  "    boxes overlapping: " + withCommas(candidatePairs.size()) +
                  "    circles touching: " + withCommas(contacts) + "\n";
         lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms per step";
-        if (framesDrawn > 1)
-            lines += "    frame: " + fixed(frameMilliseconds, 1) + " ms";
+        if (stepsMeasured > 1)
+            lines += "    real time: " + fixed(realStepMilliseconds, 1) + " ms per step";
         lines += "\n";
     }
     if (scene == Scene::PairTable)
@@ -252,7 +241,7 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
             color = sf::Color(255, 150, 130);
     }
 
-    sf::Text text = makeText(lines, getFont(), 16, color);
+    sf::Text text = makeText(lines, font.get(), 16, color);
     // Between the arena and the help bar, the full width of the world.
     const sf::Vector2f world = getWorldSize();
     const float top = getArena().top + getArena().height;
@@ -264,24 +253,15 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
     target.draw(text);
 }
 
-void ManyObjectsLevel::measureFrame() const
+std::string ManyObjectsLevel::timingLine() const
 {
-    // Real time between two drawn frames: simulation steps plus drawing, as a player feels it.
-    const float milliseconds = frameClock.restart().asSeconds() * 1000.f;
-    if (framesDrawn > 0)
-        frameMilliseconds += (milliseconds - frameMilliseconds) / (framesDrawn < 10 ? 2.f : 20.f);
-    ++framesDrawn;
-    if (printTimingSeconds > 0.f &&
-        timingLogClock.getElapsedTime().asSeconds() >= printTimingSeconds)
-    {
-        timingLogClock.restart();
-        std::cout << "timing: " << methodLabel(method) << ", " << balls.size()
-                  << " balls: " << getPairsTested() << " pairs tested, " << candidatePairs.size()
-                  << " overlapping, collision " << fixed(collisionMilliseconds, 2)
-                  << " ms/step, frame " << fixed(frameMilliseconds, 1) << " ms"
-                  << (bruteForceSkipped ? " (brute force skipped)" : "")
-                  << (stoppedAsTooSlow ? " (stopped: too slow)" : "") << std::endl;
-    }
+    return "timing: " + std::string(methodLabel(method)) + ", " + std::to_string(balls.size()) +
+           " balls: " + std::to_string(getPairsTested()) + " pairs tested, " +
+           std::to_string(candidatePairs.size()) + " overlapping, collision " +
+           fixed(collisionMilliseconds, 2) + " ms/step, real time " +
+           fixed(realStepMilliseconds, 1) + " ms/step" +
+           (bruteForceSkipped ? " (brute force skipped)" : "") +
+           (stoppedAsTooSlow ? " (stopped: too slow)" : "");
 }
 
 void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const

@@ -1,7 +1,6 @@
-// PairTable.h - the n x n table of seed 002's slide "You get a collision, you get a
-// collision...": row i, column j is the pair (i, j). Testing every pair once means filling
-// the cells above the diagonal, n(n-1)/2 of them: 45 for 10 balls, 4,950 for 100,
-// 49,995,000 for 10,000. That growth (O(n^2)) is why broadphases exist.
+// PairTable.h - the n x n table of every pair of balls: row i, column j is the pair (i, j). Testing
+// every pair once means filling the cells above the diagonal, n(n-1)/2 of them: 45 for 10 balls,
+// 4,950 for 100, 49,995,000 for 10,000. That growth (O(n^2)) is why broadphases exist.
 #pragma once
 
 #include "hitbox/broadphase/Broadphase.h"

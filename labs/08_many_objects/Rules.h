@@ -1,5 +1,5 @@
-// Rules.h - game rules as layers and masks (seed 002, "Using game rules": of 253 possible
-// pairs among 23 objects, only 98 can matter; never test the rest).
+// Rules.h - game rules as layers and masks (as Box2D's collision filtering does with
+// category and mask bits): pairs the game never cares about are never tested.
 //
 // Every ball is on one layer (one bit) and has a mask (the layers it wants to touch).
 // A pair is worth testing only when each one's layer is in the other's mask. The check

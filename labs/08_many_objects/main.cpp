@@ -1,5 +1,5 @@
 // Lab 8 - Many objects: from the n^2 pair table to a broadphase.
-// Teaches: testing every pair costs n(n-1)/2 tests (seed 002's table); game rules (layers
+// Teaches: testing every pair costs n(n-1)/2 tests (the pair table); game rules (layers
 // and masks) skip pairs before any geometry; a broadphase (sort and sweep, grid, quadtree)
 // finds the few pairs worth testing, so 10,000 balls cost little more per ball than 100.
 // Keys: Up/Down more or fewer balls   M next broadphase method

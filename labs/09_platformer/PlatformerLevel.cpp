@@ -44,7 +44,7 @@ void addQuad(sf::VertexArray& quads, const sf::FloatRect& box, sf::Color color)
 } // namespace
 
 // [slide:platformer-collision-points]
-// Seed 001's points: A bottom, B top, C left, D right, then the four corners, checked in
+// The collision points: A bottom, B top, C left, D right, then the four corners, checked in
 // this order. With a player at most 1.5 tiles tall no tile can slip between two points.
 const std::array<CollisionPoint, 8> PlatformerLevel::collisionPoints = {{
     {"bottom", {0.f, 1.f}},
@@ -84,7 +84,7 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector
     // [slide:platformer-least-penetration]
     // BEGIN TASK 2: push a corner out along the axis of least penetration
     // A corner cannot tell whether it came in from above or from the side. The shallower
-    // way out is nearly always the way it came in (seed 001). Ties: the x axis.
+    // way out is nearly always the way it came in. Ties: the x axis.
     return depthY < depthX ? pushY : pushX;
     // STARTER TASK 2
     // return hitbox::Contact{}; // for now a corner inside a tile is ignored
@@ -92,8 +92,7 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector
     // [/slide]
 }
 
-PlatformerLevel::PlatformerLevel(TileMap levelMap)
-    : map(std::move(levelMap)), font(hitbox::loadFont())
+PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
 {
     respawn();
     for (int row = 0; row < map.getRows(); ++row)
@@ -129,16 +128,14 @@ void PlatformerLevel::handleInput(const Input& input, float)
 
 // [slide:platformer-fixed-step]
 // Frame-rate independence: whatever dt the caller passes (a 30 Hz laptop, a 240 Hz
-// monitor), the level simulates whole steps of exactly Player::fixedStep, so the same
-// key presses give the same jump everywhere. Leftover time waits for the next call.
+// monitor), the level simulates whole steps of exactly hitbox::stepSeconds, so the same
+// key presses give the same jump everywhere. hitbox::FixedStep keeps the leftover time for
+// the next call and, after a long stall, skips time rather than freezing to catch up.
 void PlatformerLevel::update(float dt)
 {
-    unsimulatedTime += std::min(dt, 0.25f); // after a long stall, skip time rather than freeze
-    while (unsimulatedTime >= Player::fixedStep)
-    {
+    const int steps = fixedStep.advance(dt);
+    for (int i = 0; i < steps; ++i)
         step();
-        unsimulatedTime -= Player::fixedStep;
-    }
 }
 // [/slide]
 
@@ -149,7 +146,7 @@ void PlatformerLevel::step()
         controls = {false, true, stepCount % 60 == 0, false};
     jumpPressed = false;
     divePressed = false;
-    player.steer(controls, grounded, speedCapOn, Player::fixedStep);
+    player.steer(controls, grounded, speedCapOn, hitbox::stepSeconds);
 
     const sf::FloatRect before = player.getBox();
     contacts.clear();
@@ -172,7 +169,7 @@ void PlatformerLevel::step()
 
 void PlatformerLevel::moveThenResolve(const sf::FloatRect& before)
 {
-    player.setPosition(player.getPosition() + player.getVelocity() * Player::fixedStep);
+    player.setPosition(player.getPosition() + player.getVelocity() * hitbox::stepSeconds);
     resolvePenetration(before);
 }
 
@@ -230,7 +227,7 @@ void PlatformerLevel::applyPush(const hitbox::Contact& push)
         velocity -= push.normal * intoSurface;
     player.setVelocity(velocity);
     // Pushed up = something under the feet: a floor. This is the only way to be grounded
-    // (seed 001: the bottom point, or a bottom corner resolved along y).
+    // (the bottom point, or a bottom corner resolved along y).
     if (push.normal.y < 0.f)
         grounded = true;
     contacts.push_back(push);
@@ -251,12 +248,13 @@ hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2
 }
 
 // [slide:platformer-speculative]
-// Speculative contacts (seed 000): instead of moving and then repairing, sweep the player's
-// box along its move and stop it where it would first touch a tile. The rest of the move
-// slides along the surface. A fast player can no longer pass through a thin floor.
+// Speculative contacts (Katy Coe, "2D Platform Games Part 1: Collision Detection for Dummies"):
+// instead of moving and then repairing, sweep the player's box along its move and stop it where it
+// would first touch a tile. The rest of the move slides along the surface. A fast player can no
+// longer pass through a thin floor.
 void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
 {
-    sf::Vector2f move = player.getVelocity() * Player::fixedStep;
+    sf::Vector2f move = player.getVelocity() * hitbox::stepSeconds;
     for (int pass = 0; pass < maxResolvePasses && (move.x != 0.f || move.y != 0.f); ++pass)
     {
         const hitbox::Hit first = firstHitAlong(player.getBox(), move);
@@ -315,7 +313,7 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     sf::RectangleShape strip({map.getSizeInPixels().x, hudTextSize + 14.f});
     strip.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(strip);
-    sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
+    sf::Text text(hud.str(), font.get(), static_cast<unsigned>(hudTextSize));
     text.setPosition({10.f, 5.f});
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);

@@ -1,6 +1,6 @@
 // PlatformerLevel.h - Lab 9: a player running and jumping through a tile level.
 //
-// Each fixed step (seeds 000 and 001):
+// Each fixed step:
 //   1. the controls change the velocity (Player::steer: run, brake, gravity, jump, speed cap);
 //   2. the player moves by velocity * step;
 //   3. broad phase: only the tiles under the SWEPT BOUNDS (the box covering where the player
@@ -15,19 +15,21 @@
 #include "Player.h"
 #include "TileMap.h"
 
+#include "hitbox/app/App.h"
+#include "hitbox/app/Assets.h"
+#include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/geometry/Sweep.h"
 
-#include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
 
 #include <array>
 #include <string>
 #include <vector>
 
-// A point on the player's box that is tested against the tiles (seed 001's A, B, C, D and
-// corners). `side` says which sides of the box it lies on: x -1 left, +1 right, 0 middle;
+// A point on the player's box that is tested against the tiles (A, B, C, D and
+// the corners). `side` says which sides of the box it lies on: x -1 left, +1 right, 0 middle;
 // y -1 top, +1 bottom, 0 middle. A point is pushed out towards the inside of the box.
 struct CollisionPoint
 {
@@ -38,12 +40,13 @@ struct CollisionPoint
 class PlatformerLevel : public hitbox::Level
 {
 public:
-    // The collision points in the order they are checked (seed 001): bottom, top, left,
+    // The collision points in the order they are checked: bottom, top, left,
     // right, then the corners. The sides first, so that a corner is only used when no side
     // point already settled the collision.
     static const std::array<CollisionPoint, 8> collisionPoints;
     // Resolving one point can push another into a tile: repeat up to this many times per
-    // step, stopping early when nothing is inside (seed 000's iterative resolution).
+    // step, stopping early when nothing is inside (iterative resolution, as in
+    // Katy Coe, "2D Platform Games Part 1: Collision Detection for Dummies").
     static constexpr int maxResolvePasses = 3;
 
     explicit PlatformerLevel(TileMap map);
@@ -100,7 +103,7 @@ private:
     TileMap map;
     Player player;
     sf::VertexArray tileQuads{sf::PrimitiveType::Triangles}; // built once: the tiles never change
-    sf::Font font;
+    hitbox::LazyFont font;                    // read by the first render(): tests need no font file
 
     // Controls: held keys, and presses kept until the next step uses them.
     bool holdingLeft = false;
@@ -111,7 +114,7 @@ private:
     bool speedCapOn = true;
     bool speculative = false;
     bool demo = false;
-    float unsimulatedTime = 0.f; // seconds handed to update() but not yet simulated
+    hitbox::FixedStep fixedStep{hitbox::stepSeconds}; // frame time -> whole steps
     long long stepCount = 0;
     int fallsOutOfWorld = 0;
 

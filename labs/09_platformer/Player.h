@@ -1,11 +1,13 @@
-// Player.h - the platformer's player: how the controls change its velocity (seed 000's
-// movement: acceleration, deceleration, a top speed, gravity and a jump).
+// Player.h - the platformer's player: how the controls change its velocity (acceleration,
+// deceleration, a top speed, gravity and a jump).
 //
 // The player knows nothing about tiles. PlatformerLevel moves it, finds the tiles it went
 // into and pushes it back out (see PlatformerLevel.cpp).
 #pragma once
 
 #include "TileMap.h"
+
+#include "hitbox/app/App.h"
 
 #include <SFML/Graphics/Rect.hpp>
 #include <SFML/System/Vector2.hpp>
@@ -27,16 +29,15 @@ public:
     static constexpr float height = 60.f;
     static constexpr float runAcceleration = 2100.f; // px/s^2 while a direction is held
     static constexpr float runDeceleration = 3150.f; // px/s^2 with no direction: stops
-                                                     // 50 % faster than it starts (seed 000)
+                                                     // 50 % faster than it starts
     static constexpr float maxRunSpeed = 420.f;      // px/s
     static constexpr float gravity = 3300.f;         // px/s^2, down
     static constexpr float jumpSpeed = 1140.f;       // px/s, up: about 4 tiles high
     static constexpr float diveSpeed = 13500.f;      // px/s, down: far too fast on purpose
-    // The speed cap against tunnelling (seed 001): in one step the player may move less
+    // The speed cap against tunnelling: in one step the player may move less
     // than one tile, so it cannot jump over a tile between two steps.
     static constexpr float maxFallSpeed = 2250.f; // px/s
-    static constexpr float fixedStep = 1.f / 120.f;
-    static_assert(maxFallSpeed * fixedStep < TileMap::tileSize,
+    static_assert(maxFallSpeed * hitbox::stepSeconds < TileMap::tileSize,
                   "the speed cap must keep every step shorter than a tile");
 
     explicit Player(sf::Vector2f startPosition = {});

@@ -1,6 +1,6 @@
 // TileMap.h - a platformer level made of square tiles, read from a text file.
 //
-// The file is a picture of the level, one character per tile (seed 001's tile level):
+// The file is a picture of the level, one character per tile:
 //     #  solid tile        .  empty        P  where the player starts (an empty tile)
 // Every row must have the same number of tiles. A mistake in the file stops the program with
 // ONE line naming the file, the line and what is wrong, so a student can fix it at once.

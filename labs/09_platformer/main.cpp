@@ -3,7 +3,7 @@
 // a jump only from the ground); collision points around the player tested against solid
 // tiles in a fixed order; corners pushed out along the axis of least penetration; knowing
 // when the player is grounded; the swept-bounds broad phase (only nearby tiles are tested);
-// a speed cap against tunnelling, and speculative contacts as the other cure (seeds 000, 001).
+// a speed cap against tunnelling, and speculative contacts as the other cure.
 // Keys: A/D or arrows run, Space/W jump, S dive (very fast, downwards), C speed cap on/off,
 //       X speculative contacts on/off, R restart, plus the shared keys (F1 debug view).
 // Options: --level levels/NAME.txt loads another level from assets/ (or a full path);

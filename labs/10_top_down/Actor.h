@@ -1,6 +1,6 @@
 // Actor.h - anything that walks around the top-down scene: the player, an enemy, a tree.
 //
-// Seed 003's idea: what you SEE (the sprite) and what COLLIDES (the hitbox) are different
+// The idea: what you SEE (the sprite) and what COLLIDES (the hitbox) are different
 // boxes. The hitbox is only the feet: smaller than the sprite and at its bottom. So a head
 // may overlap the wall behind it, as it would in a picture seen from above and in front,
 // and the feet decide where the actor can stand and in which order things are drawn.

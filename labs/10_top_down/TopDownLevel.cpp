@@ -22,7 +22,6 @@ const sf::Vector2f enemyHitbox{34.f, 18.f};
 const sf::Vector2f enemySprite{48.f, 40.f};
 const sf::Vector2f trunkHitbox{22.f, 14.f};
 const sf::Vector2f treeSprite{96.f, 150.f};
-const sf::Vector2f worldSize{1200.f, 675.f};
 const float wallThickness = 24.f;
 const float helpBarHeight = 24.f;
 
@@ -34,7 +33,7 @@ const sf::Color trunkColor{110, 75, 45};
 const sf::Color leavesColor{40, 120, 55};
 } // namespace
 
-TopDownLevel::TopDownLevel() : font(hitbox::loadFont())
+TopDownLevel::TopDownLevel()
 {
     buildScene();
 }
@@ -45,11 +44,12 @@ void TopDownLevel::clearScene()
     trees.clear();
     walls.clear();
     solids.clear();
-    const float playBottom = worldSize.y - helpBarHeight;
-    addWall({0.f, 0.f, worldSize.x, wallThickness});
-    addWall({0.f, playBottom - wallThickness, worldSize.x, wallThickness});
+    const sf::Vector2f world = getWorldSize();
+    const float playBottom = world.y - helpBarHeight;
+    addWall({0.f, 0.f, world.x, wallThickness});
+    addWall({0.f, playBottom - wallThickness, world.x, wallThickness});
     addWall({0.f, 0.f, wallThickness, playBottom});
-    addWall({worldSize.x - wallThickness, 0.f, wallThickness, playBottom});
+    addWall({world.x - wallThickness, 0.f, wallThickness, playBottom});
 }
 
 void TopDownLevel::buildScene()
@@ -130,7 +130,8 @@ void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
     // BEGIN TASK 1: move along x and resolve, then along y and resolve
     // [slide:topdown-per-axis]
     // One axis at a time, so we always know which way the actor came in: moving right
-    // into a wall, its right edge goes back to the wall's left edge (seed 003).
+    // into a wall, its right edge goes back to the wall's left edge (as in Rodrigo
+    // Monteiro, "The guide to implementing 2D platformers", tile-based movement).
     actor.feet.x += move.x;
     for (const sf::FloatRect& solid : solids)
         if (hitbox::boxVsBox(actor.hitbox(), solid))
@@ -371,7 +372,7 @@ void drawSlime(sf::RenderTarget& target, const Enemy& enemy)
 
 void TopDownLevel::render(sf::RenderTarget& target) const
 {
-    drawBox(target, {0.f, 0.f, worldSize.x, worldSize.y}, groundColor);
+    drawBox(target, {{0.f, 0.f}, getWorldSize()}, groundColor);
     for (const sf::FloatRect& wall : walls)
         drawBox(target, wall, wallColor);
 
@@ -392,7 +393,7 @@ void TopDownLevel::render(sf::RenderTarget& target) const
     if (player.invulnerable > 0.f)
         hud << "   invulnerable " << std::round(player.invulnerable * 10.f) / 10.f << " s";
     hud << "   enemies " << enemies.size() << "   defeats " << defeats;
-    sf::Text text(hud.str(), font, 18);
+    sf::Text text(hud.str(), font.get(), 18);
     text.setPosition({36.f, 28.f});
     text.setFillColor(sf::Color::White);
     target.draw(text);

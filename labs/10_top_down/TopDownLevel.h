@@ -1,6 +1,6 @@
-// TopDownLevel.h - Lab 10: a Zelda-like scene seen from above (seed 003).
+// TopDownLevel.h - Lab 10: a Zelda-like scene seen from above.
 //
-// The player walks among walls, rocks, trees and a few slimes. Seed 003's ideas, each
+// The player walks among walls, rocks, trees and a few slimes. The ideas, each
 // somewhere you can find it:
 //   - a hitbox smaller than the sprite: only the feet collide (Actor.h);
 //   - per-axis move-then-resolve: move along x, push out of walls along x; then the same
@@ -14,9 +14,8 @@
 
 #include "Actor.h"
 
+#include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
-
-#include <SFML/Graphics/Font.hpp>
 
 #include <string>
 #include <vector>
@@ -111,7 +110,7 @@ private:
     std::vector<Actor> trees;
     std::vector<sf::FloatRect> walls;  // walls and rocks
     std::vector<sf::FloatRect> solids; // walls and tree trunks: what blocks feet
-    sf::Font font;
+    hitbox::LazyFont font;             // read by the first render(): tests need no font file
 
     sf::Vector2f heldDirection; // from the keys, each axis -1, 0 or 1
     sf::Vector2f facing{0.f, 1.f};

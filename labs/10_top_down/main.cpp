@@ -1,4 +1,4 @@
-// Lab 10 - Top-down: walls, trees and slimes seen from above (a Zelda-like, seed 003).
+// Lab 10 - Top-down: walls, trees and slimes seen from above (a Zelda-like).
 // Teaches: a hitbox smaller than the sprite (only the feet collide); per-axis
 // move-then-resolve, so walking diagonally into a wall slides along it; enemies that
 // notice the player inside one circle and attack inside a smaller one; knockback and

@@ -118,6 +118,25 @@ TEST(GameObject, DirectAssignmentOfTheProtectedBoxCountsAsSet)
     expectBoxNear(object.getCollisionBox(), {10.f, 10.f, 30.f, 30.f});
 }
 
+TEST(GameObject, AnUnsetProtectedBoxReadsAsEmptyAndSaysSo)
+{
+    // Old lab code may read the protected member: an unset box is a plain empty box (no NaN),
+    // and isSet tells it apart from one that was given.
+    struct Reader : GameObject
+    {
+        const hitbox::OptionalBox& box() const { return collisionBox; }
+    } object;
+    object.setSize({50.f, 50.f});
+    EXPECT_FALSE(object.box().isSet);
+    EXPECT_EQ(static_cast<const sf::FloatRect&>(object.box()), sf::FloatRect());
+    object.setCollisionBox(1.f, 2.f, 3.f, 4.f);
+    EXPECT_TRUE(object.box().isSet);
+    EXPECT_EQ(object.box().width, 3.f);
+    object.clearCollisionBox();
+    EXPECT_FALSE(object.box().isSet);
+    expectBoxNear(object.getCollisionBox(), {0.f, 0.f, 50.f, 50.f});
+}
+
 TEST(GameObject, ClearCollisionBoxGoesBackToTheWholeShape)
 {
     GameObject object;

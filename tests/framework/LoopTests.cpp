@@ -60,21 +60,23 @@ TEST(FixedStep, SameResultWhateverTheFrameRate)
         uneven.push_back(i % 2 == 0 ? 0.005f : 0.025f);
     const FallingBallLevel jittery = runAtFrameRate(uneven);
 
-    EXPECT_EQ(slow.steps, 360);
-    EXPECT_NEAR(fast.steps, 360, 1);
-    EXPECT_NEAR(jittery.steps, 360, 1);
+    const int threeSeconds = static_cast<int>(3.f * hitbox::stepsPerSecond);
+    EXPECT_EQ(slow.steps, threeSeconds);
+    EXPECT_NEAR(fast.steps, threeSeconds, 1);
+    EXPECT_NEAR(jittery.steps, threeSeconds, 1);
     // Same number of identical steps means the same state, exactly.
-    const FallingBallLevel reference = runAtFrameRate(std::vector<float>(360, 1.f / 120.f));
+    const FallingBallLevel reference =
+        runAtFrameRate(std::vector<float>(threeSeconds, hitbox::stepSeconds));
     EXPECT_EQ(slow.height, reference.height);
     EXPECT_EQ(slow.velocity, reference.velocity);
 }
 
 TEST(FixedStep, AStallIsCappedAndStepsStayShort)
 {
-    hitbox::FixedStep fixedStep(1.f / 120.f, 0.25f);
-    // A 10-second breakpoint: at most a quarter of a second is simulated, in 1/120 s steps.
-    EXPECT_EQ(fixedStep.advance(10.f), 30);
-    EXPECT_EQ(fixedStep.advance(1.f / 120.f), 1);
+    hitbox::FixedStep fixedStep(0.01f, 0.25f);
+    // A 10-second breakpoint: at most a quarter of a second is simulated, in 0.01 s steps.
+    EXPECT_EQ(fixedStep.advance(10.f), 25);
+    EXPECT_EQ(fixedStep.advance(0.01f), 1);
 }
 
 TEST(FixedStep, ShortFramesSaveUpTime)
@@ -96,7 +98,7 @@ TEST(FixedStep, NegativeAndNanFramesCountAsZero)
 
 TEST(Letterbox, WideWindowGetsBarsLeftAndRight)
 {
-    const sf::FloatRect viewport = hitbox::letterboxViewport({2400, 675}, {1200.f, 675.f});
+    const sf::FloatRect viewport = hitbox::letterboxViewport({2400, 675}, hitbox::defaultWorldSize);
     EXPECT_FLOAT_EQ(viewport.width, 0.5f);
     EXPECT_FLOAT_EQ(viewport.left, 0.25f);
     EXPECT_FLOAT_EQ(viewport.height, 1.f);
@@ -104,7 +106,8 @@ TEST(Letterbox, WideWindowGetsBarsLeftAndRight)
 
 TEST(Letterbox, TallWindowGetsBarsAboveAndBelow)
 {
-    const sf::FloatRect viewport = hitbox::letterboxViewport({1200, 1350}, {1200.f, 675.f});
+    const sf::FloatRect viewport =
+        hitbox::letterboxViewport({1200, 1350}, hitbox::defaultWorldSize);
     EXPECT_FLOAT_EQ(viewport.height, 0.5f);
     EXPECT_FLOAT_EQ(viewport.top, 0.25f);
 }
@@ -112,7 +115,8 @@ TEST(Letterbox, TallWindowGetsBarsAboveAndBelow)
 TEST(Letterbox, SameAspectFillsTheWindowAndZeroSizeIsSafe)
 {
     EXPECT_EQ(hitbox::letterboxViewport({600, 337}, {1200.f, 674.f}), sf::FloatRect(0, 0, 1, 1));
-    EXPECT_EQ(hitbox::letterboxViewport({0, 0}, {1200.f, 675.f}), sf::FloatRect(0, 0, 1, 1));
+    EXPECT_EQ(hitbox::letterboxViewport({0, 0}, hitbox::defaultWorldSize),
+              sf::FloatRect(0, 0, 1, 1));
 }
 
 namespace

@@ -60,7 +60,7 @@ TEST(SegmentVsBox, EndingExactlyOnTheEdgeMisses)
 
 TEST(SegmentVsBox, ParallelOutsideTheSlabMissesWithoutNaN)
 {
-    // Horizontal ray above the box: the y slab is never entered (seed 004: 0 / 0 = NaN).
+    // Horizontal ray above the box: the y slab is never entered (0 / 0 = NaN).
     const Hit above = segmentVsBox({0.f, -10.f}, {300.f, -10.f}, wall);
     EXPECT_FALSE(above);
     EXPECT_FALSE(std::isnan(above.time));

@@ -89,4 +89,11 @@ sf::Font loadFont(const std::string& relativePath)
     return font;
 }
 
+const sf::Font& LazyFont::get() const
+{
+    if (!font)
+        font = std::make_shared<const sf::Font>(loadFont());
+    return *font;
+}
+
 } // namespace hitbox

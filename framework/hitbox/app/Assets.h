@@ -8,6 +8,7 @@
 
 #include <SFML/Graphics/Font.hpp>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -25,5 +26,18 @@ std::string findAsset(const std::string& relativePath);
 
 // The font every Hitbox program uses for text, loaded from assets/fonts/.
 sf::Font loadFont(const std::string& relativePath = "fonts/DejaVuSans.ttf");
+
+// A level's font, read from disk by the first get(): a level holds one and is still built
+// (and tested) without the font file, because only drawing asks for it. Copies share it.
+class LazyFont
+{
+public:
+    // Loads the font on the first call (throws AssetError if it is missing), then returns it.
+    const sf::Font& get() const;
+
+private:
+    // Filled by the first get(): `mutable` so that a const render() may load it.
+    mutable std::shared_ptr<const sf::Font> font;
+};
 
 } // namespace hitbox

@@ -16,8 +16,8 @@ int FixedStep::advance(float frameSeconds)
     if (!(frameSeconds > 0.f)) // also catches NaN
         return 0;
     savedSeconds += std::min<double>(frameSeconds, maxFrameSeconds);
-    // A tolerance of 0.01% of a step, so that 1/120 s frames give one step each
-    // despite rounding.
+    // A tolerance of 0.01% of a step, so that frames exactly one step long give one step
+    // each despite rounding.
     const int steps = static_cast<int>(std::floor(savedSeconds / stepSeconds + 1e-4));
     savedSeconds = std::max(0.0, savedSeconds - steps * stepSeconds);
     return steps;

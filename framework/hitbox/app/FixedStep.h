@@ -14,7 +14,8 @@ namespace hitbox
 class FixedStep
 {
 public:
-    explicit FixedStep(float stepSeconds = 1.f / 120.f, float maxFrameSeconds = 0.25f);
+    // Steps of `stepSeconds` (every program passes hitbox::stepSeconds, App.h).
+    explicit FixedStep(float stepSeconds, float maxFrameSeconds = 0.25f);
 
     // Add one frame's time; returns how many steps to simulate now (0 or more).
     // Negative or NaN frame times count as 0.

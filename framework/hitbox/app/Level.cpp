@@ -9,7 +9,7 @@ void Level::renderDebug(DebugRenderer&) const {}
 
 sf::Vector2f Level::getWorldSize() const
 {
-    return {1200.f, 675.f};
+    return defaultWorldSize;
 }
 
 std::string Level::getHelpText() const

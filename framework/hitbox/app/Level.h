@@ -1,8 +1,8 @@
 // Level.h - the base class of every Hitbox program: a simulation you can also draw.
 //
-// hitbox::App runs a Level: it calls handleInput and update at a fixed step (120 times a
-// second, whatever the frame rate), and render once per frame. Keep the rules in update
-// and make render only read state: then tests can run the level with no window at all.
+// hitbox::App runs a Level: it calls handleInput and update at a fixed step (stepsPerSecond
+// times a second, App.h, whatever the frame rate), and render once per frame. Keep the rules in
+// update and make render only read state: then tests can run the level with no window at all.
 //
 // (The course's old framework called its level base "BaseLevel"; that class still exists
 // for old lab code, see BaseLevel.h. This one lives in namespace hitbox so a course lab's
@@ -23,6 +23,10 @@ namespace hitbox
 {
 class DebugRenderer;
 
+// The game area of every program whose level does not override getWorldSize(), in world
+// pixels (16:9, the shape of a lecture-hall projector).
+inline const sf::Vector2f defaultWorldSize{1200.f, 675.f};
+
 class Level
 {
 public:
@@ -37,7 +41,8 @@ public:
     // Draw collision shapes, velocities and contacts (F1 shows them).
     virtual void renderDebug(DebugRenderer& debug) const;
 
-    // The game area in world pixels; the window shows exactly this area, letterboxed.
+    // The game area in world pixels (defaultWorldSize unless overridden); the window shows
+    // exactly this area, letterboxed.
     virtual sf::Vector2f getWorldSize() const;
     // This program's keys for the on-screen help line, e.g. "W/S move  Space serve".
     virtual std::string getHelpText() const;

@@ -1,14 +1,15 @@
 #include "hitbox/objects/GameObject.h"
 
 #include <cmath>
-#include <limits>
 
-namespace
+hitbox::OptionalBox& hitbox::OptionalBox::operator=(const sf::FloatRect& box)
 {
-const float notSet = std::numeric_limits<float>::quiet_NaN();
+    sf::FloatRect::operator=(box);
+    isSet = true;
+    return *this;
 }
 
-GameObject::GameObject() : collisionBox(notSet, notSet, notSet, notSet) {}
+GameObject::GameObject() = default;
 
 void GameObject::handleInput(float) {}
 
@@ -53,7 +54,7 @@ void GameObject::setCollider(bool isColliderNow)
 
 void GameObject::setCollisionBox(float left, float top, float width, float height)
 {
-    collisionBox = {left, top, width, height};
+    collisionBox = sf::FloatRect(left, top, width, height);
 }
 
 void GameObject::setCollisionBox(const sf::FloatRect& box)
@@ -63,14 +64,12 @@ void GameObject::setCollisionBox(const sf::FloatRect& box)
 
 void GameObject::clearCollisionBox()
 {
-    collisionBox = {notSet, notSet, notSet, notSet};
+    collisionBox = hitbox::OptionalBox();
 }
 
 sf::FloatRect GameObject::getLocalCollisionBox() const
 {
-    // A subclass may assign `collisionBox` directly, as old lab code does: any number in it
-    // counts as "set".
-    if (!std::isnan(collisionBox.left) || !std::isnan(collisionBox.width))
+    if (collisionBox.isSet)
         return collisionBox;
     const sf::Vector2f origin = getOrigin();
     return {-origin.x, -origin.y, getSize().x, getSize().y};

@@ -20,6 +20,19 @@ class RenderWindow;
 }
 class Input;
 
+namespace hitbox
+{
+// A collision box relative to the origin point, and whether one was given. Old lab code
+// assigns the box directly (`collisionBox = sf::FloatRect(...)`): that counts as given too.
+// Until then it reads as {0, 0, 0, 0}, as in the course's old framework.
+struct OptionalBox : sf::FloatRect
+{
+    bool isSet = false;
+
+    OptionalBox& operator=(const sf::FloatRect& box);
+};
+} // namespace hitbox
+
 class GameObject : public sf::RectangleShape
 {
 public:
@@ -73,8 +86,8 @@ public:
 protected:
     sf::Vector2f velocity;
     bool alive = true;
-    // Relative to the origin point. All NaN means "not set: use the whole shape".
-    sf::FloatRect collisionBox;
+    // Relative to the origin point. Not set (isSet false): the whole shape is used.
+    hitbox::OptionalBox collisionBox;
     bool collider = true;
     Input* input = nullptr;
     sf::RenderWindow* window = nullptr;

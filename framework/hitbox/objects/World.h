@@ -1,4 +1,4 @@
-// World.h - all of seed 003's four steps for a level's objects in one call:
+// World.h - the four steps of collision handling for a level's objects, in one call:
 //   1. reduce the checks  - layers and masks, then the broadphase (cheap boxes only);
 //   2. game rules         - an optional callback can veto a pair before any exact test;
 //   3. the thorough test  - the Collision facade's exact test for the two shapes;

@@ -87,7 +87,7 @@ TEST(Task1NearestRayHit, TheLevelCastsFromThePlayerToTheMouseEveryStep)
     EXPECT_NEAR(level.getRay().end.x, 400.f, 0.01f);
 }
 
-TEST(Task2SweepAndSlide, StopsTouchingAWallInsteadOfPassingThrough)
+TEST(Task2MoveAndSlide, StopsTouchingAWallInsteadOfPassingThrough)
 {
     RayLevel level({{500.f, 0.f, 10.f, 675.f}}, {100.f, 300.f});
     level.setMoveDirection({1.f, 0.f});
@@ -97,7 +97,7 @@ TEST(Task2SweepAndSlide, StopsTouchingAWallInsteadOfPassingThrough)
     EXPECT_FALSE(overlapsAnySolid(level));
 }
 
-TEST(Task2SweepAndSlide, SlidesAlongAWallItIsPushedInto)
+TEST(Task2MoveAndSlide, SlidesAlongAWallItIsPushedInto)
 {
     // One long floor box; moving down-right keeps the sideways part of the speed.
     RayLevel level({{0.f, 600.f, 1200.f, 40.f}}, {100.f, 500.f});
@@ -110,7 +110,7 @@ TEST(Task2SweepAndSlide, SlidesAlongAWallItIsPushedInto)
     EXPECT_FALSE(overlapsAnySolid(level));
 }
 
-TEST(Task2SweepAndSlide, TheLabFieldIsNeverEntered)
+TEST(Task2MoveAndSlide, TheLabFieldIsNeverEntered)
 {
     RayLevel level;
     Input input;
@@ -130,7 +130,7 @@ TEST(Task2SweepAndSlide, TheLabFieldIsNeverEntered)
     }
 }
 
-TEST(Task3TimeOrder, SlidesOverTheSeamsOfATiledFloor)
+TEST(Task2MoveAndSlide, SlidesOverTheSeamsOfATiledFloor)
 {
     // x = 1000 is exactly on a seam: both tiles are touched at time 0 (a tie).
     RayLevel level(tiledFloor(), {1000.f, 568.f});
@@ -144,33 +144,48 @@ TEST(Task3TimeOrder, SlidesOverTheSeamsOfATiledFloor)
     EXPECT_FALSE(level.isStuck());
 }
 
-TEST(Task3TimeOrder, TheNearestContactIsHandledFirst)
+TEST(Task2MoveAndSlide, TheHitsAreKeptNearestFirst)
 {
-    RayLevel level(tiledFloor(), {1010.f, 568.f});
+    // Into a corner in one step: the wall (0.5 px away) is reached before the floor (1.5 px
+    // away), though the floor comes first in the list.
+    RayLevel level({{0.f, 600.f, 1200.f, 40.f}, {0.f, 0.f, 100.f, 700.f}}, {100.5f, 566.5f});
     level.setTimeOrder(true);
-    level.setMoveDirection({-1.f, 1.f}); // the left edge reaches a seam during these steps
-    bool sawTwoHits = false;
-    for (int step = 0; step < 40; ++step)
-    {
-        runWithMouse(level, {0.f, 0.f}, 1);
-        const std::vector<SolidHit>& hits = level.getLastHits();
-        for (std::size_t i = 1; i < hits.size(); ++i)
-        {
-            sawTwoHits = true;
-            EXPECT_LE(hits[i - 1].time, hits[i].time);
-        }
-    }
-    EXPECT_TRUE(sawTwoHits);
+    level.setMoveDirection({-1.f, 1.f});
+    runWithMouse(level, {0.f, 0.f}, 1);
+    const std::vector<hitbox::Hit>& hits = level.getLastHits();
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_EQ(hits[0].normal, sf::Vector2f(1.f, 0.f)) << "the wall first";
+    EXPECT_EQ(hits[1].normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_LE(hits[0].time, hits[1].time);
+    EXPECT_FALSE(overlapsAnySolid(level));
 }
 
-TEST(Task3TimeOrder, WithoutTimeOrderTheBoxSnagsOnTheFirstSeam)
+TEST(Task2MoveAndSlide, WithoutTimeOrderTheBoxSnagsOnTheFirstSeam)
 {
-    // The problem the fix solves (seed 004): handling the next tile's corner first stops
-    // the player at the seam.
+    // The problem the time order solves (javidx9, "Arbitrary Rectangle Collision Detection &
+    // Resolution"): handling the next tile's corner first stops the player at the seam.
     RayLevel level(tiledFloor(), {1010.f, 568.f});
     level.setTimeOrder(false);
     level.setMoveDirection({-1.f, 1.f});
     runWithMouse(level, {0.f, 0.f}, 240);
     EXPECT_NEAR(level.getPlayer().getPosition().x, 1000.f, 0.01f);
-    EXPECT_TRUE(level.isStuck());
+}
+
+TEST(Task3Stuck, AStepThatHardlyMovesIsStuck)
+{
+    EXPECT_TRUE(isSnagged({1.77f, 1.77f}, {0.f, 0.f}));  // pressed into a corner
+    EXPECT_TRUE(isSnagged({1.77f, 1.77f}, {0.2f, 0.f})); // a tenth of the way is not moving
+    EXPECT_TRUE(isSnagged({-2.5f, 0.f}, {0.f, -0.24f})); // any direction
+}
+
+TEST(Task3Stuck, SlidingIsNotStuck)
+{
+    // Pressed diagonally into a floor: only the sideways part moves, and that is moving.
+    EXPECT_FALSE(isSnagged({-1.77f, 1.77f}, {-1.77f, 0.f}));
+    EXPECT_FALSE(isSnagged({2.5f, 0.f}, {0.26f, 0.f}));
+}
+
+TEST(Task3Stuck, NotWantingToMoveIsNeverStuck)
+{
+    EXPECT_FALSE(isSnagged({0.f, 0.f}, {0.f, 0.f}));
 }

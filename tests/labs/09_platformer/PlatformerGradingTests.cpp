@@ -327,7 +327,7 @@ TEST(DebugView, ShowsTestedTilesPointsAndContacts)
     EXPECT_GT(debug.getVertices().getVertexCount(), 100u);
 }
 
-TEST(CollisionPoints, AreCheckedSidesFirstThenCornersInSeed001sOrder)
+TEST(CollisionPoints, AreCheckedSidesFirstThenCorners)
 {
     const char* expected[] = {"bottom",   "top",       "left",        "right",
                               "left top", "right top", "left bottom", "right bottom"};
