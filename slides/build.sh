@@ -94,7 +94,7 @@ $draft && include+=(--allow-missing)
 for folder in "$decks" "$here/dist" "$here/build/notes"; do
     mkdir -p "$folder/figures/generated"
     cp "$here"/figures/*.svg "$folder/figures/"
-    cp "$here"/figures/generated/*.png "$folder/figures/generated/" 2>/dev/null || true
+    cp "$here"/figures/generated/*.png "$here"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
 done
 echo "== navigation (deck-extras.mjs)"
 extras=(node "$here/tools/deck-extras.mjs" --decks "$decks" --notes "$here/build/notes" --dist "$here/dist")

@@ -13,6 +13,10 @@
 # - drawn twice, the same pixels: nothing run-dependent (a timing, a clock) is on it;
 # - drawn once more without the claimed arguments, different pixels: the claimed part is
 #   really drawn (a quadtree figure that looks the same as the default grid fails).
+# An output NAME.apng is an animation: an argument frames=FIRST:LAST:STEP draws the picture
+# after FIRST, FIRST+STEP, ... LAST fixed steps (--frames), and ffmpeg joins them into
+# NAME.apng (for the HTML, looping) and an onion-skin still NAME.png (every frame laid over
+# the others, lightest wins: for the PDF). Both are checked the same way as a picture.
 # A missing program, a failed run, an empty PNG or a failed check fails, naming the figure;
 # with --allow-missing (drafts only) they are reported and skipped.
 set -euo pipefail
@@ -58,11 +62,40 @@ draw() {
         if [[ "$argument" == crop=* ]]; then crop="${argument#crop=}"; else passed+=("$argument"); fi
     done
     rm -f "$target"
-    "$executable" --screenshot "$target" "${passed[@]}" >"$log" 2>&1 || return 1
+    "$executable" --screenshot "$target" "${passed[@]}" </dev/null >"$log" 2>&1 || return 1
     if [[ -n "$crop" && -s "$target" ]]; then
-        ffmpeg -loglevel error -y -i "$target" -vf "crop=$crop" "$target.crop.png" >>"$log" 2>&1 || return 1
+        ffmpeg -nostdin -loglevel error -y -i "$target" -vf "crop=$crop" "$target.crop.png" >>"$log" 2>&1 || return 1
         mv "$target.crop.png" "$target"
     fi
+}
+
+# animate EXECUTABLE TARGET.apng LOG FRAMES ARGUMENTS...: the frames of an animation, joined
+# into TARGET.apng, and its onion-skin still TARGET.png (same name, .png).
+animate() {
+    local executable="$1" target="$2" log="$3" frames="$4"
+    shift 4
+    local first last step frame count=0 folder="$target.frames"
+    IFS=: read -r first last step <<<"$frames"
+    rm -rf "$folder" && mkdir -p "$folder"
+    for ((frame = first; frame <= last; frame += step)); do
+        draw "$executable" "$folder/$(printf %03d $count).png" "$log" "$@" --frames "$frame" || return 1
+        count=$((count + 1))
+    done
+    ffmpeg -nostdin -loglevel error -y -framerate 2 -i "$folder/%03d.png" -plays 0 -f apng "$target" >>"$log" 2>&1 || return 1
+    # Onion skin: each frame blended over the ones before it, the lighter pixel kept.
+    local inputs=() graph="" previous="[0:v]" i
+    for ((i = 0; i < count; i++)); do inputs+=(-i "$folder/$(printf %03d $i).png"); done
+    for ((i = 1; i < count; i++)); do
+        graph+="${previous}[$i:v]blend=all_mode=lighten[m$i];"
+        previous="[m$i]"
+    done
+    if [[ $count -gt 1 ]]; then
+        ffmpeg -nostdin -loglevel error -y "${inputs[@]}" -filter_complex "${graph%;}" -map "$previous" \
+            "${target%.apng}.png" >>"$log" 2>&1 || return 1
+    else
+        cp "$folder/000.png" "${target%.apng}.png"
+    fi
+    rm -rf "$folder"
 }
 
 failures=()
@@ -81,7 +114,22 @@ while IFS= read -r line; do
         failures+=("$name: program $program not found in $build_dir")
         continue
     fi
-    if ! draw "$executable" "$target" "$log" "${set_up[@]}" "${claims[@]}"; then
+    # An animation: the frames=FIRST:LAST:STEP argument names its frames.
+    paint=draw
+    if [[ "$name" == *.apng ]]; then
+        frames=""
+        kept=()
+        for argument in "${set_up[@]}"; do
+            if [[ "$argument" == frames=* ]]; then frames="${argument#frames=}"; else kept+=("$argument"); fi
+        done
+        if [[ -z "$frames" ]]; then
+            failures+=("$name: an animation needs frames=FIRST:LAST:STEP")
+            continue
+        fi
+        set_up=("$frames" "${kept[@]}")
+        paint=animate
+    fi
+    if ! $paint "$executable" "$target" "$log" "${set_up[@]}" "${claims[@]}"; then
         failures+=("$name: $program $arguments $claimed failed (see $log)")
         continue
     fi
@@ -90,20 +138,20 @@ while IFS= read -r line; do
         continue
     fi
     again="$out_dir/.again-$name"
-    if ! draw "$executable" "$again" "$log" "${set_up[@]}" "${claims[@]}" ||
+    if ! $paint "$executable" "$again" "$log" "${set_up[@]}" "${claims[@]}" ||
         ! cmp -s "$target" "$again"; then
         failures+=("$name: two runs drew different pictures: run-dependent text (a timing?) or state on the figure")
         rm -f "$again"
         continue
     fi
     if [[ ${#claims[@]} -gt 0 ]]; then
-        if ! draw "$executable" "$again" "$log" "${set_up[@]}" || cmp -s "$target" "$again"; then
+        if ! $paint "$executable" "$again" "$log" "${set_up[@]}" || cmp -s "$target" "$again"; then
             failures+=("$name: claims '${claims[*]}' but looks the same without it")
             rm -f "$again"
             continue
         fi
     fi
-    rm -f "$again" "$log"
+    rm -f "$again" "$log" "${again%.apng}.png"
     made=$((made + 1))
 done <"$list"
 

@@ -151,6 +151,17 @@ cat >"$programs/deaf" <<'SH'
 while [[ $# -gt 0 ]]; do [[ "$1" == --screenshot ]] && out="$2"; shift; done
 echo "the same picture" >"$out"
 SH
+cat >"$programs/painter" <<'SH'
+#!/usr/bin/env bash
+# Paints a real PNG whose colour follows --frames: an animation's frames differ.
+frames=0
+while [[ $# -gt 0 ]]; do
+    case "$1" in --screenshot) out="$2"; shift ;; --frames) frames="$2"; shift ;; esac
+    shift
+done
+ffmpeg -nostdin -loglevel error -y -f lavfi -i "color=c=0x$(printf '%02x' $((frames % 256)))4080:s=16x16" \
+    -frames:v 1 "$out"
+SH
 chmod +x "$programs"/*
 
 figure_case() {
@@ -173,6 +184,12 @@ figure_case figure-with-timing "two runs drew different pictures" "shot.png prog
 figure_case figure-claim-not-drawn "claims '--debug' but looks the same without it" \
     "shot.png programs/deaf --frames 2 | --debug"
 figure_case figure-program-missing "program programs/nothing not found" "shot.png programs/nothing --frames 2"
+
+figure_case animation-without-frames "an animation needs frames=FIRST:LAST:STEP" \
+    "moving.apng programs/painter --debug"
+if command -v ffmpeg >/dev/null; then
+    figure_case animation-clean-passes "" "moving.apng programs/painter frames=10:50:20"
+fi
 
 echo "slides tests: $passed passed, $failed failed"
 [[ $failed -eq 0 ]]

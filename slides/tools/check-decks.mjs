@@ -157,7 +157,8 @@ function main() {
         const found = visible.match(word);
         if (found) problems.push(`${where}: words for insiders on the slide: "${found[0]}"`);
       }
-      for (const image of slide.text.matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g)) {
+      const images = [...slide.text.matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g), ...slide.text.matchAll(/<img\b[^>]*\bsrc="([^"]+)"/g)];
+      for (const image of images) {
         if (/^https?:/.test(image[1])) problems.push(`${where}: image ${image[1]} is on the network`);
         else if (!fs.existsSync(path.join(options.decks, image[1])))
           problems.push(`${where}: image ${image[1]} does not exist`);
