@@ -108,19 +108,18 @@ s+='</svg>\n'
 open('swept-false-positive.svg','w').write(s)
 
 # Reflection as the (v.n)n split
-s=HEAD.format(w=600,h=520)+ARROW
+s=HEAD.format(w=600,h=480)+ARROW
 s+='<!-- Reflection: v splits into (v·n)n along the normal and the rest along the surface. -->\n'
 P=(300,380); v=(170,200)
 A=(P[0]-v[0],P[1]-v[1])
 s+='<rect x="30" y="380" width="540" height="50" fill="#888" fill-opacity="0.3"/>\n'+line((30,380),(570,380),"#555")
-s+=line(A,(P[0]-4,P[1]-4),"#2f6fd0",6,arrow=True)+text((A[0]+30,A[1]+60),"v","#2f6fd0",' font-size="34" font-weight="bold"')
-s+=line(A,(A[0]+v[0],A[1]),"#1e8449",4,"10 6",arrow=True)+text((A[0]+10,A[1]-12),"v − (v·n)n: kept","#1e8449")
+s+=line(A,(P[0]-4,P[1]-4),"#2f6fd0",6,arrow=True)+text((150,320),"v","#2f6fd0",' font-size="36" font-weight="bold"')
+s+=line(A,(A[0]+v[0],A[1]),"#1e8449",4,"10 6",arrow=True)+text((A[0]-20,A[1]-16),"v − (v·n)n: kept","#1e8449")
 s+=line((A[0]+v[0],A[1]),(P[0],P[1]-6),"#c0392b",4,"10 6",arrow=True)
-s+=text((P[0]+12,A[1]+90),"(v·n)n","#c0392b")
+s+=text((P[0]+10,A[1]+40),"(v·n)n","#c0392b")
 R=(P[0]+v[0],P[1]-v[1])
-s+=line(P,R,"#8e44ad",6,arrow=True)+text((R[0]-70,R[1]+70),"v′","#8e44ad",' font-size="34" font-weight="bold"')
-s+=line(P,(P[0],P[1]-90),"#555",3,arrow=True)+text((P[0]-34,P[1]-96),"n","#555",' font-weight="bold"')
-s+=text((20,470),"v′ = v − (1+e)(v·n)n")
-s+=text((20,505),"e = 1: the red part reversed; e = 0: removed")
+s+=line(P,R,"#8e44ad",6,arrow=True)+text((430,320),"v′","#8e44ad",' font-size="36" font-weight="bold"')
+s+=line((530,380),(530,300),"#555",3,arrow=True)+text((545,320),"n","#555",' font-weight="bold"')
+s+=text((20,465),"v′ = v − (1+e)(v·n)n")
 s+='</svg>\n'
 open('reflect-split.svg','w').write(s)
