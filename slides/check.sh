@@ -10,6 +10,8 @@
 #    24px (16 lines of at most 78 characters), balanced brackets in every excerpt, no words
 #    for insiders on the slides, images present, offline HTML, and every concept listed in
 #    concepts.txt on at least one slide.
+# 4. check-layout.mjs: in headless Chromium, no slide's content runs below the slide
+#    (skipped, saying so, without Chromium).
 # BUILD_DIR: where the programs are (default: build.sh builds the figure programs alone into
 # build/slides).
 set -euo pipefail
@@ -19,4 +21,5 @@ here="$(cd "$(dirname "$0")" && pwd)"
 "$here/build.sh" "$@" --no-pdf
 node "$here/tools/check-decks.mjs" --decks "$here/build/decks" --dist "$here/dist" \
     --concepts "$here/concepts.txt" --src "$here/src"
+node "$here/tools/check-layout.mjs" --dist "$here/dist"
 echo "slides: all checks passed"

@@ -191,5 +191,24 @@ if command -v ffmpeg >/dev/null; then
     figure_case animation-clean-passes "" "moving.apng programs/painter frames=10:50:20"
 fi
 
+# Layout: a slide whose content runs below its bottom edge, measured in Chromium.
+if [[ -x "$slides/node_modules/.bin/marp" && -x "${CHROME_PATH:-/usr/bin/chromium}" ]]; then
+    layout="$work/layout"
+    mkdir -p "$layout/src" "$layout/dist"
+    {
+        printf -- '---\nmarp: true\ntheme: hitbox\n---\n\n# Fits\n\n- one line\n\n---\n\n# Too long\n\n'
+        for i in $(seq 1 20); do echo "- bullet number $i"; done
+    } >"$layout/src/01-layout.md"
+    (cd "$slides" && node_modules/.bin/marp --config-file marp.config.mjs --input-dir "$layout/src" \
+        --output "$layout/dist" --html >/dev/null 2>&1)
+    status=0
+    output="$(node "$slides/tools/check-layout.mjs" --dist "$layout/dist" 2>&1)" || status=$?
+    if [[ $status -ne 0 && "$output" == *"01-layout.html slide 2:"* && "$output" != *"slide 1:"* ]]; then
+        pass layout-content-below-the-slide
+    else
+        fail "layout-content-below-the-slide: expected slide 2 (only) to fail, got (exit $status): $output"
+    fi
+fi
+
 echo "slides tests: $passed passed, $failed failed"
 [[ $failed -eq 0 ]]
