@@ -133,7 +133,9 @@ function slideStyleFolder(root) {
 // An excerpt formatted to fit the slide (C++ only; lines that already fit stay as they are).
 function fitToSlide(code, language, styleFolder) {
   if (language !== 'cpp' || code.every((line) => line.length <= slideColumns)) return code;
-  const formatted = execFileSync('clang-format', [`--assume-filename=${path.join(styleFolder, 'excerpt.cpp')}`],
+  // Only the lines that are too long are formatted (--lines): the others stay as written.
+  const tooLong = code.flatMap((line, index) => (line.length > slideColumns ? [`--lines=${index + 1}:${index + 1}`] : []));
+  const formatted = execFileSync('clang-format', [`--assume-filename=${path.join(styleFolder, 'excerpt.cpp')}`, ...tooLong],
     { input: code.join('\n') + '\n', encoding: 'utf8' });
   return dedent(formatted.split('\n'));
 }
