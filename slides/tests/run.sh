@@ -53,9 +53,21 @@ int sumOf(const int* values, int count)
 // [slide:tall]
 void tall()
 {
-    int a1 = 1; int a2 = 2; int a3 = 3; int a4 = 4; int a5 = 5; int a6 = 6;
-    int a7 = 7; int a8 = 8; int a9 = 9; int a10 = 10; int a11 = 11; int a12 = 12;
-    int a13 = 13; int a14 = 14; int a15 = 15; int a16 = 16; int a17 = 17;
+    int a1 = 1;
+    int a2 = 2;
+    int a3 = 3;
+    int a4 = 4;
+    int a5 = 5;
+    int a6 = 6;
+    int a7 = 7;
+    int a8 = 8;
+    int a9 = 9;
+    int a10 = 10;
+    int a11 = 11;
+    int a12 = 12;
+    int a13 = 13;
+    int a14 = 14;
+    int a15 = 15;
 }
 // [/slide]
 CPP
