@@ -2,13 +2,18 @@
 # build.sh [BUILD_DIR] [--draft] [--no-pdf] - builds every lecture deck. The one command.
 #
 # 1. installs what it needs: Node.js and npm (Debian's nodejs npm, when missing) and the
-#    pinned Marp CLI (npm ci, from package-lock.json);
-# 2. builds the project's programs into build/debug when no BUILD_DIR with programs is given;
-# 3. draws the figures with those programs (make-figures.sh, list in figures.txt);
-# 4. copies the named code regions into the decks (tools/include-regions.mjs);
+#    pinned Marp CLI (npm ci, from package-lock.json, with npm's cache in
+#    /var/cache/hitbox/npm when that folder can be written, so CI downloads it once);
+# 2. builds the programs that draw figures, and only those, into build/slides (a release
+#    build without the tests and benchmarks), unless BUILD_DIR already holds them;
+# 3. draws the figures with those programs (make-figures.sh, list in figures.txt) and checks
+#    that each is the same on every run and shows what it claims;
+# 4. copies the named code regions into the decks (tools/include-regions.mjs), formatted to
+#    fit the slide, and adds the navigation (tools/deck-extras.mjs: previous/next lecture
+#    slide, notes decks, dist/index.html with every lecture's outline);
 # 5. converts every deck in src/ to HTML in slides/dist/ (offline: formulas as SVG, images
-#    beside the HTML), and to PDF as well when Chromium is installed (/usr/bin/chromium or
-#    CHROME_PATH).
+#    beside the HTML), and, when Chromium is installed (/usr/bin/chromium or CHROME_PATH),
+#    to PDF with bookmarks (NN-name.pdf) and the lecturer's notes (NN-name-notes.pdf).
 # --draft: a missing region or figure is reported and shown as a placeholder instead of
 #          failing (for writing decks before the code they quote exists).
 # --no-pdf: HTML only.
@@ -43,20 +48,26 @@ if ! command -v xvfb-run >/dev/null; then
 fi
 cd "$here"
 # npm ci again only when the lockfile changed since the last install.
+npm_cache=(--cache "${HITBOX_NPM_CACHE:-/var/cache/hitbox/npm}" --prefer-offline)
+mkdir -p "${HITBOX_NPM_CACHE:-/var/cache/hitbox/npm}" 2>/dev/null || npm_cache=()
 if [[ ! -f node_modules/.package-lock.json || package-lock.json -nt node_modules/.package-lock.json ]]; then
     echo "== npm ci (Marp CLI, pinned in package-lock.json)"
-    npm ci --no-audit --no-fund --loglevel=error
+    npm ci --no-audit --no-fund --loglevel=error "${npm_cache[@]}"
 fi
 marp=("$here/node_modules/.bin/marp" --config-file "$here/marp.config.mjs")
 
 # --- 2. The programs that draw the figures ---------------------------------------------------
+# Only the programs named in figures.txt, in a folder of their own: no tests, no benchmarks.
+figure_targets() { awk '!/^#/ && NF { n = split($2, part, "/"); print part[n] }' "$here/figures.txt" | sort -u; }
 if [[ -z "$build_dir" ]]; then
-    build_dir="$repo/build/debug"
-    if [[ ! -x "$build_dir/framework/sandbox" ]]; then
-        echo "== building the project's programs into build/debug"
-        [[ -x "$repo/scripts/install-deps.sh" ]] && "$repo/scripts/install-deps.sh"
-        (cd "$repo" && cmake --preset debug && cmake --build --preset debug)
-    fi
+    build_dir="$repo/build/slides"
+    echo "== building the programs that draw the figures into build/slides"
+    [[ -x "$repo/scripts/install-deps.sh" && ! -f "$build_dir/CMakeCache.txt" ]] && "$repo/scripts/install-deps.sh"
+    export CMAKE_CXX_COMPILER_LAUNCHER="${CMAKE_CXX_COMPILER_LAUNCHER:-$(command -v ccache || true)}"
+    cmake -S "$repo" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DHITBOX_BUILD_TESTS=OFF \
+        -DHITBOX_BUILD_BENCHMARKS=OFF >/dev/null
+    mapfile -t targets < <(figure_targets)
+    cmake --build "$build_dir" --parallel 2 --target "${targets[@]}"
 fi
 if [[ ! -d "$build_dir" ]]; then
     echo "build.sh: no build folder $build_dir" >&2
@@ -80,36 +91,28 @@ include=(node "$here/tools/include-regions.mjs" --root "$repo" --src "$here/src"
 $draft && include+=(--allow-missing)
 (cd "$here" && "${include[@]}")
 # Images are relative links: they sit beside the decks and beside the HTML.
-for folder in "$decks" "$here/dist"; do
+for folder in "$decks" "$here/dist" "$here/build/notes"; do
     mkdir -p "$folder/figures/generated"
     cp "$here"/figures/*.svg "$folder/figures/"
-    cp "$here"/figures/generated/*.png "$folder/figures/generated/" 2>/dev/null || true
+    cp "$here"/figures/generated/*.png "$here"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
 done
+echo "== navigation (deck-extras.mjs)"
+extras=(node "$here/tools/deck-extras.mjs" --decks "$decks" --notes "$here/build/notes" --dist "$here/dist")
+"${extras[@]}"
 
 # --- 5. HTML (always) and PDF (with Chromium) ----------------------------------------------------
 echo "== HTML (Marp)"
 "${marp[@]}" --input-dir "$decks" --output "$here/dist" --html
 chrome="${CHROME_PATH:-/usr/bin/chromium}"
 if $pdf && [[ -x "$chrome" ]]; then
-    echo "== PDF (Marp + $chrome)"
+    echo "== PDF with bookmarks, and the speaker notes (Marp + $chrome)"
     # Local images need --allow-local-files, or they are silently left out of the PDF.
     CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$decks" --output "$here/dist" --pdf \
-        --allow-local-files
+        --pdf-outlines --allow-local-files
+    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$here/build/notes" --output "$here/dist" \
+        --pdf --pdf-outlines --allow-local-files
+    "${extras[@]}" --index-only 1 # the index again, now with the PDFs
 elif $pdf; then
     echo "== PDF skipped: no Chromium (apt-get install chromium, or set CHROME_PATH)"
 fi
-# An index page: one link per deck (and its PDF when there is one).
-{
-    echo '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8"><title>Hitbox lectures</title>'
-    echo '<style>body{font-family:sans-serif;font-size:22px;margin:40px}li{margin:8px 0}</style></head>'
-    echo '<body><h1>Hitbox: collision detection lectures</h1><ol>'
-    for deck in "$here"/src/*.md; do
-        name="$(basename "$deck" .md)"
-        title="$(sed -n 's/^title: *"\{0,1\}\([^"]*\)"\{0,1\}$/\1/p' "$deck" | head -n 1)"
-        pdf_link=""
-        [[ -f "$here/dist/$name.pdf" ]] && pdf_link=" (<a href=\"$name.pdf\">PDF</a>)"
-        echo "<li><a href=\"$name.html\">${title:-$name}</a>$pdf_link</li>"
-    done
-    echo '</ol><p>Press P in a deck for the presenter view with speaker notes.</p></body></html>'
-} >"$here/dist/index.html"
 echo "slides: open slides/dist/index.html"

@@ -1,17 +1,25 @@
 #!/usr/bin/env bash
 # check.sh [BUILD_DIR] - the slides' checks, for CI (and before a lecture).
 #
-# Builds every deck to HTML with build.sh in strict mode, so it fails when a code region
-# named by a deck does not exist, when a figure in figures.txt cannot be drawn (a missing
-# program or an empty PNG), or when a deck does not convert. Then check-decks.mjs checks
-# speaker notes on every slide, at most 16 code lines a slide, images present, offline
-# HTML, and that every concept listed in concepts.txt (the ideas of the seed documents)
-# is on at least one slide. BUILD_DIR: where the programs are (default build/debug,
-# built when missing).
+# 1. tests/run.sh: the checks themselves are shown to catch each mistake they exist for
+#    (a defect planted in a small deck or figure list must fail, a clean one pass).
+# 2. build.sh in strict mode (HTML only): fails when a code region named by a deck does not
+#    exist or lacks its key line, when a figure in figures.txt cannot be drawn, differs
+#    between two runs or does not show what it claims, or when a deck does not convert.
+# 3. check-decks.mjs on the built decks: speaker notes on every slide, code that fits at
+#    24px (16 lines of at most 78 characters), balanced brackets in every excerpt, no words
+#    for insiders on the slides, images present, offline HTML, and every concept listed in
+#    concepts.txt on at least one slide.
+# 4. check-layout.mjs: in headless Chromium, no slide's content runs below the slide
+#    (skipped, saying so, without Chromium).
+# BUILD_DIR: where the programs are (default: build.sh builds the figure programs alone into
+# build/slides).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 
+"$here/tests/run.sh"
 "$here/build.sh" "$@" --no-pdf
 node "$here/tools/check-decks.mjs" --decks "$here/build/decks" --dist "$here/dist" \
     --concepts "$here/concepts.txt" --src "$here/src"
+node "$here/tools/check-layout.mjs" --dist "$here/dist"
 echo "slides: all checks passed"

@@ -64,6 +64,7 @@ sf::Vector2f PlatformerLevel::pointOn(const sf::FloatRect& box, const CollisionP
 }
 // [/slide]
 
+// [slide:platformer-least-penetration]
 hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector2f where,
                                          const sf::FloatRect& tile)
 {
@@ -81,7 +82,6 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector
     if (point.side.x == 0.f)
         return pushY;
 
-    // [slide:platformer-least-penetration]
     // BEGIN TASK 2: push a corner out along the axis of least penetration
     // A corner cannot tell whether it came in from above or from the side. The shallower
     // way out is nearly always the way it came in. Ties: the x axis.
@@ -89,8 +89,8 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector
     // STARTER TASK 2
     // return hitbox::Contact{}; // for now a corner inside a tile is ignored
     // END TASK 2
-    // [/slide]
 }
+// [/slide]
 
 PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
 {

@@ -152,12 +152,14 @@ sf::Vector2f TileMap::getSizeInPixels() const
     return {static_cast<float>(columns) * tileSize, static_cast<float>(rows) * tileSize};
 }
 
+// [slide:tile-lookup]
 bool TileMap::isSolid(int column, int row) const
 {
     if (column < 0 || row < 0 || column >= columns || row >= rows)
         return false;
     return tiles[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] == '#';
 }
+// [/slide]
 
 sf::FloatRect TileMap::tileBox(int column, int row) const
 {

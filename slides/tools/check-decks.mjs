@@ -4,8 +4,12 @@
 //     node check-decks.mjs --decks build/decks --dist dist --concepts concepts.txt --src src
 //
 // - every slide has speaker notes (an HTML comment that is not a Marp directive);
-// - no slide shows more code than fits at lecture-hall size (16 lines, long lines counted
-//   as the screen lines they wrap to);
+// - no slide shows more code than fits at lecture-hall size: 16 lines, and no line longer
+//   than the 78 characters that fit at the theme's 24px (code never shrinks or wraps);
+// - every code excerpt has balanced brackets ( ) [ ] { } outside strings and comments, so
+//   an excerpt cut in the middle of a statement fails;
+// - no words for insiders on what the students see (slides and code, not the notes):
+//   the course's internal reference documents ("seed 002"), "old course code", "last year";
 // - every image a deck links to exists beside it;
 // - every deck in src/ became an HTML file, and no HTML file loads anything from the
 //   network (the decks must work offline in a lecture hall);
@@ -14,10 +18,20 @@
 import fs from 'node:fs';
 import path from 'node:path';
 
-// How much code fits under a heading, in screen lines: 16 lines of 78 characters at the
-// theme's 24px, or 19 lines of 98 characters on a `wide-code` slide (20px). A longer source
-// line wraps and takes more than one screen line.
-const codeFit = { normal: { lines: 16, columns: 78 }, wide: { lines: 19, columns: 98 } };
+// How much code fits under a heading at the theme's 24px: 16 lines of 78 characters.
+// include-regions.mjs formats every excerpt to this width with the project's clang-format.
+const codeFit = { lines: 16, columns: 78 };
+// Words for the course team, never for students: the internal reference documents are
+// called seeds, and "old"/"last year's" material is not the students' business. Checked on
+// everything a student sees (headings, bullets, code), not on the speaker notes.
+const insiderWords = [
+  /\bseeds?\s*(?:documents?\s*)?0\d\d\b/i,
+  /\bseed\s+(?:documents?|files?|ideas?)\b/i,
+  /\b(?:the|our|course's|course)\s+seeds?\b/i,
+  /\bold course(?:'s)?\s+(?:code|lecture|framework|slides)\b/i,
+  /\bthe old framework\b/i,
+  /\blast year'?s?\b/i,
+];
 // Marp's directives (<!-- _class: lead -->, <!-- paginate: false -->); any other comment is
 // a speaker note, even one that starts with "Next:".
 const directive = /^\s*_?(class|paginate|header|footer|theme|style|size|math|headingDivider|backgroundColor|backgroundImage|backgroundPosition|backgroundRepeat|backgroundSize|color|marp|title|description|author|image|keywords|url|transition|lang)\s*:/;
@@ -51,16 +65,70 @@ function slidesOf(markdown) {
   return slides.map((text, index) => ({ number: index + 1, text })).filter((s) => s.text.trim() !== '');
 }
 
-// Screen lines of code on a slide, and how many fit.
-function codeLines(text) {
-  const fit = /<!--\s*_class:\s*wide-code\s*-->/.test(text) ? codeFit.wide : codeFit.normal;
-  let count = 0;
-  let inFence = false;
+// The code blocks of a slide: [{language, lines}].
+function codeBlocks(text) {
+  const blocks = [];
+  let current = null;
   for (const line of text.split('\n')) {
-    if (/^\s*```/.test(line)) inFence = !inFence;
-    else if (inFence) count += Math.max(1, Math.ceil(line.length / fit.columns));
+    const fence = line.match(/^\s*```\s*(\S*)/);
+    if (fence && !current) current = { language: fence[1], lines: [] };
+    else if (fence) {
+      blocks.push(current);
+      current = null;
+    } else if (current) current.lines.push(line);
   }
-  return { count, fit: fit.lines };
+  return blocks;
+}
+
+// The first bracket problem of a C-like excerpt, or null: strings, character literals and
+// comments are skipped, every ( [ { must close in order.
+function bracketProblem(lines) {
+  const source = lines.join('\n');
+  const closing = { ')': '(', ']': '[', '}': '{' };
+  const stack = [];
+  let line = 1;
+  for (let i = 0; i < source.length; i++) {
+    const c = source[i];
+    if (c === '\n') line++;
+    else if (c === '/' && source[i + 1] === '/') {
+      while (i < source.length && source[i] !== '\n') i++;
+      i--;
+    } else if (c === '/' && source[i + 1] === '*') {
+      const end = source.indexOf('*/', i + 2);
+      line += (source.slice(i, end < 0 ? source.length : end).match(/\n/g) || []).length;
+      i = end < 0 ? source.length : end + 1;
+    } else if (c === '"' || c === "'") {
+      let j = i + 1;
+      while (j < source.length && source[j] !== c && source[j] !== '\n') j += source[j] === '\\' ? 2 : 1;
+      i = j;
+    } else if ('([{'.includes(c)) stack.push({ c, line });
+    else if (c in closing) {
+      const open = stack.pop();
+      if (!open) return `'${c}' on code line ${line} closes nothing`;
+      if (open.c !== closing[c]) return `'${c}' on code line ${line} closes '${open.c}' of line ${open.line}`;
+    }
+  }
+  if (stack.length) return `'${stack[stack.length - 1].c}' on code line ${stack[stack.length - 1].line} is never closed (an excerpt cut short?)`;
+  return null;
+}
+
+// Problems with the code of one slide.
+function codeProblems(text) {
+  const problems = [];
+  let count = 0;
+  for (const block of codeBlocks(text)) {
+    count += block.lines.length;
+    block.lines.forEach((line, index) => {
+      if (line.length > codeFit.columns)
+        problems.push(`code line ${index + 1} has ${line.length} characters (at most ${codeFit.columns} fit at 24px): ${line.trim()}`);
+    });
+    if (/^(cpp|c\+\+|c|js|javascript|cmake)?$/i.test(block.language)) {
+      const problem = bracketProblem(block.lines);
+      if (problem) problems.push(`unbalanced brackets: ${problem}`);
+    }
+  }
+  if (count > codeFit.lines) problems.push(`${count} lines of code (at most ${codeFit.lines} fit)`);
+  return problems;
 }
 
 function hasNotes(text) {
@@ -83,9 +151,14 @@ function main() {
     for (const slide of slidesOf(markdown)) {
       const where = `${deck} slide ${slide.number}`;
       if (!hasNotes(slide.text)) problems.push(`${where}: no speaker notes (an HTML comment)`);
-      const code = codeLines(slide.text);
-      if (code.count > code.fit) problems.push(`${where}: ${code.count} screen lines of code (at most ${code.fit} fit)`);
-      for (const image of slide.text.matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g)) {
+      for (const problem of codeProblems(slide.text)) problems.push(`${where}: ${problem}`);
+      const visible = visibleText(slide.text);
+      for (const word of insiderWords) {
+        const found = visible.match(word);
+        if (found) problems.push(`${where}: words for insiders on the slide: "${found[0]}"`);
+      }
+      const images = [...slide.text.matchAll(/!\[[^\]]*\]\(([^)\s]+)\)/g), ...slide.text.matchAll(/<img\b[^>]*\bsrc="([^"]+)"/g)];
+      for (const image of images) {
         if (/^https?:/.test(image[1])) problems.push(`${where}: image ${image[1]} is on the network`);
         else if (!fs.existsSync(path.join(options.decks, image[1])))
           problems.push(`${where}: image ${image[1]} does not exist`);

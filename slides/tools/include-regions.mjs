@@ -6,8 +6,13 @@
 //
 //     <!-- include: framework/hitbox/geometry/Overlap.cpp#aabb-overlap -->
 //     <!-- include: #pong-serve -->            (path left out: any source file may hold it)
-//     <!-- include: #aabb-contact lines 1-16 -->  (part of a long region, for two slides)
+//     <!-- include: #aabb-contact lines 1-16 key "return" -->  (part of a long region)
+//     <!-- include: #sat-axis-test lines 11-17,24-25 key "push <= 0.f" -->  (parts, "// ...")
 //
+// Part of a region must name its key line: the excerpt has to contain that text, so an
+// excerpt cut before the line the slide is about fails the build (lines count in the region
+// as written, marker lines and lab starter code left out). Parts with a gap between them
+// are joined by a `// ...` line.
 // A region is marked in a source file by a line `// [slide:NAME]` and a line `// [/slide]`.
 // The include line becomes a fenced code block of the region: marker lines left out, the
 // common indentation removed. In lab solutions, the task markers and the starter code
@@ -19,10 +24,12 @@
 //     node include-regions.mjs --root REPO --src DIR --out DIR [--allow-missing] [--list]
 // --allow-missing  drafts only: a missing region becomes a visible placeholder (exit 0)
 // --list           print every region the decks use ("deck:line NAME FILE") and check them
+import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 
-const includeLine = /^\s*<!--\s*include:\s*([^#\s]*)#([A-Za-z0-9_.-]+)(?:\s+lines\s+(\d+)-(\d+))?\s*-->\s*$/;
+const includeLine = /^\s*<!--\s*include:\s*([^#\s]*)#([A-Za-z0-9_.-]+)(?:\s+lines\s+([\d,\s-]+?))?(?:\s+key\s+"([^"]+)")?\s*-->\s*$/;
 const regionStart = /^\s*\/\/\s*\[slide:([A-Za-z0-9_.-]+)\]\s*$/;
 const regionEnd = /^\s*\/\/\s*\[\/slide\]\s*$/;
 const taskBegin = /^\s*\/\/\s*BEGIN TASK\b/;
@@ -33,9 +40,11 @@ const skippedFolders = new Set(['.git', 'node_modules', 'slides', 'out', 'dist']
 const sourceExtensions = new Set(['.cpp', '.h', '.hpp', '.cc', '.inl', '.cmake']);
 // Code that does not fit a slide at lecture-hall size (see README "Writing a deck").
 const maxLinesPerSlide = 16;
-// Longer lines than this do not fit the theme's 24px code: such an excerpt gets the slide
-// class `wide-code` (20px, about 98 characters a line) instead of wrapping every line.
-const narrowCodeColumns = 78;
+// The theme's 24px code fits 78 characters a line (see theme/hitbox.css). The sources are
+// formatted for 100 columns, so a C++ excerpt is formatted again by the project's own
+// .clang-format with this column limit: the same tokens, comments re-wrapped, lines broken
+// where clang-format would break them. check-decks.mjs fails on any line still too long.
+const slideColumns = 78;
 
 function parseArguments(argv) {
   const options = { allowMissing: false, list: false };
@@ -112,6 +121,25 @@ function dedent(lines) {
   return result;
 }
 
+// The repository's .clang-format with the slide's column limit, in a folder of its own.
+function slideStyleFolder(root) {
+  const style = fs.readFileSync(path.join(root, '.clang-format'), 'utf8');
+  const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'hitbox-slide-style-'));
+  fs.writeFileSync(path.join(folder, '.clang-format'),
+    style.replace(/^ColumnLimit:.*$/m, `ColumnLimit: ${slideColumns}`));
+  return folder;
+}
+
+// An excerpt formatted to fit the slide (C++ only; lines that already fit stay as they are).
+function fitToSlide(code, language, styleFolder) {
+  if (language !== 'cpp' || code.every((line) => line.length <= slideColumns)) return code;
+  // Only the lines that are too long are formatted (--lines): the others stay as written.
+  const tooLong = code.flatMap((line, index) => (line.length > slideColumns ? [`--lines=${index + 1}:${index + 1}`] : []));
+  const formatted = execFileSync('clang-format', [`--assume-filename=${path.join(styleFolder, 'excerpt.cpp')}`, ...tooLong],
+    { input: code.join('\n') + '\n', encoding: 'utf8' });
+  return dedent(formatted.split('\n'));
+}
+
 function languageOf(file) {
   if (file.endsWith('.cmake') || file.endsWith('CMakeLists.txt')) return 'cmake';
   return 'cpp';
@@ -151,7 +179,7 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       output.push(line);
       return;
     }
-    const [, file, name, from, to] = match;
+    const [, file, name, ranges, key] = match;
     const where = `${deckLabel}:${i + 1}`;
     const found = index.find(file, name);
     if (found.error) {
@@ -160,19 +188,42 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       return;
     }
     let code = dedent(withoutTaskMarkers(found.region.lines));
-    if (from) {
-      const first = Number(from);
-      const last = Number(to);
-      if (first < 1 || last < first || last > code.length) {
-        problems.push(`${where}: lines ${from}-${to} outside region ${name} (${code.length} lines)`);
+    if (ranges) {
+      if (!key) {
+        problems.push(`${where}: part of region ${name} (lines ${ranges}) needs key "TEXT": the line the slide is about`);
         return;
       }
-      code = dedent(code.slice(first - 1, last));
+      const parts = [];
+      let previous = 0;
+      for (const range of ranges.split(',')) {
+        const bounds = range.trim().match(/^(\d+)-(\d+)$/);
+        const first = bounds ? Number(bounds[1]) : 0;
+        const last = bounds ? Number(bounds[2]) : 0;
+        if (!bounds || first < 1 || last < first || last > code.length || first <= previous) {
+          problems.push(`${where}: lines ${ranges} outside region ${name} (${code.length} lines) or out of order`);
+          return;
+        }
+        if (previous && first > previous + 1) parts.push(null); // the gap
+        for (let l = first; l <= last; l++) parts.push(code[l - 1]);
+        previous = last;
+      }
+      const kept = dedent(parts.map((l) => (l === null ? '' : l)));
+      code = [];
+      const indentOf = (l) => (l.match(/^[ \t]*/) || [''])[0];
+      // Dedent lost the gap markers' indentation: give each the indentation of the next line.
+      let k = 0;
+      for (let p = 0; p < parts.length; p++) code.push(kept[k++] ?? '');
+      code = code.map((l, p) => (parts[p] === null ? `${indentOf(code[p + 1] || '')}// ...` : l));
+      code = dedent(code);
     }
+    if (key && !code.some((l) => l.includes(key))) {
+      problems.push(`${where}: the excerpt of ${name} does not contain its key line "${key}" (cut too early?)`);
+      return;
+    }
+    code = fitToSlide(code, languageOf(found.file), options.styleFolder);
     if (code.length > maxLinesPerSlide)
       console.warn(`${where}: warning: region ${name} shows ${code.length} lines (more than ${maxLinesPerSlide} fit a slide)`);
     listing.push(`${where} ${name} ${found.file}:${found.region.startLine}`);
-    if (Math.max(...code.map((l) => l.length)) > narrowCodeColumns) output.push('<!-- _class: wide-code -->');
     output.push('```' + languageOf(found.file), ...code, '```');
   });
   if (options.out) fs.writeFileSync(path.join(options.out, path.basename(deckPath)), output.join('\n'));
@@ -181,6 +232,7 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
 function main() {
   const options = parseArguments(process.argv.slice(2));
   const index = new RegionIndex(options.root);
+  options.styleFolder = slideStyleFolder(options.root);
   const decks = fs.readdirSync(options.src).filter((f) => f.endsWith('.md')).sort();
   if (options.out) fs.mkdirSync(options.out, { recursive: true });
   const problems = [];
@@ -189,6 +241,7 @@ function main() {
     const deckPath = path.join(options.src, deck);
     processDeck(deckPath, path.relative(process.cwd(), deckPath), index, options, problems, listing);
   }
+  fs.rmSync(options.styleFolder, { recursive: true, force: true });
   if (options.list) console.log(listing.join('\n'));
   for (const problem of problems) console.error(problem);
   if (problems.length && !options.allowMissing) {

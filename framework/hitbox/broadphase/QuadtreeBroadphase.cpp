@@ -50,7 +50,6 @@ std::int32_t QuadtreeBroadphase::build(const Bounds& region, const Bounds& loose
                           boxes.minY[item] >= area.minY && boxes.maxY[item] <= area.maxY;
         return fits ? q : -1; // -1: stays here
     };
-    // [/slide]
     std::uint32_t* cursor = order.data() + begin;
     std::uint32_t* last = order.data() + end;
     // Boxes that stay move to the front: they are this node's own boxes.
@@ -69,6 +68,7 @@ std::int32_t QuadtreeBroadphase::build(const Bounds& region, const Bounds& loose
         }
         cursor = childEnd;
     }
+    // [/slide]
     return index;
 }
 

@@ -19,11 +19,13 @@ bool isUsable(const Circle& circle)
 }
 
 // The point of the box nearest to `point` (the point itself when it is inside).
+// [slide:closest-point-in-box]
 sf::Vector2f closestPointInBox(sf::Vector2f point, const sf::FloatRect& box)
 {
     return {std::fmin(std::fmax(point.x, box.left), rightOf(box)),
             std::fmin(std::fmax(point.y, box.top), bottomOf(box))};
 }
+// [/slide]
 
 // The depth of an overlap the yes/no test found, worked out in double from the same float
 // numbers. Rounding can make a real but tiny overlap come out as 0 in float; a hit must
@@ -36,6 +38,7 @@ float overlapDepth(float reach, float distanceSquared)
 
 } // namespace
 
+// [slide:point-in-box]
 bool pointInBox(sf::Vector2f point, const sf::FloatRect& box)
 {
     if (!isFinite(point) || !isFinite(box))
@@ -44,6 +47,7 @@ bool pointInBox(sf::Vector2f point, const sf::FloatRect& box)
     // Strict: a point on an edge is outside (the edge rule in Overlap.h).
     return b.left < point.x && point.x < rightOf(b) && b.top < point.y && point.y < bottomOf(b);
 }
+// [/slide]
 
 bool pointInCircle(sf::Vector2f point, const Circle& circle)
 {
@@ -75,6 +79,7 @@ bool circleVsCircle(const Circle& a, const Circle& b)
 }
 // [/slide]
 
+// [slide:circle-box-clamp]
 bool circleVsBox(const Circle& circle, const sf::FloatRect& box)
 {
     if (!isUsable(circle) || !isFinite(box))
@@ -85,6 +90,7 @@ bool circleVsBox(const Circle& circle, const sf::FloatRect& box)
     const sf::Vector2f fromBox = circle.center - closestPointInBox(circle.center, b);
     return lengthSquared(fromBox) < circle.radius * circle.radius;
 }
+// [/slide]
 
 Contact pointInBoxContact(sf::Vector2f point, const sf::FloatRect& box)
 {
