@@ -22,8 +22,8 @@ Sides sidesOf(const sf::FloatRect& box)
     const float left = box.left, top = box.top;
     const float width = box.width, height = box.height;
 #endif
-    return {std::min(left, left + width), std::min(top, top + height),
-            std::max(left, left + width), std::max(top, top + height)};
+    return {std::min(left, left + width), std::min(top, top + height), std::max(left, left + width),
+            std::max(top, top + height)};
 }
 
 } // namespace

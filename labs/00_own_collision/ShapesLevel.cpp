@@ -136,8 +136,8 @@ void ShapesLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     auto outline = [&debug](const Shape& shape)
     {
-        const sf::Color color = shape.hit ? hitbox::DebugRenderer::touchingColor
-                                          : hitbox::DebugRenderer::freeColor;
+        const sf::Color color =
+            shape.hit ? hitbox::DebugRenderer::touchingColor : hitbox::DebugRenderer::freeColor;
         if (shape.isCircle)
         {
             const WorldCircle circle = MyCollision::worldCircle(shape.object);

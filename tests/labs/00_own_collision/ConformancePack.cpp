@@ -43,7 +43,8 @@ float degreesOf(const GameObject& object)
 Sides sidesOf(const sf::FloatRect& box)
 {
 #if SFML_VERSION_MAJOR >= 3
-    return {box.position.x, box.position.y, box.position.x + box.size.x, box.position.y + box.size.y};
+    return {box.position.x, box.position.y, box.position.x + box.size.x,
+            box.position.y + box.size.y};
 #else
     return {box.left, box.top, box.left + box.width, box.top + box.height};
 #endif
@@ -70,8 +71,8 @@ std::string describe(const GameObject* object)
     if (object == nullptr)
         return "nullptr";
     std::ostringstream out;
-    out << "{position " << text(object->getPosition()) << ", size " << object->getSize().x
-        << " x " << object->getSize().y;
+    out << "{position " << text(object->getPosition()) << ", size " << object->getSize().x << " x "
+        << object->getSize().y;
     if (object->getOrigin() != sf::Vector2f())
         out << ", origin " << text(object->getOrigin());
     if (object->getScale() != sf::Vector2f(1.f, 1.f))
@@ -81,7 +82,8 @@ std::string describe(const GameObject* object)
     const Sides local = sidesOf(object->getLocalCollisionBox());
     const sf::Vector2f origin = object->getOrigin();
     if (local.left != -origin.x || local.top != -origin.y ||
-        local.right != object->getSize().x - origin.x || local.bottom != object->getSize().y - origin.y)
+        local.right != object->getSize().x - origin.x ||
+        local.bottom != object->getSize().y - origin.y)
         out << ", setCollisionBox(" << local.left << ", " << local.top << ", "
             << local.right - local.left << ", " << local.bottom - local.top << ")";
     if (!object->isAlive())
@@ -239,8 +241,9 @@ void checkWorldBox(const Variant& variant)
     eighthTurn.setOrigin(sf::Vector2f(10.f, 10.f) * u);
     turn(eighthTurn, 45.f);
     const float halfDiagonal = 10.f * u * std::sqrt(2.f);
-    expectWorldBox("a square turned by 45 degrees (the box around it)", eighthTurn,
-                   {p.x - halfDiagonal, p.y - halfDiagonal, p.x + halfDiagonal, p.y + halfDiagonal});
+    expectWorldBox(
+        "a square turned by 45 degrees (the box around it)", eighthTurn,
+        {p.x - halfDiagonal, p.y - halfDiagonal, p.x + halfDiagonal, p.y + halfDiagonal});
 
     GameObject backwards = box(variant, 100.f, 100.f, 40.f, 20.f);
     backwards.setCollisionBox(10.f * u, 0.f, -20.f * u, 10.f * u);
@@ -252,27 +255,32 @@ void checkWorldBox(const Variant& variant)
 
     GameObject lost = box(variant, 100.f, 100.f, 40.f, 20.f);
     lost.setPosition({notANumber, notANumber});
-    expectWorldBox("a box at a NaN position", lost, {notANumber, notANumber, notANumber, notANumber});
+    expectWorldBox("a box at a NaN position", lost,
+                   {notANumber, notANumber, notANumber, notANumber});
 
     // Random objects: every combination of origin, scale, rotation and collision box.
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
     {
-        GameObject object = box(variant, wholeBetween(random, -50, 50), wholeBetween(random, -50, 50),
-                                wholeBetween(random, 0, 40), wholeBetween(random, 0, 40));
-        object.setOrigin(sf::Vector2f(wholeBetween(random, -20, 20), wholeBetween(random, -20, 20)) * u);
+        GameObject object =
+            box(variant, wholeBetween(random, -50, 50), wholeBetween(random, -50, 50),
+                wholeBetween(random, 0, 40), wholeBetween(random, 0, 40));
+        object.setOrigin(
+            sf::Vector2f(wholeBetween(random, -20, 20), wholeBetween(random, -20, 20)) * u);
         object.setScale({wholeBetween(random, -8, 8) / 4.f, wholeBetween(random, -8, 8) / 4.f});
         turn(object, wholeBetween(random, 0, 23) * 15.f);
         if (random() % 2 == 0)
-            object.setCollisionBox(wholeBetween(random, -20, 20) * u, wholeBetween(random, -20, 20) * u,
-                                   wholeBetween(random, -20, 20) * u, wholeBetween(random, -20, 20) * u);
+            object.setCollisionBox(
+                wholeBetween(random, -20, 20) * u, wholeBetween(random, -20, 20) * u,
+                wholeBetween(random, -20, 20) * u, wholeBetween(random, -20, 20) * u);
         const Sides expected = sidesOf(object.getCollisionBox());
         const Sides actual = MyCollision::worldBox(object);
         if (!near(actual, expected))
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed
-                          << "): worldBox is " << text(actual) << ", the framework's collision box is "
-                          << text(expected) << ": object = " << describe(&object);
+                          << "): worldBox is " << text(actual)
+                          << ", the framework's collision box is " << text(expected)
+                          << ": object = " << describe(&object);
             return; // one random failure says enough
         }
     }
@@ -298,15 +306,19 @@ void checkBoxAgainstBox(const Variant& variant)
     for (int corner = 0; corner < 4; ++corner)
         expectBoxes(false, std::string("boxes touching at the ") + cornerNames[corner] + " corner",
                     box(variant, corners[corner][0], corners[corner][1], 10.f, 10.f), b);
-    expectBoxes(false, "boxes apart on x but level on y", box(variant, 130.f, 105.f, 10.f, 10.f), b);
-    expectBoxes(false, "boxes apart on y but level on x", box(variant, 105.f, 130.f, 10.f, 10.f), b);
+    expectBoxes(false, "boxes apart on x but level on y", box(variant, 130.f, 105.f, 10.f, 10.f),
+                b);
+    expectBoxes(false, "boxes apart on y but level on x", box(variant, 105.f, 130.f, 10.f, 10.f),
+                b);
     expectBoxes(true, "crossing boxes (no corner inside the other)",
                 box(variant, 105.f, 80.f, 10.f, 60.f), box(variant, 80.f, 105.f, 60.f, 10.f));
     expectBoxes(true, "a box inside a bigger box", box(variant, 105.f, 105.f, 5.f, 5.f), b);
     expectBoxes(true, "equal boxes in the same place", box(variant, 100.f, 100.f, 20.f, 20.f), b);
-    expectBoxes(true, "a zero-size box strictly inside a box", box(variant, 110.f, 110.f, 0.f, 0.f), b);
+    expectBoxes(true, "a zero-size box strictly inside a box", box(variant, 110.f, 110.f, 0.f, 0.f),
+                b);
     expectBoxes(false, "a zero-size box on an edge", box(variant, 100.f, 110.f, 0.f, 0.f), b);
-    expectBoxes(true, "a box of zero width crossing a box", box(variant, 110.f, 90.f, 0.f, 40.f), b);
+    expectBoxes(true, "a box of zero width crossing a box", box(variant, 110.f, 90.f, 0.f, 40.f),
+                b);
     GameObject lost = box(variant, 105.f, 105.f, 10.f, 10.f);
     lost.setPosition({notANumber, notANumber});
     expectBoxes(false, "a box at a NaN position and a box", lost, b);
@@ -316,7 +328,8 @@ void checkBoxAgainstBox(const Variant& variant)
 
     GameObject alone = box(variant, 100.f, 100.f, 20.f, 20.f);
     EXPECT_FALSE(MyCollision::checkBoundingBox(&alone, &alone))
-        << "an object tested against itself was reported as colliding: A = B = " << describe(&alone);
+        << "an object tested against itself was reported as colliding: A = B = "
+        << describe(&alone);
     EXPECT_FALSE(MyCollision::checkBoundingBox(&alone, nullptr))
         << "a box and a nullptr were reported as colliding: A = " << describe(&alone);
     GameObject dead = box(variant, 105.f, 105.f, 10.f, 10.f);
@@ -332,9 +345,9 @@ void checkBoxAgainstBox(const Variant& variant)
         if (MyCollision::checkBoundingBox(&first, &second) != expected)
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed << "): boxes "
-                          << (expected ? "that overlap" : "that do not overlap") << " were reported as "
-                          << (expected ? "not colliding" : "colliding") << ": A = " << describe(&first)
-                          << ", B = " << describe(&second);
+                          << (expected ? "that overlap" : "that do not overlap")
+                          << " were reported as " << (expected ? "not colliding" : "colliding")
+                          << ": A = " << describe(&first) << ", B = " << describe(&second);
             return;
         }
     }
@@ -349,7 +362,8 @@ void checkPointInBox(const Variant& variant)
     for (int side = 0; side < 4; ++side)
     {
         const std::string where = sideNames[side];
-        expectPoint(false, "a point on the " + where + " edge", b, at(variant, onEdge[side][0], onEdge[side][1]));
+        expectPoint(false, "a point on the " + where + " edge", b,
+                    at(variant, onEdge[side][0], onEdge[side][1]));
         expectPoint(true, "a point half a pixel inside the " + where + " edge", b,
                     at(variant, justIn[side][0], justIn[side][1]));
     }
@@ -358,8 +372,8 @@ void checkPointInBox(const Variant& variant)
     expectPoint(false, "a point beside the box (level with it on y)", b, at(variant, 130.f, 110.f));
     expectPoint(false, "a point below the box (level with it on x)", b, at(variant, 110.f, 130.f));
     expectPoint(false, "a NaN point", b, {notANumber, notANumber});
-    expectPoint(false, "a point in the place of a zero-size box", box(variant, 100.f, 100.f, 0.f, 0.f),
-                at(variant, 100.f, 100.f));
+    expectPoint(false, "a point in the place of a zero-size box",
+                box(variant, 100.f, 100.f, 0.f, 0.f), at(variant, 100.f, 100.f));
     GameObject dead = b;
     dead.setAlive(false);
     expectPoint(false, "a point inside a dead box", dead, at(variant, 110.f, 110.f));
@@ -368,7 +382,8 @@ void checkPointInBox(const Variant& variant)
     for (int index = 0; index < randomCases; ++index)
     {
         GameObject object = randomPlainBox(variant, random);
-        const sf::Vector2f point = at(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30));
+        const sf::Vector2f point =
+            at(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30));
         const bool expected = Collision::checkBoundingBox(&object, point);
         if (MyCollision::checkBoundingBox(&object, point) != expected)
         {
@@ -385,7 +400,8 @@ void checkBoundingCircle(const Variant& variant)
 {
     const float u = variant.unit;
     const sf::Vector2f p = at(variant, 100.f, 100.f);
-    auto expectCircle = [](const char* rule, const GameObject& object, sf::Vector2f center, float radius)
+    auto expectCircle =
+        [](const char* rule, const GameObject& object, sf::Vector2f center, float radius)
     {
         const WorldCircle circle = MyCollision::worldCircle(object);
         EXPECT_TRUE(near(circle.center.x, center.x) && near(circle.center.y, center.y) &&
@@ -394,12 +410,14 @@ void checkBoundingCircle(const Variant& variant)
             << circle.radius << ", expected " << text(center) << " and " << radius
             << ": object = " << describe(&object);
     };
-    expectCircle("a plain square", box(variant, 100.f, 100.f, 40.f, 40.f), p + sf::Vector2f(20.f, 20.f) * u,
-                 20.f * u);
+    expectCircle("a plain square", box(variant, 100.f, 100.f, 40.f, 40.f),
+                 p + sf::Vector2f(20.f, 20.f) * u, 20.f * u);
     expectCircle("a box wider than it is tall (half the shorter side)",
-                 box(variant, 100.f, 100.f, 80.f, 40.f), p + sf::Vector2f(40.f, 20.f) * u, 20.f * u);
+                 box(variant, 100.f, 100.f, 80.f, 40.f), p + sf::Vector2f(40.f, 20.f) * u,
+                 20.f * u);
     expectCircle("a box taller than it is wide (half the shorter side)",
-                 box(variant, 100.f, 100.f, 40.f, 80.f), p + sf::Vector2f(20.f, 40.f) * u, 20.f * u);
+                 box(variant, 100.f, 100.f, 40.f, 80.f), p + sf::Vector2f(20.f, 40.f) * u,
+                 20.f * u);
     GameObject smaller = box(variant, 100.f, 100.f, 40.f, 40.f);
     smaller.setCollisionBox(10.f * u, 10.f * u, 10.f * u, 10.f * u);
     expectCircle("a collision box smaller than the picture", smaller,
@@ -412,11 +430,12 @@ void checkBoundingCircle(const Variant& variant)
     expectCircle("a square scaled by 2", doubled, p, 40.f * u);
     GameObject stretched = centred;
     stretched.setScale({3.f, 1.f});
-    expectCircle("a square stretched 3 times on x (the shorter side after scaling)", stretched, p, 20.f * u);
+    expectCircle("a square stretched 3 times on x (the shorter side after scaling)", stretched, p,
+                 20.f * u);
     GameObject mirrored = box(variant, 100.f, 100.f, 40.f, 40.f);
     mirrored.setScale({-1.f, 1.f});
-    expectCircle("a square mirrored by a negative scale", mirrored, p + sf::Vector2f(-20.f, 20.f) * u,
-                 20.f * u);
+    expectCircle("a square mirrored by a negative scale", mirrored,
+                 p + sf::Vector2f(-20.f, 20.f) * u, 20.f * u);
     GameObject turned = box(variant, 100.f, 100.f, 80.f, 40.f);
     turned.setOrigin(sf::Vector2f(20.f, 20.f) * u);
     turn(turned, 90.f);
@@ -428,11 +447,13 @@ void checkBoundingCircle(const Variant& variant)
     expectCircles(true, "overlapping circles", ball(variant, 120.f, 100.f, 10.f), b);
     expectCircles(false, "circles touching along x", ball(variant, 130.f, 100.f, 10.f), b);
     expectCircles(false, "circles touching along y", ball(variant, 100.f, 70.f, 10.f), b);
-    expectCircles(true, "circles overlapping by half a pixel along x", ball(variant, 129.5f, 100.f, 10.f), b);
+    expectCircles(true, "circles overlapping by half a pixel along x",
+                  ball(variant, 129.5f, 100.f, 10.f), b);
     // 3-4-5: centres 25 apart on a diagonal, radii 20 and 5.
     expectCircles(false, "circles touching on a diagonal", ball(variant, 115.f, 120.f, 5.f), b);
     expectCircles(true, "circles overlapping on a diagonal", ball(variant, 114.f, 119.f, 5.f), b);
-    expectCircles(false, "circles apart on a diagonal whose boxes overlap", ball(variant, 118.f, 118.f, 5.f), b);
+    expectCircles(false, "circles apart on a diagonal whose boxes overlap",
+                  ball(variant, 118.f, 118.f, 5.f), b);
     expectCircles(true, "a circle inside a bigger circle", ball(variant, 105.f, 100.f, 5.f), b);
     expectCircles(true, "equal circles on the same centre", ball(variant, 100.f, 100.f, 20.f), b);
     GameObject lost = ball(variant, 110.f, 100.f, 10.f);
@@ -453,19 +474,21 @@ void checkBoundingCircle(const Variant& variant)
         {
             object = box(variant, wholeBetween(random, 0, 40), wholeBetween(random, 0, 40),
                          wholeBetween(random, 0, 20), wholeBetween(random, 0, 20));
-            object.setOrigin(sf::Vector2f(wholeBetween(random, 0, 10), wholeBetween(random, 0, 10)) * u);
+            object.setOrigin(
+                sf::Vector2f(wholeBetween(random, 0, 10), wholeBetween(random, 0, 10)) * u);
             object.setScale({wholeBetween(random, 1, 4) / 2.f, wholeBetween(random, 1, 4) / 2.f});
             if (random() % 2 == 0)
-                object.setCollisionBox(wholeBetween(random, -5, 5) * u, wholeBetween(random, -5, 5) * u,
-                                       wholeBetween(random, 0, 10) * u, wholeBetween(random, 0, 10) * u);
+                object.setCollisionBox(
+                    wholeBetween(random, -5, 5) * u, wholeBetween(random, -5, 5) * u,
+                    wholeBetween(random, 0, 10) * u, wholeBetween(random, 0, 10) * u);
         }
         const bool expected = Collision::checkBoundingCircle(&objects[0], &objects[1]);
         if (MyCollision::checkBoundingCircle(&objects[0], &objects[1]) != expected)
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed << "): circles "
-                          << (expected ? "that overlap" : "that do not overlap") << " were reported as "
-                          << (expected ? "not colliding" : "colliding") << ": A = " << describe(&objects[0])
-                          << ", B = " << describe(&objects[1]);
+                          << (expected ? "that overlap" : "that do not overlap")
+                          << " were reported as " << (expected ? "not colliding" : "colliding")
+                          << ": A = " << describe(&objects[0]) << ", B = " << describe(&objects[1]);
             return;
         }
     }
@@ -493,22 +516,26 @@ void checkCircleAgainstBox(const Variant& variant)
                     ball(variant, 122.f, 123.f, 5.f), b);
     expectCircleBox(false, "a circle off the top-left corner whose square overlaps the box",
                     ball(variant, 96.f, 96.f, 5.f), b);
-    expectCircleBox(true, "a circle whose centre is inside the box", ball(variant, 110.f, 110.f, 5.f), b);
-    expectCircleBox(true, "a circle bigger than the box around it", ball(variant, 110.f, 110.f, 50.f), b);
-    expectCircleBox(true, "a zero-size circle (a point) strictly inside a box", ball(variant, 110.f, 110.f, 0.f),
-                    b);
+    expectCircleBox(true, "a circle whose centre is inside the box",
+                    ball(variant, 110.f, 110.f, 5.f), b);
+    expectCircleBox(true, "a circle bigger than the box around it",
+                    ball(variant, 110.f, 110.f, 50.f), b);
+    expectCircleBox(true, "a zero-size circle (a point) strictly inside a box",
+                    ball(variant, 110.f, 110.f, 0.f), b);
     expectCircleBox(false, "a zero-size circle (a point) on the edge of a box",
                     ball(variant, 100.f, 110.f, 0.f), b);
     // Argument order: the small circle sits in the corner of a big box. The big box's own
     // circle does not reach the corner, so swapping the two objects gives the wrong answer.
-    expectCircleBox(true, "a small circle in the corner of a big box (the circle is the first argument)",
+    expectCircleBox(true,
+                    "a small circle in the corner of a big box (the circle is the first argument)",
                     ball(variant, 6.f, 6.f, 5.f), box(variant, 0.f, 0.f, 100.f, 100.f));
     GameObject lostCircle = ball(variant, 110.f, 110.f, 5.f);
     lostCircle.setPosition({notANumber, notANumber});
     expectCircleBox(false, "a circle at a NaN position", lostCircle, b);
     GameObject lostBox = b;
     lostBox.setPosition({notANumber, notANumber});
-    expectCircleBox(false, "a circle against a box at a NaN position", ball(variant, 110.f, 110.f, 5.f), lostBox);
+    expectCircleBox(false, "a circle against a box at a NaN position",
+                    ball(variant, 110.f, 110.f, 5.f), lostBox);
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
@@ -519,10 +546,12 @@ void checkCircleAgainstBox(const Variant& variant)
         const bool expected = Collision::checkCircleBox(&circle, &boxObject);
         if (MyCollision::checkCircleBox(&circle, &boxObject) != expected)
         {
-            ADD_FAILURE() << "random case " << index << " (seed " << variant.seed << "): a circle and a box "
-                          << (expected ? "that overlap" : "that do not overlap") << " were reported as "
-                          << (expected ? "not colliding" : "colliding") << ": circle object = "
-                          << describe(&circle) << ", box object = " << describe(&boxObject);
+            ADD_FAILURE() << "random case " << index << " (seed " << variant.seed
+                          << "): a circle and a box "
+                          << (expected ? "that overlap" : "that do not overlap")
+                          << " were reported as " << (expected ? "not colliding" : "colliding")
+                          << ": circle object = " << describe(&circle)
+                          << ", box object = " << describe(&boxObject);
             return;
         }
     }

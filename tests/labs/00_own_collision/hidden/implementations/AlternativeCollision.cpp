@@ -98,13 +98,17 @@ WorldCircle MyCollision::worldCircle(const GameObject& object)
     const sf::Transform& toWorld = object.getTransform();
     const sf::Vector2f origin = object.getOrigin();
     // The sides' lengths after scaling, from where two corners land (rotation keeps them).
-    const sf::Vector2f topLeft = toWorld.transformPoint({local.left + origin.x, local.top + origin.y});
-    const sf::Vector2f topRight = toWorld.transformPoint({local.right + origin.x, local.top + origin.y});
-    const sf::Vector2f bottomLeft = toWorld.transformPoint({local.left + origin.x, local.bottom + origin.y});
+    const sf::Vector2f topLeft =
+        toWorld.transformPoint({local.left + origin.x, local.top + origin.y});
+    const sf::Vector2f topRight =
+        toWorld.transformPoint({local.right + origin.x, local.top + origin.y});
+    const sf::Vector2f bottomLeft =
+        toWorld.transformPoint({local.left + origin.x, local.bottom + origin.y});
     const float across = std::hypot(topRight.x - topLeft.x, topRight.y - topLeft.y);
     const float down = std::hypot(bottomLeft.x - topLeft.x, bottomLeft.y - topLeft.y);
-    const sf::Vector2f center = toWorld.transformPoint(
-        {origin.x + local.left + (local.right - local.left) / 2.f, origin.y + local.top + (local.bottom - local.top) / 2.f});
+    const sf::Vector2f center =
+        toWorld.transformPoint({origin.x + local.left + (local.right - local.left) / 2.f,
+                                origin.y + local.top + (local.bottom - local.top) / 2.f});
     return {center, (across < down ? across : down) * 0.5f};
 }
 
@@ -132,7 +136,8 @@ bool MyCollision::checkCircleBox(GameObject* circleObject, GameObject* boxObject
     const float dy = outside(circle.center.y, box.top, box.bottom);
     if (dx == 0.f && dy == 0.f) // the centre is in the box or on its edge
         return box.left < circle.center.x && circle.center.x < box.right &&
-               box.top < circle.center.y && circle.center.y < box.bottom ? true
-                                                                           : circle.radius > 0.f;
+                       box.top < circle.center.y && circle.center.y < box.bottom
+                   ? true
+                   : circle.radius > 0.f;
     return dx * dx + dy * dy < circle.radius * circle.radius;
 }

@@ -15,7 +15,8 @@ namespace
 Sides sidesOf(const sf::FloatRect& box)
 {
 #if SFML_VERSION_MAJOR >= 3
-    const float left = box.position.x, top = box.position.y, width = box.size.x, height = box.size.y;
+    const float left = box.position.x, top = box.position.y, width = box.size.x,
+                height = box.size.y;
 #else
     const float left = box.left, top = box.top, width = box.width, height = box.height;
 #endif
