@@ -1,0 +1,153 @@
+#include "BroadPhase.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <utility>
+
+bool operator==(const Pair& a, const Pair& b)
+{
+    return a.first == b.first && a.second == b.second;
+}
+
+bool operator<(const Pair& a, const Pair& b)
+{
+    return a.first != b.first ? a.first < b.first : a.second < b.second;
+}
+
+bool overlaps(const Box& a, const Box& b)
+{
+    return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+}
+
+bool overlaps(const Ball& a, const Ball& b)
+{
+    const float dx = a.x - b.x;
+    const float dy = a.y - b.y;
+    const float reach = a.radius + b.radius;
+    return dx * dx + dy * dy < reach * reach;
+}
+
+PairSearch bruteForcePairs(const std::vector<Box>& boxes)
+{
+    PairSearch search;
+    const int count = static_cast<int>(boxes.size());
+    for (int first = 0; first < count; ++first)
+        for (int second = first + 1; second < count; ++second)
+        {
+            ++search.exactTests;
+            if (overlaps(boxes[first], boxes[second]))
+                search.pairs.push_back({first, second});
+        }
+    return search;
+}
+
+// [slide:lab12-sort-and-sweep]
+PairSearch sortAndSweepPairs(const std::vector<Box>& boxes)
+{
+    PairSearch search;
+    // BEGIN TASK 1: sort and sweep
+    // Visit the boxes by their left side. A box whose right side is at or before the new
+    // box's left can never overlap it or any later box (they start further right): drop it
+    // from the open list. Everything still open overlaps the new box on x; test those only.
+    // (Ericson, Real-Time Collision Detection, 7.5.1, "sort and sweep".)
+    std::vector<int> order(boxes.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&boxes](int a, int b) { return boxes[a].left < boxes[b].left; });
+    std::vector<int> open;
+    for (const int index : order)
+    {
+        const Box& box = boxes[index];
+        open.erase(std::remove_if(open.begin(), open.end(),
+                                  [&](int other) { return boxes[other].right <= box.left; }),
+                   open.end());
+        for (const int other : open)
+        {
+            ++search.exactTests;
+            if (overlaps(box, boxes[other]))
+                search.pairs.push_back({std::min(index, other), std::max(index, other)});
+        }
+        open.push_back(index);
+    }
+    // STARTER TASK 1
+    // (void)boxes;
+    // END TASK 1
+    return search;
+}
+// [/slide]
+
+// [slide:lab12-uniform-grid]
+PairSearch gridPairs(const std::vector<Box>& boxes, float cellSize)
+{
+    PairSearch search;
+    // BEGIN TASK 2: a uniform grid
+    // 1. Fill: each box goes in every cell its box covers (floor, so negative coordinates
+    //    land in negative cells). 2. List: within each cell, every pair of its boxes is a
+    //    candidate; two boxes that share several cells meet in each, so remember the pairs
+    //    already tested and test each only once.
+    std::map<std::pair<int, int>, std::vector<int>> cells;
+    for (int index = 0; index < static_cast<int>(boxes.size()); ++index)
+    {
+        const Box& box = boxes[index];
+        const int firstColumn = static_cast<int>(std::floor(box.left / cellSize));
+        const int lastColumn = static_cast<int>(std::floor(box.right / cellSize));
+        const int firstRow = static_cast<int>(std::floor(box.top / cellSize));
+        const int lastRow = static_cast<int>(std::floor(box.bottom / cellSize));
+        for (int column = firstColumn; column <= lastColumn; ++column)
+            for (int row = firstRow; row <= lastRow; ++row)
+                cells[{column, row}].push_back(index);
+    }
+    std::vector<Pair> tested;
+    for (const auto& cell : cells)
+    {
+        const std::vector<int>& inCell = cell.second;
+        for (std::size_t a = 0; a < inCell.size(); ++a)
+            for (std::size_t b = a + 1; b < inCell.size(); ++b)
+                tested.push_back({std::min(inCell[a], inCell[b]), std::max(inCell[a], inCell[b])});
+    }
+    std::sort(tested.begin(), tested.end());
+    tested.erase(std::unique(tested.begin(), tested.end()), tested.end());
+    for (const Pair& pair : tested)
+    {
+        ++search.exactTests;
+        if (overlaps(boxes[pair.first], boxes[pair.second]))
+            search.pairs.push_back(pair);
+    }
+    // STARTER TASK 2
+    // (void)boxes;
+    // (void)cellSize;
+    // END TASK 2
+    return search;
+}
+// [/slide]
+
+// [slide:lab12-bound-first]
+PairSearch ballPairsBoundFirst(const std::vector<Ball>& balls)
+{
+    PairSearch search;
+    // BEGIN TASK 3: cheap bound first, exact test second
+    // Four comparisons of the balls' bounding boxes rule out most pairs; only the pairs
+    // whose boxes overlap pay for the multiplications of the circle test. Boxes that only
+    // touch cannot hold overlapping circles, so the strict box test loses nothing.
+    const int count = static_cast<int>(balls.size());
+    for (int first = 0; first < count; ++first)
+        for (int second = first + 1; second < count; ++second)
+        {
+            const Ball& a = balls[first];
+            const Ball& b = balls[second];
+            const Box boundA{a.x - a.radius, a.y - a.radius, a.x + a.radius, a.y + a.radius};
+            const Box boundB{b.x - b.radius, b.y - b.radius, b.x + b.radius, b.y + b.radius};
+            if (!overlaps(boundA, boundB))
+                continue;
+            ++search.exactTests;
+            if (overlaps(a, b))
+                search.pairs.push_back({first, second});
+        }
+    // STARTER TASK 3
+    // (void)balls;
+    // END TASK 3
+    return search;
+}
+// [/slide]

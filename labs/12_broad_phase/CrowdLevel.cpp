@@ -1,0 +1,99 @@
+#include "CrowdLevel.h"
+
+#include "hitbox/app/Input.h"
+
+#include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/Graphics/RenderTarget.hpp>
+
+#include <cstdio>
+
+namespace
+{
+const sf::Color freeColor{70, 110, 190};
+const sf::Color overlapColor{210, 70, 60};
+const char* const methodNames[] = {"brute force", "sort and sweep", "grid"};
+} // namespace
+
+CrowdLevel::CrowdLevel(int boxCount, unsigned seed)
+{
+    std::mt19937 random(seed);
+    const sf::Vector2f world = getWorldSize();
+    std::uniform_real_distribution<float> size(10.f, 40.f);
+    std::uniform_real_distribution<float> speed(-60.f, 60.f);
+    for (int index = 0; index < boxCount; ++index)
+    {
+        const float width = size(random);
+        const float height = size(random);
+        const float left = std::uniform_real_distribution<float>(0.f, world.x - width)(random);
+        const float top = std::uniform_real_distribution<float>(0.f, world.y - height)(random);
+        boxes.push_back({left, top, left + width, top + height});
+        speedX.push_back(speed(random));
+        speedY.push_back(speed(random));
+    }
+    update(0.f);
+}
+
+void CrowdLevel::handleInput(const Input& input, float)
+{
+    if (input.isPressed(sf::Keyboard::Key::M))
+        method = static_cast<Method>((static_cast<int>(method) + 1) % 3);
+}
+
+void CrowdLevel::update(float dt)
+{
+    const sf::Vector2f world = getWorldSize();
+    for (std::size_t index = 0; index < boxes.size(); ++index)
+    {
+        Box& box = boxes[index];
+        const float dx = speedX[index] * dt;
+        const float dy = speedY[index] * dt;
+        box = {box.left + dx, box.top + dy, box.right + dx, box.bottom + dy};
+        if ((box.left < 0.f && speedX[index] < 0.f) || (box.right > world.x && speedX[index] > 0.f))
+            speedX[index] = -speedX[index];
+        if ((box.top < 0.f && speedY[index] < 0.f) || (box.bottom > world.y && speedY[index] > 0.f))
+            speedY[index] = -speedY[index];
+    }
+    switch (method)
+    {
+    case Method::BruteForce: lastSearch = bruteForcePairs(boxes); break;
+    case Method::SortAndSweep: lastSearch = sortAndSweepPairs(boxes); break;
+    case Method::Grid: lastSearch = gridPairs(boxes, cellSize); break;
+    }
+}
+
+void CrowdLevel::render(sf::RenderTarget& target) const
+{
+    std::vector<bool> overlapping(boxes.size(), false);
+    for (const Pair& pair : lastSearch.pairs)
+        overlapping[pair.first] = overlapping[pair.second] = true;
+    for (std::size_t index = 0; index < boxes.size(); ++index)
+    {
+        const Box& box = boxes[index];
+        sf::RectangleShape picture({box.right - box.left, box.bottom - box.top});
+        picture.setPosition({box.left, box.top});
+        picture.setFillColor(overlapping[index] ? overlapColor : freeColor);
+        picture.setOutlineThickness(-1.f);
+        picture.setOutlineColor(sf::Color(20, 24, 32));
+        target.draw(picture);
+    }
+}
+
+std::string CrowdLevel::getHelpText() const
+{
+    return "M method   " + describeState();
+}
+
+std::string CrowdLevel::describeState() const
+{
+    const long long count = static_cast<long long>(boxes.size());
+    char text[160];
+    std::snprintf(text, sizeof text, "%s: %lld exact tests of %lld pairs, %zu overlapping",
+                  methodNames[static_cast<int>(method)], lastSearch.exactTests,
+                  count * (count - 1) / 2, lastSearch.pairs.size());
+    return text;
+}
+
+const PairSearch& CrowdLevel::getLastSearch() const
+{
+    return lastSearch;
+}

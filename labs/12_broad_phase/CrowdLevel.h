@@ -1,0 +1,44 @@
+// CrowdLevel.h - a crowd of drifting boxes; the overlapping ones turn red.
+//
+// Each step the level finds the overlapping pairs with one of your searches (M switches:
+// brute force, sort and sweep, grid) and the readout shows how many exact tests it ran.
+// Every search must find the same red boxes; only the count of tests changes.
+#pragma once
+
+#include "BroadPhase.h"
+
+#include "hitbox/app/Level.h"
+
+#include <random>
+#include <string>
+#include <vector>
+
+class CrowdLevel : public hitbox::Level
+{
+public:
+    enum class Method
+    {
+        BruteForce,
+        SortAndSweep,
+        Grid
+    };
+    // Cells of the grid, in world pixels: a little more than the largest box.
+    static constexpr float cellSize = 48.f;
+
+    CrowdLevel(int boxCount, unsigned seed);
+
+    void handleInput(const Input& input, float dt) override;
+    void update(float dt) override;
+    void render(sf::RenderTarget& target) const override;
+    std::string getHelpText() const override;
+    std::string describeState() const override;
+
+    const PairSearch& getLastSearch() const;
+
+private:
+    std::vector<Box> boxes;
+    std::vector<float> speedX;
+    std::vector<float> speedY;
+    Method method = Method::SortAndSweep;
+    PairSearch lastSearch;
+};
