@@ -2,6 +2,7 @@
 // no half-written file under the final name, no temporary left behind.
 #include "hitbox/app/Screenshot.h"
 
+#include <SFML/Config.hpp>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -31,17 +32,26 @@ fs::path emptyFolder(const std::string& name)
 sf::Image noisyImage()
 {
     // Noise does not compress: the PNG is far bigger than the file-size limit used below.
+    const unsigned size = 256;
+#if SFML_VERSION_MAJOR >= 3
+    sf::Image image({size, size});
+#else
     sf::Image image;
-    image.create(256, 256);
+    image.create(size, size);
+#endif
     unsigned value = 12345;
-    for (unsigned y = 0; y < 256; ++y)
-        for (unsigned x = 0; x < 256; ++x)
+    for (unsigned y = 0; y < size; ++y)
+        for (unsigned x = 0; x < size; ++x)
         {
             value = value * 1103515245u + 12345u;
-            image.setPixel(x, y,
-                           sf::Color(static_cast<std::uint8_t>(value >> 24),
-                                     static_cast<std::uint8_t>(value >> 16),
-                                     static_cast<std::uint8_t>(value >> 8)));
+            const sf::Color color(static_cast<std::uint8_t>(value >> 24),
+                                  static_cast<std::uint8_t>(value >> 16),
+                                  static_cast<std::uint8_t>(value >> 8));
+#if SFML_VERSION_MAJOR >= 3
+            image.setPixel({x, y}, color);
+#else
+            image.setPixel(x, y, color);
+#endif
         }
     return image;
 }
