@@ -14,6 +14,7 @@
 #if defined(__linux__)
 #include <csignal>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #endif
 
 namespace fs = std::filesystem;
@@ -93,9 +94,14 @@ TEST(Screenshot, AFolderADeviceAndAMissingFolderAreRefusedAndLeaveNothing)
     EXPECT_NE(noFolder.problem.find("does not exist"), std::string::npos) << noFolder.problem;
     EXPECT_FALSE(hitbox::saveImage(noisyImage(), (folder / "shot.txt").string()));
 #if defined(__linux__)
-    const hitbox::SaveResult onDevice = hitbox::saveImage(noisyImage(), "/dev/full");
-    EXPECT_FALSE(onDevice);
-    EXPECT_EQ(onDevice.problem, "it is not a regular file (a device or a pipe)");
+    // A pipe stands for any device: never a real one such as /dev/full, which a broken
+    // save run as root would replace.
+    const fs::path pipe = folder / "pipe.png";
+    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+    const hitbox::SaveResult onPipe = hitbox::saveImage(noisyImage(), pipe.string());
+    EXPECT_FALSE(onPipe);
+    EXPECT_EQ(onPipe.problem, "it is not a regular file (a device or a pipe)");
+    EXPECT_EQ(fs::status(pipe).type(), fs::file_type::fifo);
 #endif
 }
 
