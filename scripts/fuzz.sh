@@ -15,11 +15,15 @@ fi
 export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$PWD}
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+mkdir -p build/fuzz
+if ! { cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "${launcher[@]}" -DHITBOX_FUZZ=ON -DHITBOX_BUILD_BENCHMARKS=OFF \
-    "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" \
-    >/dev/null
-cmake --build build/fuzz -j2 --target options_fuzzer level_fuzzer >/dev/null
+    "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" &&
+    cmake --build build/fuzz -j2 --target options_fuzzer level_fuzzer; } >build/fuzz/build.log 2>&1; then
+    tail -n 30 build/fuzz/build.log >&2
+    echo "fuzz.sh: the fuzz targets did not build (full log: build/fuzz/build.log)" >&2
+    exit 1
+fi
 for target in level options; do
     # New inputs go to the build folder; the repository's corpus is read only.
     mkdir -p "build/fuzz/corpus-$target"

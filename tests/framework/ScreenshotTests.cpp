@@ -2,6 +2,7 @@
 // no half-written file under the final name, no temporary left behind.
 #include "hitbox/app/Screenshot.h"
 
+#include <SFML/Config.hpp>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #if defined(__linux__)
 #include <csignal>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #endif
 
 namespace fs = std::filesystem;
@@ -31,17 +33,26 @@ fs::path emptyFolder(const std::string& name)
 sf::Image noisyImage()
 {
     // Noise does not compress: the PNG is far bigger than the file-size limit used below.
+    const unsigned size = 256;
+#if SFML_VERSION_MAJOR >= 3
+    sf::Image image({size, size});
+#else
     sf::Image image;
-    image.create(256, 256);
+    image.create(size, size);
+#endif
     unsigned value = 12345;
-    for (unsigned y = 0; y < 256; ++y)
-        for (unsigned x = 0; x < 256; ++x)
+    for (unsigned y = 0; y < size; ++y)
+        for (unsigned x = 0; x < size; ++x)
         {
             value = value * 1103515245u + 12345u;
-            image.setPixel(x, y,
-                           sf::Color(static_cast<std::uint8_t>(value >> 24),
-                                     static_cast<std::uint8_t>(value >> 16),
-                                     static_cast<std::uint8_t>(value >> 8)));
+            const sf::Color color(static_cast<std::uint8_t>(value >> 24),
+                                  static_cast<std::uint8_t>(value >> 16),
+                                  static_cast<std::uint8_t>(value >> 8));
+#if SFML_VERSION_MAJOR >= 3
+            image.setPixel({x, y}, color);
+#else
+            image.setPixel(x, y, color);
+#endif
         }
     return image;
 }
@@ -83,9 +94,14 @@ TEST(Screenshot, AFolderADeviceAndAMissingFolderAreRefusedAndLeaveNothing)
     EXPECT_NE(noFolder.problem.find("does not exist"), std::string::npos) << noFolder.problem;
     EXPECT_FALSE(hitbox::saveImage(noisyImage(), (folder / "shot.txt").string()));
 #if defined(__linux__)
-    const hitbox::SaveResult onDevice = hitbox::saveImage(noisyImage(), "/dev/full");
-    EXPECT_FALSE(onDevice);
-    EXPECT_EQ(onDevice.problem, "it is not a regular file (a device or a pipe)");
+    // A pipe stands for any device: never a real one such as /dev/full, which a broken
+    // save run as root would replace.
+    const fs::path pipe = folder / "pipe.png";
+    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+    const hitbox::SaveResult onPipe = hitbox::saveImage(noisyImage(), pipe.string());
+    EXPECT_FALSE(onPipe);
+    EXPECT_EQ(onPipe.problem, "it is not a regular file (a device or a pipe)");
+    EXPECT_EQ(fs::status(pipe).type(), fs::file_type::fifo);
 #endif
 }
 
