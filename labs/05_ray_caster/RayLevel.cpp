@@ -41,16 +41,11 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
     target.draw(line);
 }
 
-float dot(sf::Vector2f a, sf::Vector2f b)
-{
-    return a.x * b.x + a.y * b.y;
-}
-
 // The lab's field: borders, a floor and a right wall made of separate tiles (their seams
 // are what snags a sliding box), and a few boxes in the middle for the ray to hit.
-std::vector<sf::FloatRect> labField()
+std::vector<hitbox::Box> labField()
 {
-    std::vector<sf::FloatRect> field = {
+    std::vector<hitbox::Box> field = {
         {0.f, 40.f, 40.f, 600.f},   // left border
         {40.f, 40.f, 1120.f, 20.f}, // top border
         {230.f, 170.f, 120.f, 80.f}, {470.f, 120.f, 60.f, 180.f}, {700.f, 190.f, 160.f, 50.f},
@@ -68,7 +63,7 @@ std::vector<sf::FloatRect> labField()
 
 RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f}) {}
 
-RayLevel::RayLevel(std::vector<sf::FloatRect> solidBoxes, sf::Vector2f playerStart)
+RayLevel::RayLevel(std::vector<hitbox::Box> solidBoxes, sf::Vector2f playerStart)
     : solids(std::move(solidBoxes)), mouse(760.f, 110.f), font(hitbox::loadFont())
 {
     player.setSize(playerSize);
@@ -122,7 +117,7 @@ const GameObject& RayLevel::getPlayer() const
     return player;
 }
 
-const std::vector<sf::FloatRect>& RayLevel::getSolids() const
+const std::vector<hitbox::Box>& RayLevel::getSolids() const
 {
     return solids;
 }
@@ -143,7 +138,7 @@ bool RayLevel::isStuck() const
 }
 
 // [slide:lab05-ray-nearest-hit]
-RayHit RayLevel::castRay(sf::Vector2f from, sf::Vector2f to) const
+RayHit RayLevel::castRay(hitbox::Vec2 from, hitbox::Vec2 to) const
 {
     RayHit nearest;
     nearest.start = from;
@@ -173,7 +168,8 @@ std::vector<SolidHit> RayLevel::solidsInTheWay(sf::Vector2f move) const
     std::vector<SolidHit> inTheWay;
     for (std::size_t i = 0; i < solids.size(); ++i)
     {
-        const hitbox::Hit hit = hitbox::sweepBoxVsBox(player.getCollisionBox(), move, solids[i]);
+        const hitbox::Hit hit = hitbox::sweepBoxVsBox(hitbox::toBox(player.getCollisionBox()),
+                                                      hitbox::toVec2(move), solids[i]);
         if (hit)
             inTheWay.push_back({i, hit.time});
     }
@@ -182,10 +178,10 @@ std::vector<SolidHit> RayLevel::solidsInTheWay(sf::Vector2f move) const
 
 bool RayLevel::isNearer(const SolidHit& a, const SolidHit& b) const
 {
-    const sf::Vector2f center = hitbox::centerOf(player.getCollisionBox());
-    const sf::Vector2f toA = hitbox::centerOf(solids[a.index]) - center;
-    const sf::Vector2f toB = hitbox::centerOf(solids[b.index]) - center;
-    return dot(toA, toA) < dot(toB, toB);
+    const hitbox::Vec2 center = hitbox::centerOf(hitbox::toBox(player.getCollisionBox()));
+    const hitbox::Vec2 toA = hitbox::centerOf(solids[a.index]) - center;
+    const hitbox::Vec2 toB = hitbox::centerOf(solids[b.index]) - center;
+    return hitbox::dot(toA, toA) < hitbox::dot(toB, toB);
 }
 
 // [slide:lab05-slide-time-order]
@@ -202,14 +198,16 @@ void RayLevel::movePlayer(sf::Vector2f velocity, float dt)
     for (const SolidHit& candidate : lastHits)
     {
         const hitbox::Hit now = // sweep again: earlier answers may have steered clear
-            hitbox::sweepBoxVsBox(player.getCollisionBox(), velocity * dt, solids[candidate.index]);
+            hitbox::sweepBoxVsBox(hitbox::toBox(player.getCollisionBox()),
+                                  hitbox::toVec2(velocity * dt), solids[candidate.index]);
         if (!now)
             continue;
+        const sf::Vector2f normal = hitbox::toSfml(now.normal);
         if (now.startedInside)
-            player.move(now.normal * now.depth); // already overlapping: push out first
-        const float into = dot(velocity, now.normal);
+            player.move(normal * now.depth); // already overlapping: push out first
+        const float into = velocity.x * normal.x + velocity.y * normal.y;
         if (into < 0.f)
-            velocity -= now.normal * into * (1.f - now.time); // keep only the part up to the touch
+            velocity -= normal * into * (1.f - now.time); // keep only the part up to the touch
     }
     // END TASK 2
     player.move(velocity * dt);
@@ -219,7 +217,7 @@ void RayLevel::movePlayer(sf::Vector2f velocity, float dt)
 void RayLevel::update(float dt)
 {
     sf::Vector2f direction = moveDirection;
-    const float length = std::sqrt(dot(direction, direction));
+    const float length = hitbox::length(hitbox::toVec2(direction));
     if (length > 0.f)
         direction /= length;
     player.setVelocity(direction * playerSpeed);
@@ -227,13 +225,13 @@ void RayLevel::update(float dt)
     movePlayer(player.getVelocity(), dt);
     // Wanting to move but barely moving: snagged (or pressed into a corner).
     const sf::Vector2f moved = player.getPosition() - before;
-    stuck = length > 0.f && dot(moved, moved) < 0.01f * playerSpeed * dt * playerSpeed * dt;
+    stuck = length > 0.f && hitbox::length(hitbox::toVec2(moved)) < 0.1f * playerSpeed * dt;
 
     trail.push_back(player.getPosition() + playerSize / 2.f);
     if (trail.size() > trailLength)
         trail.erase(trail.begin());
 
-    ray = castRay(player.getPosition() + playerSize / 2.f, mouse);
+    ray = castRay(hitbox::toVec2(player.getPosition() + playerSize / 2.f), hitbox::toVec2(mouse));
 }
 
 void RayLevel::render(sf::RenderTarget& target) const
@@ -263,14 +261,16 @@ void RayLevel::render(sf::RenderTarget& target) const
     target.draw(player);
 
     // The ray: bright up to the hit, faint beyond it (the part the wall hides).
-    drawThickLine(target, ray.start, ray.end, 3.f, rayColor);
+    const sf::Vector2f rayStart = hitbox::toSfml(ray.start);
+    const sf::Vector2f rayEnd = hitbox::toSfml(ray.end);
+    drawThickLine(target, rayStart, rayEnd, 3.f, rayColor);
     if (ray.hit)
     {
-        drawThickLine(target, ray.end, mouse, 2.f, sf::Color(255, 240, 160, 60));
-        drawThickLine(target, ray.end, ray.end + ray.normal * 45.f, 3.f, hitColor);
+        drawThickLine(target, rayEnd, mouse, 2.f, sf::Color(255, 240, 160, 60));
+        drawThickLine(target, rayEnd, hitbox::toSfml(ray.end + ray.normal * 45.f), 3.f, hitColor);
         sf::CircleShape dot(6.f);
         dot.setOrigin(6.f, 6.f);
-        dot.setPosition(ray.end);
+        dot.setPosition(rayEnd);
         dot.setFillColor(hitColor);
         target.draw(dot);
     }

@@ -3,6 +3,7 @@
 #include "ManyObjectsLevel.h"
 
 #include "hitbox/app/Assets.h"
+#include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -132,9 +133,9 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
     for (const Ball& ball : balls)
     {
         if (ball.radius < squareBelowRadius)
-            addQuad(ballVertices, ball.box(), colorOf(ball));
+            addQuad(ballVertices, hitbox::toSfml(ball.box()), colorOf(ball));
         else
-            addDisc(ballVertices, ball.position, ball.radius, colorOf(ball));
+            addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, colorOf(ball));
     }
     target.draw(ballVertices);
 }
@@ -287,7 +288,7 @@ void ManyObjectsLevel::measureFrame() const
 void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     if (scene != Scene::PairTable && !bruteForceSkipped && !stoppedAsTooSlow)
-        broadphase->drawDebug(debug);
+        hitbox::drawBroadphase(debug, broadphase->layout());
     // The boxes the pair loop compares, for the scenes small enough to read them.
     if (balls.size() <= 300)
         for (const Ball& ball : balls)
