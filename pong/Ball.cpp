@@ -5,16 +5,11 @@
 
 namespace
 {
-const float degreesToRadians = 3.14159265f / 180.f;
+const float degreesToRadians = hitbox::pi / 180.f;
 
 float lengthOf(sf::Vector2f v)
 {
     return std::sqrt(v.x * v.x + v.y * v.y);
-}
-
-float dot(sf::Vector2f a, sf::Vector2f b)
-{
-    return a.x * b.x + a.y * b.y;
 }
 } // namespace
 
@@ -90,7 +85,7 @@ void Ball::bounceOffWall()
     // Reflect: remove the part of the velocity going into the wall, twice. Only when moving
     // into it, so a ball resting against the wall is never turned back into it.
     const sf::Vector2f normal = hitbox::toSfml(lastContact.normal);
-    const float into = dot(velocity, normal);
+    const float into = hitbox::dot(hitbox::toVec2(velocity), lastContact.normal);
     if (into < 0.f)
         velocity -= 2.f * into * normal;
 }

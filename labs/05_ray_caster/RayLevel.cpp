@@ -36,7 +36,7 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
     sf::RectangleShape line({length, thickness});
     line.setOrigin(0.f, thickness / 2.f);
     line.setPosition(from);
-    line.setRotation(std::atan2(along.y, along.x) * 180.f / 3.14159265f);
+    line.setRotation(std::atan2(along.y, along.x) * 180.f / hitbox::pi);
     line.setFillColor(color);
     target.draw(line);
 }

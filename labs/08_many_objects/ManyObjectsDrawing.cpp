@@ -71,7 +71,7 @@ void addQuad(sf::VertexArray& vertices, const sf::FloatRect& box, sf::Color colo
 void addDisc(sf::VertexArray& vertices, sf::Vector2f center, float radius, sf::Color color)
 {
     const int segments = radius > 15.f ? 32 : 12;
-    const float step = 2.f * 3.14159265f / static_cast<float>(segments);
+    const float step = 2.f * hitbox::pi / static_cast<float>(segments);
     sf::Vector2f previous = center + sf::Vector2f(radius, 0.f);
     for (int i = 1; i <= segments; ++i)
     {

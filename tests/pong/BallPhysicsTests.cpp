@@ -13,7 +13,6 @@
 
 namespace
 {
-const float pi = 3.14159265f;
 
 // A court with both paddles standing still in their start positions.
 struct Court
@@ -55,7 +54,7 @@ struct Court
 
 float degreesFromHorizontal(sf::Vector2f velocity)
 {
-    return std::atan2(velocity.y, std::abs(velocity.x)) * 180.f / pi;
+    return std::atan2(velocity.y, std::abs(velocity.x)) * 180.f / hitbox::pi;
 }
 
 float leftPaddleFaceX(const Court& court)

@@ -41,21 +41,51 @@ struct Vec2
     }
 };
 
-constexpr Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-constexpr Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-constexpr Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
-constexpr Vec2 operator*(Vec2 a, float scale) { return {a.x * scale, a.y * scale}; }
-constexpr Vec2 operator*(float scale, Vec2 a) { return {a.x * scale, a.y * scale}; }
-constexpr Vec2 operator/(Vec2 a, float divisor) { return {a.x / divisor, a.y / divisor}; }
+constexpr Vec2 operator+(Vec2 a, Vec2 b)
+{
+    return {a.x + b.x, a.y + b.y};
+}
+constexpr Vec2 operator-(Vec2 a, Vec2 b)
+{
+    return {a.x - b.x, a.y - b.y};
+}
+constexpr Vec2 operator-(Vec2 a)
+{
+    return {-a.x, -a.y};
+}
+constexpr Vec2 operator*(Vec2 a, float scale)
+{
+    return {a.x * scale, a.y * scale};
+}
+constexpr Vec2 operator*(float scale, Vec2 a)
+{
+    return {a.x * scale, a.y * scale};
+}
+constexpr Vec2 operator/(Vec2 a, float divisor)
+{
+    return {a.x / divisor, a.y / divisor};
+}
 // Exact comparison, as for floats: NaN is never equal to anything.
-constexpr bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
-constexpr bool operator!=(Vec2 a, Vec2 b) { return !(a == b); }
+constexpr bool operator==(Vec2 a, Vec2 b)
+{
+    return a.x == b.x && a.y == b.y;
+}
+constexpr bool operator!=(Vec2 a, Vec2 b)
+{
+    return !(a == b);
+}
 
 // a.x * b.x + a.y * b.y: how far `a` goes along `b` (times |b|).
-constexpr float dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+constexpr float dot(Vec2 a, Vec2 b)
+{
+    return a.x * b.x + a.y * b.y;
+}
 
 // The z of the 3D cross product: > 0 when `b` turns clockwise from `a` on screen (y down).
-constexpr float cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+constexpr float cross(Vec2 a, Vec2 b)
+{
+    return a.x * b.y - a.y * b.x;
+}
 
 // The vector's length, computed in double so that huge and tiny components do not overflow.
 inline float length(Vec2 vector)
@@ -73,9 +103,15 @@ inline Vec2 unitVectorOr(Vec2 vector, Vec2 whenNoDirection)
 }
 
 // The vector turned a quarter turn (x, y) -> (-y, x): perpendicular, same length.
-constexpr Vec2 perpendicular(Vec2 vector) { return {-vector.y, vector.x}; }
+constexpr Vec2 perpendicular(Vec2 vector)
+{
+    return {-vector.y, vector.x};
+}
 
 // True when both coordinates are finite numbers (no NaN, no infinity).
-inline bool isFinite(Vec2 point) { return std::isfinite(point.x) && std::isfinite(point.y); }
+inline bool isFinite(Vec2 point)
+{
+    return std::isfinite(point.x) && std::isfinite(point.y);
+}
 
 } // namespace hitbox
