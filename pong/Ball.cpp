@@ -5,16 +5,11 @@
 
 namespace
 {
-const float degreesToRadians = 3.14159265f / 180.f;
+const float degreesToRadians = hitbox::pi / 180.f;
 
 float lengthOf(sf::Vector2f v)
 {
     return std::sqrt(v.x * v.x + v.y * v.y);
-}
-
-float dot(sf::Vector2f a, sf::Vector2f b)
-{
-    return a.x * b.x + a.y * b.y;
 }
 } // namespace
 
@@ -89,8 +84,8 @@ void Ball::bounceOffWall()
 {
     // Reflect: remove the part of the velocity going into the wall, twice. Only when moving
     // into it, so a ball resting against the wall is never turned back into it.
-    const sf::Vector2f normal = lastContact.normal;
-    const float into = dot(velocity, normal);
+    const sf::Vector2f normal = hitbox::toSfml(lastContact.normal);
+    const float into = hitbox::dot(hitbox::toVec2(velocity), lastContact.normal);
     if (into < 0.f)
         velocity -= 2.f * into * normal;
 }
@@ -101,7 +96,7 @@ void Ball::bounceOffPaddleFace(const GameObject& paddle)
 {
     // Where did it hit? -1 at the paddle's top end, 0 in the middle, +1 at the bottom end.
     // Counting half the ball too, so a ball that only clips the corner still counts as +-1.
-    const sf::FloatRect paddleBox = paddle.getCollisionBox();
+    const hitbox::Box paddleBox = hitbox::toBox(paddle.getCollisionBox());
     const float reach = paddleBox.height / 2.f + settings.size / 2.f;
     const float offset = (getPosition().y - hitbox::centerOf(paddleBox).y) / reach;
     const float hitPosition = std::max(-1.f, std::min(1.f, offset));

@@ -10,17 +10,12 @@ const float separationSkin = 0.01f;
 // the step still to go, and the object to tell (nullptr for a wall).
 struct Obstacle
 {
-    sf::FloatRect box;
-    sf::Vector2f move;
+    hitbox::Box box;
+    hitbox::Vec2 move;
     GameObject* object;
 };
 
-float dot(sf::Vector2f a, sf::Vector2f b)
-{
-    return a.x * b.x + a.y * b.y;
-}
-
-sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
+hitbox::Box movedBy(hitbox::Box box, hitbox::Vec2 offset)
 {
     box.left += offset.x;
     box.top += offset.y;
@@ -30,13 +25,13 @@ sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
 // A paddle as an obstacle, `timeDone` of the way through its planned move for this step.
 Obstacle paddleObstacle(Paddle& paddle, float timeDone)
 {
-    const sf::Vector2f wholeMove = paddle.getPlannedMove();
-    return {movedBy(paddle.getCollisionBox(), wholeMove * timeDone), wholeMove * (1.f - timeDone),
-            &paddle};
+    const hitbox::Vec2 wholeMove = hitbox::toVec2(paddle.getPlannedMove());
+    return {movedBy(hitbox::toBox(paddle.getCollisionBox()), wholeMove * timeDone),
+            wholeMove * (1.f - timeDone), &paddle};
 }
 
 // The earliest hit along `ballMove` among the obstacles; `which` says whose it is.
-hitbox::Hit firstHit(const sf::FloatRect& ballBox, sf::Vector2f ballMove,
+hitbox::Hit firstHit(const hitbox::Box& ballBox, hitbox::Vec2 ballMove,
                      const Obstacle (&obstacles)[4], const Obstacle*& which)
 {
     hitbox::Hit first;
@@ -63,25 +58,27 @@ BallStep moveBall(Ball& ball, Paddle& left, Paddle& right, const Arena& arena, f
     {
         // [slide:pong-swept-ball]
         // Sweep the rest of this step's move against everything; the earliest hit wins.
-        const Obstacle obstacles[4] = {{arena.topWall(), {}, nullptr},
-                                       {arena.bottomWall(), {}, nullptr},
+        const Obstacle obstacles[4] = {{hitbox::toBox(arena.topWall()), {}, nullptr},
+                                       {hitbox::toBox(arena.bottomWall()), {}, nullptr},
                                        paddleObstacle(left, 1.f - timeLeft),
                                        paddleObstacle(right, 1.f - timeLeft)};
-        const sf::Vector2f ballMove = ball.getVelocity() * dt * timeLeft;
+        const hitbox::Vec2 ballMove = hitbox::toVec2(ball.getVelocity()) * dt * timeLeft;
         const Obstacle* hitObstacle = nullptr;
-        const hitbox::Hit hit = firstHit(ball.getCollisionBox(), ballMove, obstacles, hitObstacle);
+        const hitbox::Hit hit =
+            firstHit(hitbox::toBox(ball.getCollisionBox()), ballMove, obstacles, hitObstacle);
         if (hitObstacle == nullptr)
         {
-            ball.move(ballMove); // a clear path: the whole rest of the step
+            ball.move(hitbox::toSfml(ballMove)); // a clear path: the whole rest of the step
             break;
         }
-        ball.move(ballMove * hit.time); // up to the contact: touching, not overlapping
+        ball.move(
+            hitbox::toSfml(ballMove * hit.time)); // up to the contact: touching, not overlapping
         // [/slide]
         if (hit.startedInside)
         {
             // Already overlapping (rounding, or a paddle's end moved into it): push it out.
-            ball.move(hit.normal * (hit.depth + separationSkin));
-            if (dot(ball.getVelocity(), hit.normal) > 0.f)
+            ball.move(hitbox::toSfml(hit.normal * (hit.depth + separationSkin)));
+            if (hitbox::dot(hitbox::toVec2(ball.getVelocity()), hit.normal) > 0.f)
                 continue; // already moving away: the bounce has happened, not a new hit
         }
         // Tell the ball what it hit and how; it decides how to bounce (Ball.cpp).

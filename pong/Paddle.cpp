@@ -41,7 +41,8 @@ void Paddle::finishMove(const sf::FloatRect& ballBox)
     // The ball has already moved this step. If the paddle would now run into it (the ball
     // sits between the paddle's end and a wall), stop where they touch: a paddle never
     // pushes through the ball.
-    const hitbox::Hit blocked = hitbox::sweepBoxVsBox(getCollisionBox(), plannedMove, ballBox);
+    const hitbox::Hit blocked = hitbox::sweepBoxVsBox(
+        hitbox::toBox(getCollisionBox()), hitbox::toVec2(plannedMove), hitbox::toBox(ballBox));
     const float fraction = blocked.hit ? blocked.time : 1.f;
     move(plannedMove * fraction);
     plannedMove = {};

@@ -265,8 +265,8 @@ void PongLevel::playStep(float dt)
 
     // 4. Out of the arena at a side: a point. (Never true with a finite position inside;
     // a non-finite one would be a bug, so it restarts the rally rather than vanish.)
-    const sf::FloatRect ballBox = ball.getCollisionBox();
-    if (!hitbox::isFinite(ballBox) || !hitbox::isFinite(ball.getVelocity()))
+    const hitbox::Box ballBox = hitbox::toBox(ball.getCollisionBox());
+    if (!hitbox::isFinite(ballBox) || !hitbox::isFinite(hitbox::toVec2(ball.getVelocity())))
         prepareServe(serveSide);
     else if (hitbox::rightOf(ballBox) < 0.f)
         scorePoint(Side::Right);

@@ -155,7 +155,8 @@ void PongLevel::renderDebug(hitbox::DebugRenderer& debug) const
         return;
     // The ball's box with its velocity arrow, and the line it swept along in the last step.
     debug.objectBox(ball, touching);
-    debug.line(ballStepStart, ball.getPosition(), hitbox::DebugRenderer::hintColor);
+    debug.line(hitbox::toVec2(ballStepStart), hitbox::toVec2(ball.getPosition()),
+               hitbox::DebugRenderer::hintColor);
     // Where the last contact was and which way it pushed.
     if (lastHit.hit)
         debug.contact({true, lastHit.normal, 0.f, lastHit.point});

@@ -84,7 +84,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
             const hitbox::Circle circle = obstacle.shape.getBoundingCircle();
             sf::CircleShape drawn(circle.radius, 48);
             drawn.setOrigin({circle.radius, circle.radius});
-            drawn.setPosition(circle.center);
+            drawn.setPosition(hitbox::toSfml(circle.center));
             drawn.setFillColor(fill);
             target.draw(drawn);
         }
@@ -100,7 +100,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
         const hitbox::Circle circle = cursor.getBoundingCircle();
         sf::CircleShape drawn(circle.radius, 48);
         drawn.setOrigin({circle.radius, circle.radius});
-        drawn.setPosition(circle.center);
+        drawn.setPosition(hitbox::toSfml(circle.center));
         drawn.setFillColor(cursor.getFillColor());
         target.draw(drawn);
     }

@@ -167,10 +167,12 @@ void PointInBoxLevel::renderDebug(hitbox::DebugRenderer& debug) const
     for (int index = 0; index < getBoxCount(); ++index)
     {
         const sf::FloatRect onScreen = camera.transformRect(boxes[index].getCollisionBox());
-        debug.box(onScreen, index == hoveredBox ? hitbox::DebugRenderer::touchingColor
-                                                : hitbox::DebugRenderer::freeColor);
+        debug.box(hitbox::toBox(onScreen), index == hoveredBox
+                                               ? hitbox::DebugRenderer::touchingColor
+                                               : hitbox::DebugRenderer::freeColor);
     }
-    debug.cross(getCamera().transformPoint(mouseInScene), 10.f, hitbox::DebugRenderer::hintColor);
+    debug.cross(hitbox::toVec2(getCamera().transformPoint(mouseInScene)), 10.f,
+                hitbox::DebugRenderer::hintColor);
 }
 
 std::string PointInBoxLevel::getHelpText() const

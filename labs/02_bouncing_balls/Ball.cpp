@@ -68,16 +68,17 @@ void bounceApart(Ball& first, Ball& second)
         return;
     // 1. Separate: the normal points from `second` towards `first`; each ball moves half
     //    the overlap, so afterwards they just touch and the next step does not hit again.
-    first.move(contact.normal * (contact.depth / 2.f));
-    second.move(-contact.normal * (contact.depth / 2.f));
+    const sf::Vector2f normal = hitbox::toSfml(contact.normal);
+    first.move(normal * (contact.depth / 2.f));
+    second.move(-normal * (contact.depth / 2.f));
     // 2. Bounce: only the velocity along the normal changes. For equal masses an elastic
     //    collision swaps those parts, which is the same as each ball losing the closing
     //    speed along the normal and the other gaining it.
-    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), contact.normal);
+    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
     if (closing >= 0.f)
         return; // already moving apart: leave them, or they would be pulled back together
-    first.setVelocity(first.getVelocity() - contact.normal * closing);
-    second.setVelocity(second.getVelocity() + contact.normal * closing);
+    first.setVelocity(first.getVelocity() - normal * closing);
+    second.setVelocity(second.getVelocity() + normal * closing);
     // STARTER TASK 3
     // (void)first;
     // (void)second;

@@ -86,16 +86,16 @@ void SquaresLevel::update(float dt)
             // For boxes the normal is an axis, (+-1, 0) or (0, +-1): the way out that is
             // shortest. Each square moves half the overlap, so afterwards they just touch.
             const hitbox::Contact contact = Collision::getBoundingBoxContact(&first, &second);
-            first.move(contact.normal * (contact.depth / 2.f));
-            second.move(-contact.normal * (contact.depth / 2.f));
+            const sf::Vector2f normal = hitbox::toSfml(contact.normal);
+            first.move(normal * (contact.depth / 2.f));
+            second.move(-normal * (contact.depth / 2.f));
             // Equal crates swap their velocities along the normal; along the other axis
             // nothing changes. Squares already moving apart are left alone.
-            const float closing =
-                Vector::dot(first.getVelocity() - second.getVelocity(), contact.normal);
+            const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
             if (closing < 0.f)
             {
-                first.setVelocity(first.getVelocity() - contact.normal * closing);
-                second.setVelocity(second.getVelocity() + contact.normal * closing);
+                first.setVelocity(first.getVelocity() - normal * closing);
+                second.setVelocity(second.getVelocity() + normal * closing);
             }
             // END TASK 3
             // [/slide]

@@ -92,7 +92,7 @@ LaneScore PaperLevel::getScore(Lane lane) const
     return lane == Lane::Discrete ? discreteScore : sweptScore;
 }
 
-const sf::FloatRect& PaperLevel::getWall() const
+const hitbox::Box& PaperLevel::getWall() const
 {
     return wall;
 }
@@ -116,7 +116,7 @@ void PaperLevel::stepDiscrete(Bullet& bullet, sf::Vector2f step)
 {
     bullet.moveBy(step);
     // BEGIN TASK 1: the discrete test - stop the bullet if it overlaps the wall now
-    if (hitbox::boxVsBox(bullet.getCollisionBox(), wall))
+    if (hitbox::boxVsBox(hitbox::toBox(bullet.getCollisionBox()), wall))
         bullet.stopInTheWall();
     // END TASK 1
 }
@@ -125,7 +125,8 @@ void PaperLevel::stepDiscrete(Bullet& bullet, sf::Vector2f step)
 void PaperLevel::stepSwept(Bullet& bullet, sf::Vector2f step)
 {
     // BEGIN TASK 2: the swept test - sweep the bullet's box along `step` against the wall
-    const hitbox::Hit hit = hitbox::sweepBoxVsBox(bullet.getCollisionBox(), step, wall);
+    const hitbox::Hit hit =
+        hitbox::sweepBoxVsBox(hitbox::toBox(bullet.getCollisionBox()), hitbox::toVec2(step), wall);
     if (hit)
     {
         bullet.moveBy(step * hit.time); // only as far as the first touch
@@ -143,7 +144,7 @@ bool PaperLevel::stepCouldTunnel(const Bullet& bullet, sf::Vector2f step) const
     // The discrete test sees an overlap only if some step ENDS with the bullet inside the
     // wall. On one axis, that window is (bullet size + wall size) long: a step at least that
     // long can land before it and then after it.
-    const sf::FloatRect box = bullet.getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(bullet.getCollisionBox());
     return std::abs(step.x) >= box.width + wall.width ||
            std::abs(step.y) >= box.height + wall.height;
     // STARTER TASK 3
@@ -307,11 +308,11 @@ void PaperLevel::renderDebug(hitbox::DebugRenderer& debug) const
             continue;
         // The swept hull: everything the last step passed over. Orange when that step was
         // long enough to tunnel.
-        debug.box(bullet->getLastSweptArea(),
+        debug.box(hitbox::toBox(bullet->getLastSweptArea()),
                   bullet->couldTunnel() ? warningColor : hitbox::DebugRenderer::hintColor);
-        debug.box(bullet->getCollisionBox(), bullet->hitTheWall()
-                                                 ? hitbox::DebugRenderer::touchingColor
-                                                 : hitbox::DebugRenderer::freeColor);
+        debug.box(hitbox::toBox(bullet->getCollisionBox()),
+                  bullet->hitTheWall() ? hitbox::DebugRenderer::touchingColor
+                                       : hitbox::DebugRenderer::freeColor);
     }
 }
 

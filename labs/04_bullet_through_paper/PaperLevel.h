@@ -40,7 +40,7 @@ public:
     // The current shot's bullet in a lane (nullptr before the first shot).
     const Bullet* getBullet(Lane lane) const;
     LaneScore getScore(Lane lane) const;
-    const sf::FloatRect& getWall() const;
+    const hitbox::Box& getWall() const;
 
     // Task 3: could a move of `step` (one step, in pixels) carry this bullet right through
     // the wall without a discrete test ever seeing them overlap?
@@ -53,7 +53,7 @@ private:
     void drawLane(sf::RenderTarget& target, Lane lane) const;
     void drawJumpOverWall(sf::RenderTarget& target, const Bullet& bullet) const;
 
-    sf::FloatRect wall;
+    hitbox::Box wall;
     std::unique_ptr<Bullet> discreteBullet;
     std::unique_ptr<Bullet> sweptBullet;
     LaneScore discreteScore;

@@ -37,21 +37,16 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
     sf::RectangleShape line({length, thickness});
     line.setOrigin({0.f, thickness / 2.f});
     line.setPosition(from);
-    line.setRotation(std::atan2(along.y, along.x) * 180.f / 3.14159265f);
+    hitbox::setRotationDegrees(line, std::atan2(along.y, along.x) * 180.f / hitbox::pi);
     line.setFillColor(color);
     target.draw(line);
 }
 
-float dot(sf::Vector2f a, sf::Vector2f b)
-{
-    return a.x * b.x + a.y * b.y;
-}
-
 // The lab's field: borders, a floor and a right wall made of separate tiles (their seams
 // are what snags a sliding box), and a few boxes in the middle for the ray to hit.
-std::vector<sf::FloatRect> labField()
+std::vector<hitbox::Box> labField()
 {
-    std::vector<sf::FloatRect> field = {
+    std::vector<hitbox::Box> field = {
         {0.f, 40.f, 40.f, 600.f},   // left border
         {40.f, 40.f, 1120.f, 20.f}, // top border
         {230.f, 170.f, 120.f, 80.f}, {470.f, 120.f, 60.f, 180.f}, {700.f, 190.f, 160.f, 50.f},
@@ -69,7 +64,7 @@ std::vector<sf::FloatRect> labField()
 
 RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f}) {}
 
-RayLevel::RayLevel(std::vector<sf::FloatRect> solidBoxes, sf::Vector2f playerStart)
+RayLevel::RayLevel(std::vector<hitbox::Box> solidBoxes, sf::Vector2f playerStart)
     : solids(std::move(solidBoxes)), mouse(760.f, 110.f)
 {
     player.setSize(playerSize);
@@ -123,7 +118,7 @@ const GameObject& RayLevel::getPlayer() const
     return player;
 }
 
-const std::vector<sf::FloatRect>& RayLevel::getSolids() const
+const std::vector<hitbox::Box>& RayLevel::getSolids() const
 {
     return solids;
 }
@@ -144,7 +139,7 @@ bool RayLevel::isStuck() const
 }
 
 // [slide:lab05-ray-nearest-hit]
-RayHit RayLevel::castRay(sf::Vector2f from, sf::Vector2f to) const
+RayHit RayLevel::castRay(hitbox::Vec2 from, hitbox::Vec2 to) const
 {
     RayHit nearest;
     nearest.start = from;
@@ -176,9 +171,10 @@ void RayLevel::movePlayer(sf::Vector2f velocity, float dt)
     // moveBoxAndSlide sweeps the whole move against every solid, handles the hits nearest in
     // time first (unless timeOrder is off) and removes the part of the velocity that goes
     // into each surface: the box ends touching walls and keeps sliding along them.
-    const sf::FloatRect box = player.getCollisionBox();
-    const hitbox::MoveResult moved = hitbox::moveBoxAndSlide(box, velocity, dt, solids, timeOrder);
-    player.move(moved.box.left - box.left, moved.box.top - box.top);
+    const hitbox::Box box = hitbox::toBox(player.getCollisionBox());
+    const hitbox::MoveResult moved =
+        hitbox::moveBoxAndSlide(box, hitbox::toVec2(velocity), dt, solids, timeOrder);
+    player.move({moved.box.left - box.left, moved.box.top - box.top});
     lastHits = moved.hits;
     // STARTER TASK 2
     // player.move(velocity * dt); // no collision yet: the player walks through walls
@@ -192,8 +188,9 @@ bool isSnagged(sf::Vector2f wanted, sf::Vector2f moved)
 {
     // BEGIN TASK 3: moving less than a tenth of the wanted distance is stuck
     // Compare squared lengths: no square root needed. Not wanting to move is never stuck.
-    const float wantedSquared = dot(wanted, wanted);
-    return wantedSquared > 0.f && dot(moved, moved) < 0.01f * wantedSquared;
+    const float wantedSquared = wanted.x * wanted.x + wanted.y * wanted.y;
+    const float movedSquared = moved.x * moved.x + moved.y * moved.y;
+    return wantedSquared > 0.f && movedSquared < 0.01f * wantedSquared;
     // STARTER TASK 3
     // (void)wanted;
     // (void)moved;
@@ -205,7 +202,7 @@ bool isSnagged(sf::Vector2f wanted, sf::Vector2f moved)
 void RayLevel::update(float dt)
 {
     sf::Vector2f direction = moveDirection;
-    const float length = std::sqrt(dot(direction, direction));
+    const float length = hitbox::length(hitbox::toVec2(direction));
     if (length > 0.f)
         direction /= length;
     player.setVelocity(direction * playerSpeed);
@@ -217,7 +214,7 @@ void RayLevel::update(float dt)
     if (trail.size() > trailLength)
         trail.erase(trail.begin());
 
-    ray = castRay(player.getPosition() + playerSize / 2.f, mouse);
+    ray = castRay(hitbox::toVec2(player.getPosition() + playerSize / 2.f), hitbox::toVec2(mouse));
 }
 
 void RayLevel::render(sf::RenderTarget& target) const
@@ -247,14 +244,16 @@ void RayLevel::render(sf::RenderTarget& target) const
     target.draw(player);
 
     // The ray: bright up to the hit, faint beyond it (the part the wall hides).
-    drawThickLine(target, ray.start, ray.end, 3.f, rayColor);
+    const sf::Vector2f rayStart = hitbox::toSfml(ray.start);
+    const sf::Vector2f rayEnd = hitbox::toSfml(ray.end);
+    drawThickLine(target, rayStart, rayEnd, 3.f, rayColor);
     if (ray.hit)
     {
-        drawThickLine(target, ray.end, mouse, 2.f, sf::Color(255, 240, 160, 60));
-        drawThickLine(target, ray.end, ray.end + ray.normal * 45.f, 3.f, hitColor);
+        drawThickLine(target, rayEnd, mouse, 2.f, sf::Color(255, 240, 160, 60));
+        drawThickLine(target, rayEnd, hitbox::toSfml(ray.end + ray.normal * 45.f), 3.f, hitColor);
         sf::CircleShape dot(6.f);
         dot.setOrigin({6.f, 6.f});
-        dot.setPosition(ray.end);
+        dot.setPosition(rayEnd);
         dot.setFillColor(hitColor);
         target.draw(dot);
     }

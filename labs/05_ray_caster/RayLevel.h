@@ -22,9 +22,9 @@
 struct RayHit
 {
     bool hit = false;
-    sf::Vector2f start;
-    sf::Vector2f end;
-    sf::Vector2f normal; // the surface normal at the hit, unit length when hit
+    hitbox::Vec2 start;
+    hitbox::Vec2 end;
+    hitbox::Vec2 normal; // the surface normal at the hit, unit length when hit
     float time = 1.f;    // how far along the ray: 0 at the start, 1 at the mouse
     int boxIndex = -1;   // which of getSolids() it hit, -1 when none
 };
@@ -39,7 +39,7 @@ public:
     // The lab's field of boxes and tiles, the player sliding down-left along the floor.
     RayLevel();
     // Any set of solid boxes and a player box starting at `playerStart` (tests use this).
-    RayLevel(std::vector<sf::FloatRect> solids, sf::Vector2f playerStart);
+    RayLevel(std::vector<hitbox::Box> solids, sf::Vector2f playerStart);
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
@@ -49,7 +49,7 @@ public:
     std::string describeState() const override;
 
     // Task 1: the nearest solid the segment from `from` to `to` hits.
-    RayHit castRay(sf::Vector2f from, sf::Vector2f to) const;
+    RayHit castRay(hitbox::Vec2 from, hitbox::Vec2 to) const;
 
     // true: handle the contacts of a step in time order (the fix); false: in list order.
     void setTimeOrder(bool on);
@@ -58,7 +58,7 @@ public:
     void setMoveDirection(sf::Vector2f direction);
 
     const GameObject& getPlayer() const;
-    const std::vector<sf::FloatRect>& getSolids() const;
+    const std::vector<hitbox::Box>& getSolids() const;
     const RayHit& getRay() const;
     // The hits of the player's last step, in the order moveBoxAndSlide resolved them.
     const std::vector<hitbox::Hit>& getLastHits() const;
@@ -69,7 +69,7 @@ private:
     // Move the player by velocity * dt, sliding along what it runs into (task 2).
     void movePlayer(sf::Vector2f velocity, float dt);
 
-    std::vector<sf::FloatRect> solids;
+    std::vector<hitbox::Box> solids;
     GameObject player;
     sf::Vector2f moveDirection{-1.f, 1.f}; // the demo: down-left along the tiled floor
     bool keyboardControl = false;          // a movement key has been pressed

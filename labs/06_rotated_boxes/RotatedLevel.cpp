@@ -4,7 +4,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/ConvexShape.hpp>
@@ -17,7 +17,6 @@
 
 namespace
 {
-const float pi = 3.14159265f;
 const int pushOutRounds = 4; // pushing out of one shape can push into another: retry
 
 const sf::Color shapeColor{70, 110, 170};
@@ -27,9 +26,9 @@ const sf::Color axisColor{200, 200, 210};
 const sf::Color mtvColor{255, 90, 80};
 const sf::Color separatingColor{110, 230, 140};
 
-sf::Vector2f rotated(sf::Vector2f vector, float degrees)
+hitbox::Vec2 rotated(hitbox::Vec2 vector, float degrees)
 {
-    const float radians = degrees * pi / 180.f;
+    const float radians = degrees * hitbox::pi / 180.f;
     return {vector.x * std::cos(radians) - vector.y * std::sin(radians),
             vector.x * std::sin(radians) + vector.y * std::cos(radians)};
 }
@@ -46,20 +45,20 @@ std::vector<Shape> labShapes()
     };
 }
 
-void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to, float thickness,
+void drawThickLine(sf::RenderTarget& target, hitbox::Vec2 from, hitbox::Vec2 to, float thickness,
                    sf::Color color)
 {
-    const sf::Vector2f along = to - from;
-    sf::RectangleShape line({hitbox::lengthOf(along), thickness});
+    const hitbox::Vec2 along = to - from;
+    sf::RectangleShape line({hitbox::length(along), thickness});
     line.setOrigin({0.f, thickness / 2.f});
-    line.setPosition(from);
-    line.setRotation(std::atan2(along.y, along.x) * 180.f / pi);
+    line.setPosition(hitbox::toSfml(from));
+    hitbox::setRotationDegrees(line, std::atan2(along.y, along.x) * 180.f / hitbox::pi);
     line.setFillColor(color);
     target.draw(line);
 }
 
 // The axis-aligned box around a shape: what an AABB test would compare.
-sf::FloatRect boundsOf(const Shape& shape)
+hitbox::Box boundsOf(const Shape& shape)
 {
     if (shape.isCapsule)
     {
@@ -70,9 +69,9 @@ sf::FloatRect boundsOf(const Shape& shape)
                 std::fabs(capsule.end.y - capsule.start.y) + 2.f * capsule.radius};
     }
     const hitbox::Polygon polygon = shape.polygon();
-    sf::Vector2f low = polygon.points[0];
-    sf::Vector2f high = polygon.points[0];
-    for (const sf::Vector2f& point : polygon.points)
+    hitbox::Vec2 low = polygon.points[0];
+    hitbox::Vec2 high = polygon.points[0];
+    for (const hitbox::Vec2& point : polygon.points)
     {
         low = {std::fmin(low.x, point.x), std::fmin(low.y, point.y)};
         high = {std::fmax(high.x, point.x), std::fmax(high.y, point.y)};
@@ -84,21 +83,21 @@ void drawOutline(sf::RenderTarget& target, const hitbox::Polygon& polygon, sf::C
 {
     sf::ConvexShape drawn(polygon.points.size());
     for (std::size_t p = 0; p < polygon.points.size(); ++p)
-        drawn.setPoint(p, polygon.points[p]);
+        drawn.setPoint(p, hitbox::toSfml(polygon.points[p]));
     drawn.setFillColor(sf::Color::Transparent);
     drawn.setOutlineColor(color);
     drawn.setOutlineThickness(2.f);
     target.draw(drawn);
 }
 
-bool pointInShape(sf::Vector2f point, const Shape& shape)
+bool pointInShape(hitbox::Vec2 point, const Shape& shape)
 {
     if (shape.isCapsule)
     {
         const hitbox::Capsule capsule = shape.capsule();
-        const sf::Vector2f closest =
+        const hitbox::Vec2 closest =
             hitbox::closestPointOnSegment(point, capsule.start, capsule.end);
-        return hitbox::lengthOf(point - closest) < capsule.radius;
+        return hitbox::length(point - closest) < capsule.radius;
     }
     return hitbox::pointInPolygon(point, shape.polygon());
 }
@@ -111,7 +110,7 @@ hitbox::Polygon Shape::polygon() const
 
 hitbox::Capsule Shape::capsule() const
 {
-    const sf::Vector2f half = rotated({body.halfSize.x, 0.f}, body.angleDegrees);
+    const hitbox::Vec2 half = rotated({body.halfSize.x, 0.f}, body.angleDegrees);
     return {body.center - half, body.center + half, body.halfSize.y};
 }
 
@@ -145,7 +144,7 @@ bool RotatedLevel::isOverlapping(std::size_t i) const
 
 void RotatedLevel::handleInput(const Input& input, float)
 {
-    const sf::Vector2f mouse = input.getMousePosition();
+    const hitbox::Vec2 mouse = hitbox::toVec2(input.getMousePosition());
     if (input.isLeftMousePressed())
     {
         // Pick up the shape under the mouse (the held one first, so it can be re-grabbed).
@@ -190,7 +189,7 @@ PairView RotatedLevel::testPair(std::size_t heldIndex, std::size_t otherIndex) c
         view.overlapping = !sat.separated;
         view.axis = sat.axis;
         view.gap = sat.gap;
-        view.hasShadows = sat.axis != sf::Vector2f{};
+        view.hasShadows = sat.axis != hitbox::Vec2{};
         view.heldShadow = projectOnto(a.polygon(), sat.axis);
         view.otherShadow = projectOnto(b.polygon(), sat.axis);
         return view;
@@ -258,7 +257,7 @@ const PairView* RotatedLevel::getNearestPair() const
     for (const PairView& view : pairs)
     {
         const float distance =
-            hitbox::lengthOf(shapes[view.other].body.center - shapes[held].body.center);
+            hitbox::length(shapes[view.other].body.center - shapes[held].body.center);
         if (!nearest || distance < nearestDistance)
         {
             nearest = &view;
@@ -280,11 +279,11 @@ void RotatedLevel::render(sf::RenderTarget& target) const
         {
             const hitbox::Capsule capsule = shape.capsule();
             drawThickLine(target, capsule.start, capsule.end, 2.f * capsule.radius, fill);
-            for (const sf::Vector2f& end : {capsule.start, capsule.end})
+            for (const hitbox::Vec2& end : {capsule.start, capsule.end})
             {
                 sf::CircleShape cap(capsule.radius, 32);
                 cap.setOrigin({capsule.radius, capsule.radius});
-                cap.setPosition(end);
+                cap.setPosition(hitbox::toSfml(end));
                 cap.setFillColor(fill);
                 target.draw(cap);
             }
@@ -293,7 +292,7 @@ void RotatedLevel::render(sf::RenderTarget& target) const
         const hitbox::Polygon polygon = shape.polygon();
         sf::ConvexShape drawn(polygon.points.size());
         for (std::size_t p = 0; p < polygon.points.size(); ++p)
-            drawn.setPoint(p, polygon.points[p]);
+            drawn.setPoint(p, hitbox::toSfml(polygon.points[p]));
         drawn.setFillColor(fill);
         target.draw(drawn);
     }
@@ -302,11 +301,11 @@ void RotatedLevel::render(sf::RenderTarget& target) const
     if (nearest && nearest->hasShadows)
     {
         // The axis, drawn beside the two shapes, with each shape's shadow on it.
-        const sf::Vector2f heldCenter = shapes[held].body.center;
-        const sf::Vector2f otherCenter = shapes[nearest->other].body.center;
-        const sf::Vector2f middle = (heldCenter + otherCenter) / 2.f;
-        const sf::Vector2f across = hitbox::perpendicular(nearest->axis);
-        const sf::Vector2f anchor = middle + across * 170.f;
+        const hitbox::Vec2 heldCenter = shapes[held].body.center;
+        const hitbox::Vec2 otherCenter = shapes[nearest->other].body.center;
+        const hitbox::Vec2 middle = (heldCenter + otherCenter) / 2.f;
+        const hitbox::Vec2 across = hitbox::perpendicular(nearest->axis);
+        const hitbox::Vec2 anchor = middle + across * 170.f;
         const float anchorAlong = hitbox::dot(anchor, nearest->axis);
         auto onAxis = [&](float along) { return anchor + nearest->axis * (along - anchorAlong); };
         drawThickLine(target, onAxis(anchorAlong - 400.f), onAxis(anchorAlong + 400.f), 1.5f,
@@ -322,14 +321,14 @@ void RotatedLevel::render(sf::RenderTarget& target) const
         // wrong. The separating line sits at right angles to the axis, in the middle of the gap.
         if (view.overlapping || !view.boundsOverlap || !view.hasShadows)
             continue;
-        const sf::Vector2f middle =
+        const hitbox::Vec2 middle =
             (shapes[held].body.center + shapes[view.other].body.center) / 2.f;
         const float gapMiddle = (std::fmax(view.heldShadow.min, view.otherShadow.min) +
                                  std::fmin(view.heldShadow.max, view.otherShadow.max)) /
                                 2.f;
-        const sf::Vector2f through =
+        const hitbox::Vec2 through =
             middle + view.axis * (gapMiddle - hitbox::dot(middle, view.axis));
-        const sf::Vector2f across = hitbox::perpendicular(view.axis);
+        const hitbox::Vec2 across = hitbox::perpendicular(view.axis);
         drawThickLine(target, through - across * 150.f, through + across * 150.f, 3.f,
                       separatingColor);
     }
@@ -337,21 +336,22 @@ void RotatedLevel::render(sf::RenderTarget& target) const
     for (const PairView& view : pairs)
         if (view.overlapping)
         {
-            const sf::Vector2f from = shapes[held].body.center;
-            const sf::Vector2f to = from + view.axis * std::fmax(-view.gap, 4.f);
+            const hitbox::Vec2 from = shapes[held].body.center;
+            const hitbox::Vec2 to = from + view.axis * std::fmax(-view.gap, 4.f);
             drawThickLine(target, from, to, 4.f, mtvColor);
             if (!shapes[held].isCapsule)
             {
                 // Where the held shape would be after the push: exactly touching.
                 hitbox::Polygon pushed = shapes[held].polygon();
-                for (sf::Vector2f& point : pushed.points)
+                for (hitbox::Vec2& point : pushed.points)
                     point += view.axis * -view.gap;
                 drawOutline(target, pushed, sf::Color(255, 255, 255, 150));
             }
             sf::CircleShape head(7.f, 3);
             head.setOrigin({7.f, 7.f});
-            head.setPosition(to);
-            head.setRotation(std::atan2(view.axis.y, view.axis.x) * 180.f / pi + 90.f);
+            head.setPosition(hitbox::toSfml(to));
+            hitbox::setRotationDegrees(head,
+                                       std::atan2(view.axis.y, view.axis.x) * 180.f / hitbox::pi + 90.f);
             head.setFillColor(mtvColor);
             target.draw(head);
         }

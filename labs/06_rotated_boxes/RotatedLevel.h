@@ -31,7 +31,7 @@ struct PairView
 {
     std::size_t other = 0;
     bool overlapping = false;
-    sf::Vector2f axis;          // separating axis, or the MTV direction (out of `other`)
+    hitbox::Vec2 axis;          // separating axis, or the MTV direction (out of `other`)
     float gap = 0.f;            // > = 0 when apart, -depth when overlapping
     bool boundsOverlap = false; // their axis-aligned bounding boxes overlap
     bool hasShadows = false;    // box vs box: the shadows below can be drawn
@@ -71,7 +71,7 @@ private:
     std::vector<Shape> shapes;
     std::size_t held = 0;
     bool dragging = false;
-    sf::Vector2f grabOffset;
+    hitbox::Vec2 grabOffset;
     std::vector<PairView> pairs;
     std::vector<bool> overlapping;
     hitbox::LazyFont font; // read by the first render(): tests need no font file

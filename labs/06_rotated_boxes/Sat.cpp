@@ -1,6 +1,6 @@
 #include "Sat.h"
 
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <algorithm>
 #include <limits>
@@ -9,21 +9,21 @@
 namespace
 {
 // The unit normals of a polygon's edges: the axes its edges could be separated along.
-std::vector<sf::Vector2f> edgeNormals(const hitbox::Polygon& polygon)
+std::vector<hitbox::Vec2> edgeNormals(const hitbox::Polygon& polygon)
 {
-    std::vector<sf::Vector2f> normals;
+    std::vector<hitbox::Vec2> normals;
     const std::size_t count = polygon.points.size();
     for (std::size_t i = 0; i < count; ++i)
     {
-        const sf::Vector2f edge = polygon.points[(i + 1) % count] - polygon.points[i];
-        if (edge != sf::Vector2f{})
-            normals.push_back(hitbox::unitOr(hitbox::perpendicular(edge), {1.f, 0.f}));
+        const hitbox::Vec2 edge = polygon.points[(i + 1) % count] - polygon.points[i];
+        if (edge != hitbox::Vec2{})
+            normals.push_back(hitbox::unitVectorOr(hitbox::perpendicular(edge), {1.f, 0.f}));
     }
     return normals;
 }
 } // namespace
 
-Shadow projectOnto(const hitbox::Polygon& polygon, sf::Vector2f axis)
+Shadow projectOnto(const hitbox::Polygon& polygon, hitbox::Vec2 axis)
 {
     // BEGIN TASK 1: the shadow of the polygon on the axis
     // Each corner lands at dot(corner, axis) along the axis; the shadow runs from the
@@ -48,14 +48,14 @@ Shadow projectOnto(const hitbox::Polygon& polygon, sf::Vector2f axis)
 // [slide:lab06-sat-draw]
 SatResult separatingAxisTest(const hitbox::Polygon& a, const hitbox::Polygon& b)
 {
-    std::vector<sf::Vector2f> axes = edgeNormals(a);
-    const std::vector<sf::Vector2f> axesOfB = edgeNormals(b);
+    std::vector<hitbox::Vec2> axes = edgeNormals(a);
+    const std::vector<hitbox::Vec2> axesOfB = edgeNormals(b);
     axes.insert(axes.end(), axesOfB.begin(), axesOfB.end());
     if (axes.empty())
         return SatResult{}; // nothing to test (empty polygons): apart
     // BEGIN TASK 2: try every axis; keep the largest gap (or, with none, the least overlap)
     SatResult best{false, {}, -std::numeric_limits<float>::infinity()};
-    for (const sf::Vector2f& axis : axes)
+    for (const hitbox::Vec2& axis : axes)
     {
         const Shadow shadowA = projectOnto(a, axis);
         const Shadow shadowB = projectOnto(b, axis);

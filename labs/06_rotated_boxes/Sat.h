@@ -24,14 +24,14 @@ struct SatResult
     bool separated = true; // false: the shapes share area
     // Separated: the axis with the LARGEST gap. Overlapping: the axis of LEAST overlap,
     // pointing the way A must move to get out of B (so axis * depth is the MTV).
-    sf::Vector2f axis;
+    hitbox::Vec2 axis;
     float gap = 0.f; // separated: the gap in pixels (>= 0); overlapping: -depth (< 0)
 
     float depth() const { return separated ? 0.f : -gap; }
 };
 
 // Task 1: the shadow of `polygon` on the unit vector `axis`.
-Shadow projectOnto(const hitbox::Polygon& polygon, sf::Vector2f axis);
+Shadow projectOnto(const hitbox::Polygon& polygon, hitbox::Vec2 axis);
 
 // Task 2: the separating axis test for two convex polygons (A = first, B = second).
 // Shadows that only touch (gap 0) count as separated: touching is not a collision.

@@ -9,7 +9,7 @@
 struct Ball
 {
     hitbox::Circle shape;  // centre and radius in pixels
-    sf::Vector2f velocity; // pixels per second
+    hitbox::Vec2 velocity; // pixels per second
     sf::Color color = sf::Color::White;
 
     // Move along the velocity for `seconds`.

@@ -7,7 +7,7 @@
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/SweptCircle.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -28,7 +28,7 @@ const int maxEventsPerStep = 64;       // a break can need many collisions in on
 const std::size_t maxImpactsShown = 6;
 const std::size_t cueTrailLength = 240;
 
-const sf::FloatRect labTable{120.f, 110.f, 960.f, 480.f};
+const hitbox::Box labTable{120.f, 110.f, 960.f, 480.f};
 const float cushionThickness = 36.f;
 
 std::vector<Ball> rackedBalls()
@@ -46,14 +46,14 @@ std::vector<Ball> rackedBalls()
     for (int row = 0; row < 4; ++row)
         for (int place = 0; place <= row; ++place)
         {
-            const sf::Vector2f center{760.f + row * spacing * 0.866f,
+            const hitbox::Vec2 center{760.f + row * spacing * 0.866f,
                                       350.f + (place - row / 2.f) * spacing};
             rack.push_back({{center, ballRadius}, {0.f, 0.f}, colors[index++]});
         }
     return rack;
 }
 
-float lengthSquared(sf::Vector2f vector)
+float lengthSquared(hitbox::Vec2 vector)
 {
     return hitbox::dot(vector, vector);
 }
@@ -61,7 +61,7 @@ float lengthSquared(sf::Vector2f vector)
 
 PoolLevel::PoolLevel() : PoolLevel(rackedBalls(), labTable) {}
 
-PoolLevel::PoolLevel(std::vector<Ball> startBalls, sf::FloatRect playingArea)
+PoolLevel::PoolLevel(std::vector<Ball> startBalls, hitbox::Box playingArea)
     : balls(std::move(startBalls)), table(playingArea), mouse(900.f, 350.f)
 {
     const float t = cushionThickness;
@@ -85,11 +85,11 @@ void PoolLevel::setFriction(bool on)
     friction = on;
 }
 
-void PoolLevel::shoot(sf::Vector2f target, float speed)
+void PoolLevel::shoot(hitbox::Vec2 target, float speed)
 {
     if (balls.empty())
         return;
-    balls[0].velocity = hitbox::unitOr(target - balls[0].shape.center, {1.f, 0.f}) * speed;
+    balls[0].velocity = hitbox::unitVectorOr(target - balls[0].shape.center, {1.f, 0.f}) * speed;
     cueTrail.assign(1, balls[0].shape.center);
     cueImpact = {};
 }
@@ -99,19 +99,19 @@ const std::vector<Ball>& PoolLevel::getBalls() const
     return balls;
 }
 
-const std::vector<sf::FloatRect>& PoolLevel::getCushions() const
+const std::vector<hitbox::Box>& PoolLevel::getCushions() const
 {
     return cushions;
 }
 
-sf::FloatRect PoolLevel::getTable() const
+hitbox::Box PoolLevel::getTable() const
 {
     return table;
 }
 
 void PoolLevel::handleInput(const Input& input, float)
 {
-    mouse = input.getMousePosition();
+    mouse = hitbox::toVec2(input.getMousePosition());
     if (input.isLeftMousePressed() || input.isPressed(sf::Keyboard::Key::Space))
         shoot(mouse, shotSpeed);
     if (input.isPressed(sf::Keyboard::Key::Up))
@@ -129,7 +129,7 @@ void PoolLevel::handleInput(const Input& input, float)
     }
 }
 
-bool PoolLevel::isNewCollision(const hitbox::Hit& hit, sf::Vector2f relativeVelocity)
+bool PoolLevel::isNewCollision(const hitbox::Hit& hit, hitbox::Vec2 relativeVelocity)
 {
     // After a bounce the two shapes touch, and float rounding can leave them overlapping by
     // a hair. The sweep then reports "started inside" - but if they are already moving
@@ -151,7 +151,7 @@ BallEvent PoolLevel::findFirstEvent(float seconds) const
             const hitbox::Hit meeting =
                 hitbox::sweepCircleVsMovingCircle(balls[a].shape, balls[a].velocity * seconds,
                                                   balls[b].shape, balls[b].velocity * seconds);
-            const sf::Vector2f closing = balls[a].velocity - balls[b].velocity;
+            const hitbox::Vec2 closing = balls[a].velocity - balls[b].velocity;
             if (isNewCollision(meeting, closing) && meeting.time < first.time)
                 first = {true, meeting.time, a, b, -1, meeting.normal};
         }
@@ -194,8 +194,8 @@ void PoolLevel::stepSwept(float dt)
 }
 // [/slide]
 
-std::pair<sf::Vector2f, sf::Vector2f>
-PoolLevel::bounceBalls(sf::Vector2f first, sf::Vector2f second, sf::Vector2f normal)
+std::pair<hitbox::Vec2, hitbox::Vec2>
+PoolLevel::bounceBalls(hitbox::Vec2 first, hitbox::Vec2 second, hitbox::Vec2 normal)
 {
     // BEGIN TASK 2: equal balls swap their speeds along the normal
     // Only the part of the velocity along the line between the centres changes; equal
@@ -285,7 +285,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
     felt.setPosition({table.left, table.top});
     felt.setFillColor(sf::Color(30, 110, 60));
     target.draw(felt);
-    for (const sf::FloatRect& cushion : cushions)
+    for (const hitbox::Box& cushion : cushions)
     {
         sf::RectangleShape drawn({cushion.width, cushion.height});
         drawn.setPosition({cushion.left, cushion.top});
@@ -297,9 +297,9 @@ void PoolLevel::render(sf::RenderTarget& target) const
     sf::CircleShape dot(3.f);
     dot.setOrigin({3.f, 3.f});
     dot.setFillColor(sf::Color(255, 255, 255, 110));
-    for (const sf::Vector2f& point : cueTrail)
+    for (const hitbox::Vec2& point : cueTrail)
     {
-        dot.setPosition(point);
+        dot.setPosition(hitbox::toSfml(point));
         target.draw(dot);
     }
 
@@ -309,7 +309,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
         {
             sf::CircleShape ghost(circle.radius, 32);
             ghost.setOrigin({circle.radius, circle.radius});
-            ghost.setPosition(circle.center);
+            ghost.setPosition(hitbox::toSfml(circle.center));
             ghost.setFillColor(sf::Color::Transparent);
             ghost.setOutlineColor(sf::Color(255, 240, 120, 150));
             ghost.setOutlineThickness(1.5f);
@@ -320,7 +320,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
     {
         sf::CircleShape drawn(ball.shape.radius, 32);
         drawn.setOrigin({ball.shape.radius, ball.shape.radius});
-        drawn.setPosition(ball.shape.center);
+        drawn.setPosition(hitbox::toSfml(ball.shape.center));
         drawn.setFillColor(ball.color);
         target.draw(drawn);
     }
@@ -334,13 +334,13 @@ void PoolLevel::render(sf::RenderTarget& target) const
         label.setFillColor(sf::Color::White);
         label.setOutlineColor(sf::Color::Black);
         label.setOutlineThickness(1.5f);
-        label.setPosition(cueImpact.where + sf::Vector2f{-470.f, 18.f});
+        label.setPosition(hitbox::toSfml(cueImpact.where + hitbox::Vec2{-470.f, 18.f}));
         target.draw(label);
     }
 
     float fastest = 0.f;
     for (const Ball& ball : balls)
-        fastest = std::fmax(fastest, hitbox::lengthOf(ball.velocity));
+        fastest = std::fmax(fastest, hitbox::length(ball.velocity));
     const std::string mode =
         swept ? "TIME OF IMPACT: first collision first, then the rest of the step"
               : "DISCRETE: move, then look for overlaps (press D)";
@@ -367,7 +367,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
 
 void PoolLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
-    for (const sf::FloatRect& cushion : cushions)
+    for (const hitbox::Box& cushion : cushions)
         debug.box(cushion, hitbox::DebugRenderer::freeColor);
     for (const Ball& ball : balls)
     {
@@ -379,7 +379,7 @@ void PoolLevel::renderDebug(hitbox::DebugRenderer& debug) const
     }
     for (const Impact& impact : impacts)
     {
-        const sf::Vector2f touch = impact.second.center + impact.normal * impact.second.radius;
+        const hitbox::Vec2 touch = impact.second.center + impact.normal * impact.second.radius;
         debug.arrow(touch, touch + impact.normal * 30.f, hitbox::DebugRenderer::normalColor);
     }
 }

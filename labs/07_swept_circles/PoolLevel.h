@@ -25,7 +25,7 @@ struct BallEvent
     std::size_t first = 0;  // a ball
     std::size_t second = 0; // another ball (ball-ball events only)
     int cushion = -1;       // >= 0: `first` hits this cushion instead of a ball
-    sf::Vector2f normal;    // out of what was hit, towards `first`
+    hitbox::Vec2 normal;    // out of what was hit, towards `first`
 };
 
 // An impact, remembered for the picture: both balls where they touched.
@@ -33,7 +33,7 @@ struct Impact
 {
     hitbox::Circle first;
     hitbox::Circle second;
-    sf::Vector2f normal;
+    hitbox::Vec2 normal;
 };
 
 class PoolLevel : public hitbox::Level
@@ -42,7 +42,7 @@ public:
     // The lab's table: ten balls racked, the cue ball already on its way at break speed.
     PoolLevel();
     // Any balls on a table whose playing area (inside the cushions) is `table`.
-    PoolLevel(std::vector<Ball> balls, sf::FloatRect table);
+    PoolLevel(std::vector<Ball> balls, hitbox::Box table);
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
@@ -55,22 +55,22 @@ public:
     BallEvent findFirstEvent(float seconds) const;
     // Task 2: the velocities of two equal balls after they bump along `normal` (unit, out of
     // the second towards the first). Returns {first, second}.
-    static std::pair<sf::Vector2f, sf::Vector2f>
-    bounceBalls(sf::Vector2f first, sf::Vector2f second, sf::Vector2f normal);
+    static std::pair<hitbox::Vec2, hitbox::Vec2>
+    bounceBalls(hitbox::Vec2 first, hitbox::Vec2 second, hitbox::Vec2 normal);
 
     // A sweep's hit is a new collision unless the two already overlap and are moving apart
     // (`relativeVelocity`: the mover's velocity minus the target's).
-    static bool isNewCollision(const hitbox::Hit& hit, sf::Vector2f relativeVelocity);
+    static bool isNewCollision(const hitbox::Hit& hit, hitbox::Vec2 relativeVelocity);
 
     // true: time of impact (the lab); false: discrete (move, then push overlaps apart).
     void setSwept(bool on);
     void setFriction(bool on);
     // Send the cue ball (ball 0) towards `target` at `speed` pixels per second.
-    void shoot(sf::Vector2f target, float speed);
+    void shoot(hitbox::Vec2 target, float speed);
 
     const std::vector<Ball>& getBalls() const;
-    const std::vector<sf::FloatRect>& getCushions() const;
-    sf::FloatRect getTable() const;
+    const std::vector<hitbox::Box>& getCushions() const;
+    hitbox::Box getTable() const;
 
 private:
     void stepSwept(float dt);
@@ -78,18 +78,18 @@ private:
     void answer(const BallEvent& event);
 
     std::vector<Ball> balls;
-    sf::FloatRect table;
-    std::vector<sf::FloatRect> cushions;
+    hitbox::Box table;
+    std::vector<hitbox::Box> cushions;
     bool swept = true;
     bool friction = true;
     float shotSpeed = 6000.f;
-    sf::Vector2f mouse;
-    std::vector<sf::Vector2f> cueTrail; // the cue ball after each step
+    hitbox::Vec2 mouse;
+    std::vector<hitbox::Vec2> cueTrail; // the cue ball after each step
     std::vector<Impact> impacts;        // the latest ball-ball impacts
     struct CueImpact
     {
         bool happened = false;
-        sf::Vector2f where;       // the cue ball's centre when it touched
+        hitbox::Vec2 where;       // the cue ball's centre when it touched
         float stepFraction = 0.f; // when, as a fraction of that whole step
     } cueImpact;                  // the cue ball's latest ball-ball impact
     hitbox::LazyFont font;        // read by the first render(): tests need no font file

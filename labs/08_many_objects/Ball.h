@@ -18,8 +18,8 @@ enum class BallKind
 
 struct Ball
 {
-    sf::Vector2f position; // centre, world pixels
-    sf::Vector2f velocity; // pixels per second
+    hitbox::Vec2 position; // centre, world pixels
+    hitbox::Vec2 velocity; // pixels per second
     float radius = 4.f;
     BallKind kind = BallKind::Plain;
     int owner = 0; // which ship a ship or a bullet belongs to (0 or 1)
@@ -30,7 +30,7 @@ struct Ball
 
     hitbox::Circle circle() const { return {position, radius}; }
     // The cheap bound the broadphase sorts and buckets: the square around the circle.
-    sf::FloatRect box() const
+    hitbox::Box box() const
     {
         return {position.x - radius, position.y - radius, 2.f * radius, 2.f * radius};
     }

@@ -3,6 +3,7 @@
 #include "ManyObjectsLevel.h"
 
 #include "hitbox/app/Assets.h"
+#include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -68,7 +69,7 @@ void addQuad(sf::VertexArray& vertices, const sf::FloatRect& box, sf::Color colo
 void addDisc(sf::VertexArray& vertices, sf::Vector2f center, float radius, sf::Color color)
 {
     const int segments = radius > 15.f ? 32 : 12;
-    const float step = 2.f * 3.14159265f / static_cast<float>(segments);
+    const float step = 2.f * hitbox::pi / static_cast<float>(segments);
     sf::Vector2f previous = center + sf::Vector2f(radius, 0.f);
     for (int i = 1; i <= segments; ++i)
     {
@@ -121,9 +122,9 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
     for (const Ball& ball : balls)
     {
         if (ball.radius < squareBelowRadius)
-            addQuad(ballVertices, ball.box(), colorOf(ball));
+            addQuad(ballVertices, hitbox::toSfml(ball.box()), colorOf(ball));
         else
-            addDisc(ballVertices, ball.position, ball.radius, colorOf(ball));
+            addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, colorOf(ball));
     }
     target.draw(ballVertices);
 }
@@ -267,7 +268,7 @@ std::string ManyObjectsLevel::timingLine() const
 void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     if (scene != Scene::PairTable && !bruteForceSkipped && !stoppedAsTooSlow)
-        broadphase->drawDebug(debug);
+        hitbox::drawBroadphase(debug, broadphase->layout());
     // The boxes the pair loop compares, for the scenes small enough to read them.
     if (balls.size() <= 300)
         for (const Ball& ball : balls)

@@ -16,8 +16,8 @@ namespace
 {
 // The world is hitbox::defaultWorldSize: balls above, the readout and the help bar below
 // (so the debug view's grid never covers the numbers).
-const sf::FloatRect crowdArena{0.f, 0.f, hitbox::defaultWorldSize.x, 560.f};
-const sf::FloatRect tableSceneArena{0.f, 0.f, 600.f, 560.f};
+const hitbox::Box crowdArena{0.f, 0.f, hitbox::defaultWorldSize.x, 560.f};
+const hitbox::Box tableSceneArena{0.f, 0.f, 600.f, 560.f};
 
 // Crowd balls cover this fraction of the arena whatever their number, so each ball has a
 // few neighbours at 100 balls and at 100,000 alike (the radius shrinks instead).
@@ -44,9 +44,7 @@ const float pickupDrag = 1.5f; // per second: a knocked pickup slides to a stop
 
 const int maxGridCellWidths = 16;
 
-const float pi = 3.14159265f;
-
-sf::Vector2f fromAngle(float angle, float length)
+hitbox::Vec2 fromAngle(float angle, float length)
 {
     return {std::cos(angle) * length, std::sin(angle) * length};
 }
@@ -111,7 +109,7 @@ void ManyObjectsLevel::rebuildBroadphase()
     broadphase = std::make_unique<hitbox::GridBroadphase>(gridCellSize);
 }
 
-Ball ManyObjectsLevel::makeBall(sf::Vector2f position, sf::Vector2f velocity, float radius,
+Ball ManyObjectsLevel::makeBall(hitbox::Vec2 position, hitbox::Vec2 velocity, float radius,
                                 BallKind kind, int owner) const
 {
     Ball ball;
@@ -128,20 +126,21 @@ Ball ManyObjectsLevel::makeBall(sf::Vector2f position, sf::Vector2f velocity, fl
 
 void ManyObjectsLevel::spawnCrowd(int count)
 {
-    const sf::FloatRect arena = crowdArena;
+    const hitbox::Box arena = crowdArena;
     const float averageRadius =
-        count > 0 ? std::sqrt(arena.width * arena.height * crowdCoverage / (pi * count)) : 1.f;
+        count > 0 ? std::sqrt(arena.width * arena.height * crowdCoverage / (hitbox::pi * count))
+                  : 1.f;
     std::uniform_real_distribution<float> x(0.f, 1.f);
     std::uniform_real_distribution<float> y(0.f, 1.f);
     std::uniform_real_distribution<float> size(0.7f, 1.3f);
-    std::uniform_real_distribution<float> angle(0.f, 2.f * pi);
+    std::uniform_real_distribution<float> angle(0.f, 2.f * hitbox::pi);
     std::uniform_real_distribution<float> speed(crowdSpeedMin, crowdSpeedMax);
     balls.reserve(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i)
     {
         const float radius = std::max(smallestRadius, averageRadius * size(random));
         // Fully inside the arena, so no ball starts in a wall.
-        const sf::Vector2f position{arena.left + radius + x(random) * (arena.width - 2.f * radius),
+        const hitbox::Vec2 position{arena.left + radius + x(random) * (arena.width - 2.f * radius),
                                     arena.top + radius + y(random) * (arena.height - 2.f * radius)};
         balls.push_back(makeBall(position, fromAngle(angle(random), speed(random)), radius,
                                  BallKind::Plain, 0));
@@ -152,11 +151,11 @@ void ManyObjectsLevel::spawnPairTableBalls(int count)
 {
     // Every third ball is a pickup: with the rules of task 3, pickup-pickup cells of the
     // table stay untested.
-    const sf::FloatRect arena = tableSceneArena;
+    const hitbox::Box arena = tableSceneArena;
     const float margin = tableBallRadius;
     std::uniform_real_distribution<float> x(arena.left + margin, arena.left + arena.width - margin);
     std::uniform_real_distribution<float> y(arena.top + margin, arena.top + arena.height - margin);
-    std::uniform_real_distribution<float> angle(0.f, 2.f * pi);
+    std::uniform_real_distribution<float> angle(0.f, 2.f * hitbox::pi);
     for (int i = 0; i < count; ++i)
     {
         const BallKind kind = i % 3 == 2 ? BallKind::Pickup : BallKind::Plain;
@@ -167,18 +166,18 @@ void ManyObjectsLevel::spawnPairTableBalls(int count)
 
 void ManyObjectsLevel::spawnLayersScene()
 {
-    const sf::FloatRect arena = crowdArena;
+    const hitbox::Box arena = crowdArena;
     balls.push_back(makeBall({arena.width * 0.25f, arena.height * 0.5f}, {0.f, shipSpeed},
                              shipRadius, BallKind::Ship, 0));
     balls.push_back(makeBall({arena.width * 0.75f, arena.height * 0.5f}, {0.f, -shipSpeed},
                              shipRadius, BallKind::Ship, 1));
     // Piles: pickups start on top of each other. With the rules they stay a pile.
-    const sf::Vector2f piles[] = {{600.f, 110.f},  {600.f, 450.f}, {150.f, 460.f},
+    const hitbox::Vec2 piles[] = {{600.f, 110.f},  {600.f, 450.f}, {150.f, 460.f},
                                   {1050.f, 100.f}, {430.f, 280.f}, {770.f, 280.f}};
     std::uniform_real_distribution<float> offset(-pickupRadius * 1.5f, pickupRadius * 1.5f);
-    for (const sf::Vector2f pile : piles)
+    for (const hitbox::Vec2 pile : piles)
         for (int i = 0; i < pickupsPerPile; ++i)
-            balls.push_back(makeBall(pile + sf::Vector2f(offset(random), offset(random)),
+            balls.push_back(makeBall(pile + hitbox::Vec2(offset(random), offset(random)),
                                      {0.f, 0.f}, pickupRadius, BallKind::Pickup, 0));
     fireTimer = 0.f;
     fireAngle = 0.f;
@@ -258,7 +257,7 @@ void ManyObjectsLevel::applyLayersSceneRules(float dt)
     for (const Ball& ball : balls)
         if (ball.kind == BallKind::Ship)
         {
-            const float angle = fireAngle + (ball.owner == 0 ? 0.f : pi);
+            const float angle = fireAngle + (ball.owner == 0 ? 0.f : hitbox::pi);
             shots.push_back(makeBall(ball.position, fromAngle(angle, bulletSpeed), bulletRadius,
                                      BallKind::Bullet, ball.owner));
         }
@@ -267,7 +266,7 @@ void ManyObjectsLevel::applyLayersSceneRules(float dt)
 
 void ManyObjectsLevel::moveBalls(float dt)
 {
-    const sf::FloatRect arena = getArena();
+    const hitbox::Box arena = getArena();
     const float right = arena.left + arena.width;
     const float bottom = arena.top + arena.height;
     for (Ball& ball : balls)
@@ -391,7 +390,7 @@ const std::vector<Ball>& ManyObjectsLevel::getBalls() const
     return balls;
 }
 
-sf::FloatRect ManyObjectsLevel::getArena() const
+hitbox::Box ManyObjectsLevel::getArena() const
 {
     return scene == Scene::PairTable ? tableSceneArena : crowdArena;
 }

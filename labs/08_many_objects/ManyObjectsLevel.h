@@ -82,7 +82,7 @@ public:
     Scene getScene() const;
     hitbox::BroadphaseMethod getMethod() const;
     const std::vector<Ball>& getBalls() const;
-    sf::FloatRect getArena() const;
+    hitbox::Box getArena() const;
     // This step: pairs the broadphase compared, pairs whose boxes overlap, and pairs whose
     // circles really touched (each one got one response).
     std::size_t getPairsTested() const;
@@ -103,7 +103,7 @@ private:
     void spawnCrowd(int count);
     void spawnPairTableBalls(int count);
     void spawnLayersScene();
-    Ball makeBall(sf::Vector2f position, sf::Vector2f velocity, float radius, BallKind kind,
+    Ball makeBall(hitbox::Vec2 position, hitbox::Vec2 velocity, float radius, BallKind kind,
                   int owner) const;
     void applyLayersSceneRules(float dt);
     void moveBalls(float dt);

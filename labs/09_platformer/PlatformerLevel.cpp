@@ -23,7 +23,7 @@ const float helpBarHeight = 24.f; // the App's help line sits under the map, not
 const float hudTextSize = 18.f;
 
 // The smallest box holding both boxes.
-sf::FloatRect unionOf(const sf::FloatRect& a, const sf::FloatRect& b)
+hitbox::Box unionOf(const hitbox::Box& a, const hitbox::Box& b)
 {
     const float left = std::min(a.left, b.left);
     const float top = std::min(a.top, b.top);
@@ -32,14 +32,14 @@ sf::FloatRect unionOf(const sf::FloatRect& a, const sf::FloatRect& b)
     return {left, top, right - left, bottom - top};
 }
 
-void addQuad(sf::VertexArray& quads, const sf::FloatRect& box, sf::Color color)
+void addQuad(sf::VertexArray& quads, const hitbox::Box& box, sf::Color color)
 {
-    const sf::Vector2f corners[4] = {{box.left, box.top},
+    const hitbox::Vec2 corners[4] = {{box.left, box.top},
                                      {box.left + box.width, box.top},
                                      {box.left + box.width, box.top + box.height},
                                      {box.left, box.top + box.height}};
     for (int index : {0, 1, 2, 0, 2, 3})
-        quads.append(sf::Vertex(corners[index], color));
+        quads.append(sf::Vertex(hitbox::toSfml(corners[index]), color));
 }
 } // namespace
 
@@ -57,7 +57,7 @@ const std::array<CollisionPoint, 8> PlatformerLevel::collisionPoints = {{
     {"right bottom", {1.f, 1.f}},
 }};
 
-sf::Vector2f PlatformerLevel::pointOn(const sf::FloatRect& box, const CollisionPoint& point)
+hitbox::Vec2 PlatformerLevel::pointOn(const hitbox::Box& box, const CollisionPoint& point)
 {
     return {box.left + box.width * (point.side.x + 1.f) / 2.f,
             box.top + box.height * (point.side.y + 1.f) / 2.f};
@@ -65,8 +65,8 @@ sf::Vector2f PlatformerLevel::pointOn(const sf::FloatRect& box, const CollisionP
 // [/slide]
 
 // [slide:platformer-least-penetration]
-hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, sf::Vector2f where,
-                                         const sf::FloatRect& tile)
+hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, hitbox::Vec2 where,
+                                         const hitbox::Box& tile)
 {
     // How far the point went into the tile, measured from the tile edge on the point's side
     // of the player (a left point came in through the tile's right edge, and so on).
@@ -99,7 +99,7 @@ PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
         for (int column = 0; column < map.getColumns(); ++column)
             if (map.isSolid(column, row))
             {
-                const sf::FloatRect box = map.tileBox(column, row);
+                const hitbox::Box box = map.tileBox(column, row);
                 addQuad(tileQuads, box, tileEdgeColor);
                 addQuad(tileQuads,
                         {box.left + 2.f, box.top + 2.f, box.width - 4.f, box.height - 4.f},
@@ -148,7 +148,7 @@ void PlatformerLevel::step()
     divePressed = false;
     player.steer(controls, grounded, speedCapOn, hitbox::stepSeconds);
 
-    const sf::FloatRect before = player.getBox();
+    const hitbox::Box before = player.getBox();
     contacts.clear();
     pushingTiles.clear();
     pointWasInside.fill(false);
@@ -167,15 +167,15 @@ void PlatformerLevel::step()
     }
 }
 
-void PlatformerLevel::moveThenResolve(const sf::FloatRect& before)
+void PlatformerLevel::moveThenResolve(const hitbox::Box& before)
 {
     player.setPosition(player.getPosition() + player.getVelocity() * hitbox::stepSeconds);
     resolvePenetration(before);
 }
 
-std::vector<sf::FloatRect> PlatformerLevel::solidTilesIn(const TileRegion& region) const
+std::vector<hitbox::Box> PlatformerLevel::solidTilesIn(const TileRegion& region) const
 {
-    std::vector<sf::FloatRect> solids;
+    std::vector<hitbox::Box> solids;
     for (int row = region.firstRow; row <= region.lastRow; ++row)
         for (int column = region.firstColumn; column <= region.lastColumn; ++column)
             if (map.isSolid(column, row))
@@ -183,7 +183,7 @@ std::vector<sf::FloatRect> PlatformerLevel::solidTilesIn(const TileRegion& regio
     return solids;
 }
 
-void PlatformerLevel::resolvePenetration(const sf::FloatRect& before)
+void PlatformerLevel::resolvePenetration(const hitbox::Box& before)
 {
     // [slide:platformer-resolve]
     sweptBounds = before;
@@ -194,9 +194,9 @@ void PlatformerLevel::resolvePenetration(const sf::FloatRect& before)
         testedRegion = map.tilesUnder(sweptBounds);
         bool pushed = false;
         for (std::size_t index = 0; index < collisionPoints.size(); ++index)
-            for (const sf::FloatRect& tile : solidTilesIn(testedRegion))
+            for (const hitbox::Box& tile : solidTilesIn(testedRegion))
             {
-                const sf::Vector2f where = pointOn(player.getBox(), collisionPoints[index]);
+                const hitbox::Vec2 where = pointOn(player.getBox(), collisionPoints[index]);
                 if (!hitbox::pointInBox(where, tile))
                     continue;
                 pointWasInside[index] = true;
@@ -221,7 +221,7 @@ void PlatformerLevel::applyPush(const hitbox::Contact& push)
     player.setPosition(player.getPosition() + push.normal * push.depth);
     // Stop the part of the velocity that goes into the surface (so gravity does not build up
     // while standing), and keep the part along it (so the player slides along walls).
-    sf::Vector2f velocity = player.getVelocity();
+    hitbox::Vec2 velocity = player.getVelocity();
     const float intoSurface = velocity.x * push.normal.x + velocity.y * push.normal.y;
     if (intoSurface < 0.f)
         velocity -= push.normal * intoSurface;
@@ -234,11 +234,11 @@ void PlatformerLevel::applyPush(const hitbox::Contact& push)
 }
 // [/slide]
 
-hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2f move) const
+hitbox::Hit PlatformerLevel::firstHitAlong(const hitbox::Box& box, hitbox::Vec2 move) const
 {
-    const sf::FloatRect moved{box.left + move.x, box.top + move.y, box.width, box.height};
+    const hitbox::Box moved{box.left + move.x, box.top + move.y, box.width, box.height};
     hitbox::Hit first;
-    for (const sf::FloatRect& tile : solidTilesIn(map.tilesUnder(unionOf(box, moved))))
+    for (const hitbox::Box& tile : solidTilesIn(map.tilesUnder(unionOf(box, moved))))
     {
         const hitbox::Hit hit = hitbox::sweepBoxVsBox(box, move, tile);
         if (hit && !hit.startedInside && hit.time < first.time)
@@ -252,9 +252,9 @@ hitbox::Hit PlatformerLevel::firstHitAlong(const sf::FloatRect& box, sf::Vector2
 // instead of moving and then repairing, sweep the player's box along its move and stop it where it
 // would first touch a tile. The rest of the move slides along the surface. A fast player can no
 // longer pass through a thin floor.
-void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
+void PlatformerLevel::moveWithSpeculativeContacts(const hitbox::Box& before)
 {
-    sf::Vector2f move = player.getVelocity() * hitbox::stepSeconds;
+    hitbox::Vec2 move = player.getVelocity() * hitbox::stepSeconds;
     for (int pass = 0; pass < maxResolvePasses && (move.x != 0.f || move.y != 0.f); ++pass)
     {
         const hitbox::Hit first = firstHitAlong(player.getBox(), move);
@@ -275,7 +275,7 @@ void PlatformerLevel::moveWithSpeculativeContacts(const sf::FloatRect& before)
 }
 // [/slide]
 
-void PlatformerLevel::placePlayer(sf::Vector2f topLeft)
+void PlatformerLevel::placePlayer(hitbox::Vec2 topLeft)
 {
     player = Player(topLeft);
     grounded = false;
@@ -284,7 +284,7 @@ void PlatformerLevel::placePlayer(sf::Vector2f topLeft)
 void PlatformerLevel::respawn()
 {
     // Stand on the bottom of the 'P' tile, in the middle of it.
-    const sf::Vector2f start = map.getPlayerStart();
+    const hitbox::Vec2 start = map.getPlayerStart();
     placePlayer({start.x + (TileMap::tileSize - Player::width) / 2.f,
                  start.y + TileMap::tileSize - Player::height});
 }
@@ -294,14 +294,14 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     target.draw(tileQuads);
 
     sf::RectangleShape body({Player::width, Player::height});
-    body.setPosition(player.getPosition());
+    body.setPosition(hitbox::toSfml(player.getPosition()));
     body.setFillColor(playerColor);
     target.draw(body);
     // Eyes on the side the player runs towards, so its direction is easy to follow.
     sf::RectangleShape eye({5.f, 9.f});
     eye.setFillColor(sf::Color(40, 30, 20));
     const float facing = player.getVelocity().x < 0.f ? 3.f : Player::width - 9.f;
-    eye.setPosition(player.getPosition() + sf::Vector2f(facing, 12.f));
+    eye.setPosition(hitbox::toSfml(player.getPosition() + hitbox::Vec2(facing, 12.f)));
     target.draw(eye);
 
     std::ostringstream hud;
@@ -328,11 +328,11 @@ void PlatformerLevel::renderDebug(hitbox::DebugRenderer& debug) const
             debug.box(map.tileBox(column, row), map.isSolid(column, row)
                                                     ? DebugRenderer::freeColor
                                                     : DebugRenderer::hintColor);
-    for (const sf::FloatRect& tile : pushingTiles)
+    for (const hitbox::Box& tile : pushingTiles)
         debug.box(tile, DebugRenderer::touchingColor);
     debug.box(sweptBounds, DebugRenderer::hintColor);
 
-    const sf::FloatRect box = player.getBox();
+    const hitbox::Box box = player.getBox();
     debug.box(box, contacts.empty() ? DebugRenderer::freeColor : DebugRenderer::touchingColor);
     debug.arrow(hitbox::centerOf(box), hitbox::centerOf(box) + player.getVelocity() * 0.25f,
                 DebugRenderer::velocityColor);
@@ -350,7 +350,7 @@ void PlatformerLevel::renderDebug(hitbox::DebugRenderer& debug) const
 
 sf::Vector2f PlatformerLevel::getWorldSize() const
 {
-    return map.getSizeInPixels() + sf::Vector2f(0.f, helpBarHeight);
+    return hitbox::toSfml(map.getSizeInPixels() + hitbox::Vec2(0.f, helpBarHeight));
 }
 
 std::string PlatformerLevel::getHelpText() const

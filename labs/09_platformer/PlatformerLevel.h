@@ -34,7 +34,7 @@
 struct CollisionPoint
 {
     const char* name;
-    sf::Vector2f side;
+    hitbox::Vec2 side;
 };
 
 class PlatformerLevel : public hitbox::Level
@@ -60,15 +60,15 @@ public:
     std::string describeState() const override;
 
     // Where a collision point lies on a box, in world pixels.
-    static sf::Vector2f pointOn(const sf::FloatRect& box, const CollisionPoint& point);
+    static hitbox::Vec2 pointOn(const hitbox::Box& box, const CollisionPoint& point);
     // The push that takes `point` (at `where`, inside `tile`) out of the tile: side points
     // straight back through their own side, corners along the axis of least penetration.
-    static hitbox::Contact pushOut(const CollisionPoint& point, sf::Vector2f where,
-                                   const sf::FloatRect& tile);
+    static hitbox::Contact pushOut(const CollisionPoint& point, hitbox::Vec2 where,
+                                   const hitbox::Box& tile);
 
     // Put the player somewhere (top-left corner of its box), standing still. For tests and
     // for restarting; the next step starts from there.
-    void placePlayer(sf::Vector2f topLeft);
+    void placePlayer(hitbox::Vec2 topLeft);
 
     const Player& getPlayer() const { return player; }
     const TileMap& getMap() const { return map; }
@@ -81,7 +81,7 @@ public:
     void setSpeculativeContacts(bool on) { speculative = on; }
     // The tiles looked at in the last step (the swept-bounds region), solid or not.
     const TileRegion& getTestedRegion() const { return testedRegion; }
-    const sf::FloatRect& getSweptBounds() const { return sweptBounds; }
+    const hitbox::Box& getSweptBounds() const { return sweptBounds; }
     // The pushes made in the last step, in the order they were made.
     const std::vector<hitbox::Contact>& getContacts() const { return contacts; }
     int getResolvePassesLastStep() const { return passesUsed; }
@@ -90,14 +90,14 @@ public:
 
 private:
     void step();
-    void moveThenResolve(const sf::FloatRect& before);
-    void moveWithSpeculativeContacts(const sf::FloatRect& before);
-    void resolvePenetration(const sf::FloatRect& before);
+    void moveThenResolve(const hitbox::Box& before);
+    void moveWithSpeculativeContacts(const hitbox::Box& before);
+    void resolvePenetration(const hitbox::Box& before);
     void applyPush(const hitbox::Contact& push);
     // The boxes of the solid tiles in a region.
-    std::vector<sf::FloatRect> solidTilesIn(const TileRegion& region) const;
+    std::vector<hitbox::Box> solidTilesIn(const TileRegion& region) const;
     // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
-    hitbox::Hit firstHitAlong(const sf::FloatRect& box, sf::Vector2f move) const;
+    hitbox::Hit firstHitAlong(const hitbox::Box& box, hitbox::Vec2 move) const;
     void respawn();
 
     TileMap map;
@@ -121,9 +121,9 @@ private:
     // What the last step found (the debug view and the tests read these).
     bool grounded = false;
     TileRegion testedRegion;
-    sf::FloatRect sweptBounds;
+    hitbox::Box sweptBounds;
     std::vector<hitbox::Contact> contacts;
-    std::vector<sf::FloatRect> pushingTiles;
+    std::vector<hitbox::Box> pushingTiles;
     std::array<bool, 8> pointWasInside{};
     int passesUsed = 0;
 };

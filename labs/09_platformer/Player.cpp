@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-Player::Player(sf::Vector2f startPosition) : position(startPosition) {}
+Player::Player(hitbox::Vec2 startPosition) : position(startPosition) {}
 
 void Player::steer(const PlayerControls& controls, bool grounded, bool capSpeed, float dt)
 {

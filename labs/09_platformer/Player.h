@@ -8,9 +8,7 @@
 #include "TileMap.h"
 
 #include "hitbox/app/App.h"
-
-#include <SFML/Graphics/Rect.hpp>
-#include <SFML/System/Vector2.hpp>
+#include "hitbox/geometry/Shapes.h"
 
 // What the keys ask for during one step.
 struct PlayerControls
@@ -40,20 +38,20 @@ public:
     static_assert(maxFallSpeed * hitbox::stepSeconds < TileMap::tileSize,
                   "the speed cap must keep every step shorter than a tile");
 
-    explicit Player(sf::Vector2f startPosition = {});
+    explicit Player(hitbox::Vec2 startPosition = {});
 
     // Change the velocity for one step of `dt` seconds from the controls. `grounded` says
     // whether the feet rested on a floor at the end of the last step; `capSpeed` turns the
     // speed cap on (a key in the lab turns it off to show the tunnelling it prevents).
     void steer(const PlayerControls& controls, bool grounded, bool capSpeed, float dt);
 
-    sf::FloatRect getBox() const { return {position.x, position.y, width, height}; }
-    sf::Vector2f getPosition() const { return position; }
-    sf::Vector2f getVelocity() const { return velocity; }
-    void setPosition(sf::Vector2f newPosition) { position = newPosition; }
-    void setVelocity(sf::Vector2f newVelocity) { velocity = newVelocity; }
+    hitbox::Box getBox() const { return {position.x, position.y, width, height}; }
+    hitbox::Vec2 getPosition() const { return position; }
+    hitbox::Vec2 getVelocity() const { return velocity; }
+    void setPosition(hitbox::Vec2 newPosition) { position = newPosition; }
+    void setVelocity(hitbox::Vec2 newVelocity) { velocity = newVelocity; }
 
 private:
-    sf::Vector2f position; // top-left corner of the box, pixels
-    sf::Vector2f velocity; // pixels per second
+    hitbox::Vec2 position; // top-left corner of the box, pixels
+    hitbox::Vec2 velocity; // pixels per second
 };

@@ -147,7 +147,7 @@ TileMap TileMap::load(const std::string& path)
     return parse(text, found);
 }
 
-sf::Vector2f TileMap::getSizeInPixels() const
+hitbox::Vec2 TileMap::getSizeInPixels() const
 {
     return {static_cast<float>(columns) * tileSize, static_cast<float>(rows) * tileSize};
 }
@@ -161,18 +161,18 @@ bool TileMap::isSolid(int column, int row) const
 }
 // [/slide]
 
-sf::FloatRect TileMap::tileBox(int column, int row) const
+hitbox::Box TileMap::tileBox(int column, int row) const
 {
     return {static_cast<float>(column) * tileSize, static_cast<float>(row) * tileSize, tileSize,
             tileSize};
 }
 
-TileRegion TileMap::tilesUnder(const sf::FloatRect& box) const
+TileRegion TileMap::tilesUnder(const hitbox::Box& box) const
 {
     // BEGIN TASK 3: the tiles under a box (the swept-bounds broad phase)
     if (!hitbox::isFinite(box))
         return {};
-    const sf::FloatRect b = hitbox::normalised(box);
+    const hitbox::Box b = hitbox::normalised(box);
     // A tile index clipped to -1..count before it becomes an int: a huge coordinate must not
     // overflow, and outside the map on either side stays outside.
     auto clampToMap = [](float index, int count)

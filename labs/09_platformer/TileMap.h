@@ -7,9 +7,7 @@
 #pragma once
 
 #include "hitbox/app/Assets.h"
-
-#include <SFML/Graphics/Rect.hpp>
-#include <SFML/System/Vector2.hpp>
+#include "hitbox/geometry/Shapes.h"
 
 #include <string>
 #include <vector>
@@ -59,22 +57,22 @@ public:
 
     int getColumns() const { return columns; }
     int getRows() const { return rows; }
-    sf::Vector2f getSizeInPixels() const;
+    hitbox::Vec2 getSizeInPixels() const;
     // The top-left corner of the 'P' tile, in pixels.
-    sf::Vector2f getPlayerStart() const { return playerStart; }
+    hitbox::Vec2 getPlayerStart() const { return playerStart; }
 
     // Outside the map there is nothing: a player who leaves it falls out of the world.
     bool isSolid(int column, int row) const;
-    sf::FloatRect tileBox(int column, int row) const;
+    hitbox::Box tileBox(int column, int row) const;
 
     // The tiles a box covers. Only tiles it SHARES AREA with count (the edge rule): a box
     // whose right edge lies exactly on a tile boundary does not reach into the next column.
     // The result is clipped to the map.
-    TileRegion tilesUnder(const sf::FloatRect& box) const;
+    TileRegion tilesUnder(const hitbox::Box& box) const;
 
 private:
     int columns = 0;
     int rows = 0;
     std::vector<std::string> tiles; // tiles[row][column], only '#' and '.'
-    sf::Vector2f playerStart;
+    hitbox::Vec2 playerStart;
 };

@@ -16,12 +16,12 @@
 
 namespace
 {
-const sf::Vector2f playerHitbox{30.f, 16.f};
-const sf::Vector2f playerSprite{44.f, 66.f};
-const sf::Vector2f enemyHitbox{34.f, 18.f};
-const sf::Vector2f enemySprite{48.f, 40.f};
-const sf::Vector2f trunkHitbox{22.f, 14.f};
-const sf::Vector2f treeSprite{96.f, 150.f};
+const hitbox::Vec2 playerHitbox{30.f, 16.f};
+const hitbox::Vec2 playerSprite{44.f, 66.f};
+const hitbox::Vec2 enemyHitbox{34.f, 18.f};
+const hitbox::Vec2 enemySprite{48.f, 40.f};
+const hitbox::Vec2 trunkHitbox{22.f, 14.f};
+const hitbox::Vec2 treeSprite{96.f, 150.f};
 const float wallThickness = 24.f;
 const float helpBarHeight = 24.f;
 
@@ -70,13 +70,13 @@ void TopDownLevel::buildScene()
     placePlayer({352.f, 296.f});
 }
 
-void TopDownLevel::addWall(const sf::FloatRect& wall)
+void TopDownLevel::addWall(const hitbox::Box& wall)
 {
     walls.push_back(wall);
     solids.push_back(wall);
 }
 
-void TopDownLevel::addTree(sf::Vector2f trunkFeet)
+void TopDownLevel::addTree(hitbox::Vec2 trunkFeet)
 {
     Actor tree;
     tree.feet = trunkFeet;
@@ -86,7 +86,7 @@ void TopDownLevel::addTree(sf::Vector2f trunkFeet)
     solids.push_back(tree.hitbox()); // only the trunk blocks; you walk behind the leaves
 }
 
-void TopDownLevel::addEnemy(sf::Vector2f feet)
+void TopDownLevel::addEnemy(hitbox::Vec2 feet)
 {
     Enemy enemy;
     enemy.body.feet = feet;
@@ -96,7 +96,7 @@ void TopDownLevel::addEnemy(sf::Vector2f feet)
     enemies.push_back(enemy);
 }
 
-void TopDownLevel::placePlayer(sf::Vector2f feet)
+void TopDownLevel::placePlayer(hitbox::Vec2 feet)
 {
     player = Actor{};
     player.feet = feet;
@@ -125,7 +125,7 @@ void TopDownLevel::handleInput(const Input& input, float)
     }
 }
 
-void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
+void TopDownLevel::moveAndSlide(Actor& actor, hitbox::Vec2 move) const
 {
     // BEGIN TASK 1: move along x and resolve, then along y and resolve
     // [slide:topdown-per-axis]
@@ -133,7 +133,7 @@ void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
     // into a wall, its right edge goes back to the wall's left edge (as in Rodrigo
     // Monteiro, "The guide to implementing 2D platformers", tile-based movement).
     actor.feet.x += move.x;
-    for (const sf::FloatRect& solid : solids)
+    for (const hitbox::Box& solid : solids)
         if (hitbox::boxVsBox(actor.hitbox(), solid))
         {
             if (move.x > 0.f)
@@ -144,7 +144,7 @@ void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
     // Then y. Blocked on y does not cancel the x move: walking diagonally into a wall
     // slides along it.
     actor.feet.y += move.y;
-    for (const sf::FloatRect& solid : solids)
+    for (const hitbox::Box& solid : solids)
         if (hitbox::boxVsBox(actor.hitbox(), solid))
         {
             if (move.y > 0.f)
@@ -159,7 +159,7 @@ void TopDownLevel::moveAndSlide(Actor& actor, sf::Vector2f move) const
 }
 
 // [slide:topdown-notice-radius]
-EnemyState TopDownLevel::chooseEnemyState(sf::Vector2f enemyFeet, sf::Vector2f playerFeet)
+EnemyState TopDownLevel::chooseEnemyState(hitbox::Vec2 enemyFeet, hitbox::Vec2 playerFeet)
 {
     // BEGIN TASK 2: attack inside the attack radius, chase inside the notice radius
     // Two circles around the enemy; the small one is checked first. pointInCircle compares
@@ -178,7 +178,7 @@ EnemyState TopDownLevel::chooseEnemyState(sf::Vector2f enemyFeet, sf::Vector2f p
 // [/slide]
 
 // [slide:topdown-knockback]
-bool TopDownLevel::hurt(Actor& victim, sf::Vector2f from, float invulnerableSeconds)
+bool TopDownLevel::hurt(Actor& victim, hitbox::Vec2 from, float invulnerableSeconds)
 {
     // BEGIN TASK 3: knockback and invulnerability time
     // Just hit: further hits do nothing for a while. Without this, an enemy standing on
@@ -202,7 +202,7 @@ void TopDownLevel::fadeKnockback(Actor& actor, float dt) const
 {
     const float speed = std::hypot(actor.knockback.x, actor.knockback.y);
     const float slower = std::max(0.f, speed - knockbackFade * dt);
-    actor.knockback = speed > 0.f ? actor.knockback * (slower / speed) : sf::Vector2f{};
+    actor.knockback = speed > 0.f ? actor.knockback * (slower / speed) : hitbox::Vec2{};
     actor.invulnerable = std::max(0.f, actor.invulnerable - dt);
 }
 
@@ -220,7 +220,7 @@ void TopDownLevel::update(float dt)
     if (player.health <= 0)
     {
         ++defeats;
-        const sf::Vector2f feet = player.feet;
+        const hitbox::Vec2 feet = player.feet;
         placePlayer(feet); // back on its feet, full health, where it fell
         player.invulnerable = playerInvulnerable;
     }
@@ -229,13 +229,13 @@ void TopDownLevel::update(float dt)
 void TopDownLevel::updatePlayer(float dt)
 {
     // Eight directions at the same speed: the diagonal is normalised, not 1.4 times faster.
-    sf::Vector2f velocity;
+    hitbox::Vec2 velocity;
     if (heldDirection.x != 0.f || heldDirection.y != 0.f)
     {
         velocity = directionFrom({0.f, 0.f}, heldDirection) * playerSpeed;
         facing = std::abs(heldDirection.x) >= std::abs(heldDirection.y)
-                     ? sf::Vector2f(heldDirection.x, 0.f)
-                     : sf::Vector2f(0.f, heldDirection.y);
+                     ? hitbox::Vec2(heldDirection.x, 0.f)
+                     : hitbox::Vec2(0.f, heldDirection.y);
     }
     // While knocked back, the hit moves the player, not the keys.
     if (player.knockback.x != 0.f || player.knockback.y != 0.f)
@@ -262,7 +262,7 @@ void TopDownLevel::updateEnemy(Enemy& enemy, float dt)
     enemy.state = chooseEnemyState(body.feet, player.feet);
     enemy.attackCooldown = std::max(0.f, enemy.attackCooldown - dt);
 
-    sf::Vector2f velocity;
+    hitbox::Vec2 velocity;
     if (enemy.state == EnemyState::Chase)
         velocity = directionFrom(body.feet, player.feet) * enemySpeed;
     if (enemy.state == EnemyState::Attack && enemy.attackCooldown <= 0.f)
@@ -276,12 +276,12 @@ void TopDownLevel::updateEnemy(Enemy& enemy, float dt)
     fadeKnockback(body, dt);
 }
 
-sf::FloatRect TopDownLevel::swordBox() const
+hitbox::Box TopDownLevel::swordBox() const
 {
     // A 40 x 40 box just in front of the player's feet, on the side it faces.
-    const sf::Vector2f reach{40.f, 40.f};
-    const sf::Vector2f center =
-        player.feet + sf::Vector2f(facing.x * (player.hitboxSize.x / 2.f + reach.x / 2.f),
+    const hitbox::Vec2 reach{40.f, 40.f};
+    const hitbox::Vec2 center =
+        player.feet + hitbox::Vec2(facing.x * (player.hitboxSize.x / 2.f + reach.x / 2.f),
                                    facing.y * (player.hitboxSize.y / 2.f + reach.y / 2.f));
     return {center.x - reach.x / 2.f, center.y - reach.y / 2.f, reach.x, reach.y};
 }
@@ -312,7 +312,7 @@ bool TopDownLevel::isBlinkedOut(const Actor& actor)
 
 namespace
 {
-void drawBox(sf::RenderTarget& target, const sf::FloatRect& box, sf::Color color)
+void drawBox(sf::RenderTarget& target, const hitbox::Box& box, sf::Color color)
 {
     sf::RectangleShape shape({box.width, box.height});
     shape.setPosition({box.left, box.top});
@@ -329,8 +329,8 @@ sf::Color faded(sf::Color color, bool fade)
 
 void drawTree(sf::RenderTarget& target, const Actor& tree)
 {
-    const sf::FloatRect sprite = tree.spriteBox();
-    const sf::FloatRect trunk{tree.feet.x - 12.f, sprite.top + sprite.height - 60.f, 24.f, 60.f};
+    const hitbox::Box sprite = tree.spriteBox();
+    const hitbox::Box trunk{tree.feet.x - 12.f, sprite.top + sprite.height - 60.f, 24.f, 60.f};
     drawBox(target, trunk, trunkColor);
     sf::CircleShape leaves(sprite.width / 2.f);
     leaves.setPosition({sprite.left, sprite.top});
@@ -343,7 +343,7 @@ void drawTree(sf::RenderTarget& target, const Actor& tree)
 
 void drawPerson(sf::RenderTarget& target, const Actor& actor)
 {
-    const sf::FloatRect sprite = actor.spriteBox();
+    const hitbox::Box sprite = actor.spriteBox();
     const bool fade = TopDownLevel::isBlinkedOut(actor);
     drawBox(target,
             {sprite.left + 6.f, sprite.top + 22.f, sprite.width - 12.f, sprite.height - 22.f},
@@ -356,7 +356,7 @@ void drawPerson(sf::RenderTarget& target, const Actor& actor)
 
 void drawSlime(sf::RenderTarget& target, const Enemy& enemy)
 {
-    const sf::FloatRect sprite = enemy.body.spriteBox();
+    const hitbox::Box sprite = enemy.body.spriteBox();
     const bool fade = TopDownLevel::isBlinkedOut(enemy.body);
     sf::CircleShape blob(sprite.width / 2.f);
     blob.setScale({1.f, sprite.height / sprite.width});
@@ -372,8 +372,8 @@ void drawSlime(sf::RenderTarget& target, const Enemy& enemy)
 
 void TopDownLevel::render(sf::RenderTarget& target) const
 {
-    drawBox(target, {{0.f, 0.f}, getWorldSize()}, groundColor);
-    for (const sf::FloatRect& wall : walls)
+    drawBox(target, {0.f, 0.f, getWorldSize().x, getWorldSize().y}, groundColor);
+    for (const hitbox::Box& wall : walls)
         drawBox(target, wall, wallColor);
 
     for (const DrawItem& item : drawOrder())
@@ -402,7 +402,7 @@ void TopDownLevel::render(sf::RenderTarget& target) const
 void TopDownLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     using hitbox::DebugRenderer;
-    for (const sf::FloatRect& solid : solids)
+    for (const hitbox::Box& solid : solids)
         debug.box(solid, DebugRenderer::freeColor);
     for (const Actor& tree : trees)
         debug.box(tree.spriteBox(), DebugRenderer::hintColor);

@@ -73,12 +73,12 @@ public:
     std::string describeState() const override;
 
     // What an enemy at `enemyFeet` does about a player at `playerFeet` (circle tests).
-    static EnemyState chooseEnemyState(sf::Vector2f enemyFeet, sf::Vector2f playerFeet);
+    static EnemyState chooseEnemyState(hitbox::Vec2 enemyFeet, hitbox::Vec2 playerFeet);
     // A hit on `victim` from something at `from`. Returns false when the hit did nothing
     // (the victim was still invulnerable).
-    static bool hurt(Actor& victim, sf::Vector2f from, float invulnerableSeconds);
+    static bool hurt(Actor& victim, hitbox::Vec2 from, float invulnerableSeconds);
     // Moves an actor by `move` pixels, stopping it at every wall and tree trunk.
-    void moveAndSlide(Actor& actor, sf::Vector2f move) const;
+    void moveAndSlide(Actor& actor, hitbox::Vec2 move) const;
     // Everything that walks or stands, back to front: sorted by Actor::depth().
     std::vector<DrawItem> drawOrder() const;
     // Drawn faded this frame? (blinking while invulnerable: 10 blinks a second)
@@ -86,17 +86,17 @@ public:
 
     // For tests: empty the scene but for its outer walls, then add things.
     void clearScene();
-    void addWall(const sf::FloatRect& wall);
-    void addTree(sf::Vector2f trunkFeet);
-    void addEnemy(sf::Vector2f feet);
-    void placePlayer(sf::Vector2f feet);
+    void addWall(const hitbox::Box& wall);
+    void addTree(hitbox::Vec2 trunkFeet);
+    void addEnemy(hitbox::Vec2 feet);
+    void placePlayer(hitbox::Vec2 feet);
 
     const Actor& getPlayer() const { return player; }
     const std::vector<Enemy>& getEnemies() const { return enemies; }
     const std::vector<Actor>& getTrees() const { return trees; }
-    const std::vector<sf::FloatRect>& getWalls() const { return walls; }
+    const std::vector<hitbox::Box>& getWalls() const { return walls; }
     bool isSwinging() const { return swordTimeLeft > 0.f; }
-    sf::FloatRect swordBox() const;
+    hitbox::Box swordBox() const;
     int getDefeats() const { return defeats; }
 
 private:
@@ -108,12 +108,12 @@ private:
     Actor player;
     std::vector<Enemy> enemies;
     std::vector<Actor> trees;
-    std::vector<sf::FloatRect> walls;  // walls and rocks
-    std::vector<sf::FloatRect> solids; // walls and tree trunks: what blocks feet
-    hitbox::LazyFont font;             // read by the first render(): tests need no font file
+    std::vector<hitbox::Box> walls;  // walls and rocks
+    std::vector<hitbox::Box> solids; // walls and tree trunks: what blocks feet
+    hitbox::LazyFont font;           // read by the first render(): tests need no font file
 
-    sf::Vector2f heldDirection; // from the keys, each axis -1, 0 or 1
-    sf::Vector2f facing{0.f, 1.f};
+    hitbox::Vec2 heldDirection; // from the keys, each axis -1, 0 or 1
+    hitbox::Vec2 facing{0.f, 1.f};
     bool swingPressed = false;
     float swordTimeLeft = 0.f;
     int defeats = 0;

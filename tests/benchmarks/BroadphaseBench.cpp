@@ -82,7 +82,7 @@ void Quadtree(benchmark::State& state)
 
 #ifdef HITBOX_HAVE_BOX2D
 
-b2AABB toAabb(const sf::FloatRect& box)
+b2AABB toAabb(const hitbox::Box& box)
 {
     b2AABB aabb;
     aabb.lowerBound.Set(box.left, box.top);
@@ -105,8 +105,8 @@ struct PairCollector
         if (other <= queried)
             return true; // each pair once: the lower index reports it
         // The tree's boxes are fattened: test the real boxes with Hitbox's edge rule.
-        const sf::FloatRect& a = boxes->items[queried].box;
-        const sf::FloatRect& b = boxes->items[other].box;
+        const hitbox::Box& a = boxes->items[queried].box;
+        const hitbox::Box& b = boxes->items[other].box;
         if (a.left < b.left + b.width && b.left < a.left + a.width && a.top < b.top + b.height &&
             b.top < a.top + a.height)
             pairs->push_back({queried, other});

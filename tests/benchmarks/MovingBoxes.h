@@ -18,6 +18,6 @@ struct MovingBoxes
 
     float worldSide = 0.f;
     std::vector<float> x, y, width, height, velocityX, velocityY;
-    std::vector<sf::Vector2f> lastMove; // the displacement of the last step, for Box2D
+    std::vector<hitbox::Vec2> lastMove; // the displacement of the last step, for Box2D
     std::vector<hitbox::BroadphaseItem> items;
 };

@@ -119,12 +119,12 @@ void BoxBox_BranchFree(benchmark::State& state)
 void BoxBox_FrameworkBoxVsBox(benchmark::State& state)
 {
     // hitbox::boxVsBox also rejects NaN and flips negative sizes: the safe, slower default.
-    std::vector<sf::FloatRect> boxes;
+    std::vector<hitbox::Box> boxes;
     const Boxes b = randomBoxes(1);
     for (std::size_t i = 0; i < b.minX.size(); ++i)
         boxes.push_back({b.minX[i], b.minY[i], b.maxX[i] - b.minX[i], b.maxY[i] - b.minY[i]});
     runTests(state, boxes,
-             [](const std::vector<sf::FloatRect>& all, std::size_t i, std::size_t j)
+             [](const std::vector<hitbox::Box>& all, std::size_t i, std::size_t j)
              { return hitbox::boxVsBox(all[i], all[j]); });
 }
 void CircleCircle_Branchy(benchmark::State& state)

@@ -50,7 +50,7 @@ std::vector<std::unique_ptr<Broadphase>> everyMethod()
 std::string describeBox(const BroadphaseItem& item)
 {
     std::ostringstream text;
-    sf::PrintTo(item.box, &text);
+    hitbox::PrintTo(item.box, &text);
     text << " layer=" << item.layer << " mask=" << item.mask;
     return text.str();
 }

@@ -213,9 +213,10 @@ TEST(Broadphase, DrawsItsStructureForTheDebugView)
         auto broadphase = hitbox::makeBroadphase(method);
         std::vector<Pair> pairs;
         broadphase->findPairs(items, pairs);
-        hitbox::DebugRenderer debug;
-        broadphase->drawDebug(debug);
-        EXPECT_GT(debug.getVertices().getVertexCount(), 0u) << hitbox::toString(method);
+        const hitbox::BroadphaseLayout layout = broadphase->layout();
+        const std::size_t parts =
+            layout.boxesPerCell.size() + layout.nodes.size() + layout.sweepIntervals.size();
+        EXPECT_GT(parts, 0u) << hitbox::toString(method);
     }
 }
 

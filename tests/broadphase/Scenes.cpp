@@ -20,7 +20,7 @@ int integer(std::mt19937& random, int low, int high)
     return std::uniform_int_distribution<int>(low, high)(random);
 }
 
-sf::FloatRect ordinaryBox(std::mt19937& random)
+hitbox::Box ordinaryBox(std::mt19937& random)
 {
     const float side = uniform(random, 8.f, 32.f); // sizes vary x4, like the benchmark
     return {uniform(random, 0.f, 1200.f), uniform(random, 0.f, 675.f), side,
@@ -44,7 +44,7 @@ std::vector<hitbox::BroadphaseItem> make(Kind kind, std::size_t count, bool useL
     std::vector<hitbox::BroadphaseItem> items(count);
     for (hitbox::BroadphaseItem& item : items)
     {
-        sf::FloatRect box = ordinaryBox(random);
+        hitbox::Box box = ordinaryBox(random);
         switch (kind)
         {
         case Kind::Scattered:
@@ -88,8 +88,8 @@ std::vector<hitbox::BroadphaseItem> make(Kind kind, std::size_t count, bool useL
             }
             break;
         case Kind::OneSpot:
-            box = integer(random, 0, 4) == 0 ? sf::FloatRect{100.f, 100.f, 0.f, 0.f}
-                                             : sf::FloatRect{100.f, 100.f, 20.f, 20.f};
+            box = integer(random, 0, 4) == 0 ? hitbox::Box{100.f, 100.f, 0.f, 0.f}
+                                             : hitbox::Box{100.f, 100.f, 20.f, 20.f};
             break;
         case Kind::NegativeSize:
             if (integer(random, 0, 1) == 0)

@@ -1,5 +1,5 @@
 // The World: broadphase, then rules, then the exact test, then collisionResponse on both.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/objects/GameObject.h"
 #include "hitbox/objects/World.h"

@@ -1,5 +1,5 @@
 // Animation: frames on a sprite sheet, advanced by time, looping or stopping, mirrored.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/objects/Animation.h"
 

@@ -1,5 +1,5 @@
 // Collision: the static facade the lecture uses, on GameObjects.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/objects/Collision.h"
 #include "hitbox/objects/GameObject.h"
@@ -88,7 +88,7 @@ TEST(Collision, ContactVersionsAgreeWithTheYesNoTests)
     GameObject b = makeSquare(45.f, 10.f, 50.f);
     const hitbox::Contact boxes = Collision::getBoundingBoxContact(&a, &b);
     ASSERT_TRUE(boxes.hit);
-    EXPECT_EQ(boxes.normal, sf::Vector2f(-1.f, 0.f)); // push a left, out of b
+    EXPECT_EQ(boxes.normal, hitbox::Vec2(-1.f, 0.f)); // push a left, out of b
     EXPECT_FLOAT_EQ(boxes.depth, 5.f);
 
     const hitbox::Contact circles = Collision::getBoundingCircleContact(&a, &b);

@@ -2,7 +2,7 @@
 // include paths (framework/compat/Framework/), builds and behaves as the README says.
 // A course lab includes "Framework/GameObject.h"; these tests reach the same headers as
 // "compat/Framework/..." because framework/ is already on the include path.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "compat/Framework/Animation.h"
 #include "compat/Framework/BaseLevel.h"

@@ -1,7 +1,8 @@
 // The debug renderer builds its lines without a window; assets are found or named.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/app/Assets.h"
+#include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/objects/GameObject.h"
 
@@ -9,6 +10,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <vector>
 
 TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
 {
@@ -17,6 +19,24 @@ TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
     ASSERT_EQ(debug.getVertices().getVertexCount(), 4u * 6u); // two triangles a line
     EXPECT_EQ(debug.getVertices().getPrimitiveType(), sf::PrimitiveType::Triangles);
     EXPECT_EQ(debug.getVertices()[0].color, hitbox::DebugRenderer::freeColor);
+}
+
+TEST(BroadphaseDrawing, EachMethodsStructureIsDrawn)
+{
+    std::vector<hitbox::BroadphaseItem> items(20, hitbox::BroadphaseItem{{0.f, 0.f, 30.f, 30.f}});
+    for (std::size_t i = 0; i < items.size(); ++i)
+        items[i].box.left = 20.f * static_cast<float>(i);
+    for (hitbox::BroadphaseMethod method :
+         {hitbox::BroadphaseMethod::SortAndSweep, hitbox::BroadphaseMethod::Grid,
+          hitbox::BroadphaseMethod::Quadtree})
+    {
+        auto broadphase = hitbox::makeBroadphase(method);
+        std::vector<hitbox::Pair> pairs;
+        broadphase->findPairs(items, pairs);
+        hitbox::DebugRenderer debug;
+        hitbox::drawBroadphase(debug, broadphase->layout());
+        EXPECT_GT(debug.getVertices().getVertexCount(), 0u) << hitbox::toString(method);
+    }
 }
 
 TEST(DebugRenderer, TouchingObjectsUseTheTouchingColourAndShowVelocity)

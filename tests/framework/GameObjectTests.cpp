@@ -1,6 +1,6 @@
 // GameObject: the collision box measured from the origin point, following the shape until
 // set, world space under move/scale/rotation; the bounding circle; the course API's flags.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/objects/GameObject.h"
 
@@ -155,7 +155,7 @@ TEST(GameObject, DefaultCircleIsInscribedInTheCollisionBox)
     ball.setOrigin({20.f, 20.f});
     ball.setPosition({300.f, 200.f});
     const hitbox::Circle circle = ball.getBoundingCircle();
-    EXPECT_EQ(circle.center, sf::Vector2f(300.f, 200.f));
+    EXPECT_EQ(circle.center, hitbox::Vec2(300.f, 200.f));
     EXPECT_FLOAT_EQ(circle.radius, 20.f);
 }
 
@@ -165,7 +165,7 @@ TEST(GameObject, DefaultCircleUsesTheShorterSideAndTheScale)
     object.setSize({60.f, 20.f});
     object.setPosition({0.f, 0.f});
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 10.f);
-    EXPECT_EQ(object.getBoundingCircle().center, sf::Vector2f(30.f, 10.f));
+    EXPECT_EQ(object.getBoundingCircle().center, hitbox::Vec2(30.f, 10.f));
     object.setScale({2.f, 2.f});
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 20.f);
     // Stretched one way: still the circle inside the world box, whichever side is shorter.
@@ -183,7 +183,7 @@ TEST(GameObject, ConfiguredCircleIsMeasuredFromTheOriginPoint)
     object.setOrigin({25.f, 25.f});
     object.setPosition({100.f, 100.f});
     object.setBoundingCircle({0.f, -10.f}, 8.f);
-    EXPECT_EQ(object.getBoundingCircle().center, sf::Vector2f(100.f, 90.f));
+    EXPECT_EQ(object.getBoundingCircle().center, hitbox::Vec2(100.f, 90.f));
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 8.f);
     object.clearBoundingCircle();
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 25.f);

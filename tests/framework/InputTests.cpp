@@ -1,5 +1,5 @@
 // Input: down / pressed this frame / released this frame, the mouse, and bad key codes.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/app/Input.h"
 

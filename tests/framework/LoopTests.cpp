@@ -1,6 +1,6 @@
 // The application loop's pieces that need no window: the fixed step, letterboxing, the
 // command line, headless simulation.
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/app/App.h"
 #include "hitbox/app/FixedStep.h"

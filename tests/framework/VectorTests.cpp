@@ -1,5 +1,5 @@
 // Vector / VectorHelper: the course's static vector helpers (length, unit vector, dot).
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/course/Vector.h"
 #include "hitbox/course/VectorHelper.h"

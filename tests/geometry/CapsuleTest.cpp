@@ -22,16 +22,16 @@ const Capsule bar{{0.f, 0.f}, {100.f, 0.f}, 10.f}; // lying along the x axis
 TEST(ClosestPointOnSegment, IsTheShadowKeptOnTheSegment)
 {
     EXPECT_EQ(closestPointOnSegment({30.f, 40.f}, {0.f, 0.f}, {100.f, 0.f}),
-              sf::Vector2f(30.f, 0.f));
+              hitbox::Vec2(30.f, 0.f));
     EXPECT_EQ(closestPointOnSegment({-30.f, 40.f}, {0.f, 0.f}, {100.f, 0.f}),
-              sf::Vector2f(0.f, 0.f));
+              hitbox::Vec2(0.f, 0.f));
     EXPECT_EQ(closestPointOnSegment({130.f, -5.f}, {0.f, 0.f}, {100.f, 0.f}),
-              sf::Vector2f(100.f, 0.f));
+              hitbox::Vec2(100.f, 0.f));
 }
 
 TEST(ClosestPointOnSegment, ASegmentWithNoLengthIsItsStart)
 {
-    EXPECT_EQ(closestPointOnSegment({30.f, 40.f}, {5.f, 5.f}, {5.f, 5.f}), sf::Vector2f(5.f, 5.f));
+    EXPECT_EQ(closestPointOnSegment({30.f, 40.f}, {5.f, 5.f}, {5.f, 5.f}), hitbox::Vec2(5.f, 5.f));
 }
 
 TEST(ClosestPointsOfSegments, CrossingSegmentsMeetAtTheCrossing)
@@ -46,8 +46,8 @@ TEST(ClosestPointsOfSegments, AnEndAgainstTheMiddleOfTheOther)
 {
     const auto points =
         hitbox::closestPointsOfSegments({50.f, 5.f}, {50.f, 30.f}, {0.f, 0.f}, {100.f, 0.f});
-    EXPECT_EQ(points.first, sf::Vector2f(50.f, 5.f));
-    EXPECT_EQ(points.second, sf::Vector2f(50.f, 0.f));
+    EXPECT_EQ(points.first, hitbox::Vec2(50.f, 5.f));
+    EXPECT_EQ(points.second, hitbox::Vec2(50.f, 0.f));
 }
 
 TEST(CapsuleVsCircle, NearTheSidePushesStraightAway)
@@ -55,9 +55,9 @@ TEST(CapsuleVsCircle, NearTheSidePushesStraightAway)
     // A = the capsule: the normal points out of the circle towards the capsule.
     const Contact contact = hitbox::capsuleVsCircle(bar, Circle{{40.f, 15.f}, 10.f});
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
-    EXPECT_EQ(contact.point, sf::Vector2f(40.f, 5.f)); // on the circle's rim
+    EXPECT_EQ(contact.point, hitbox::Vec2(40.f, 5.f)); // on the circle's rim
 }
 
 TEST(CapsuleVsCircle, NearARoundEndPushesAwayFromTheEnd)
@@ -111,7 +111,7 @@ TEST(CapsuleVsCapsule, ParallelCapsulesPushApartAcross)
     const Contact contact =
         hitbox::capsuleVsCapsule(Capsule{{20.f, 15.f}, {80.f, 15.f}, 10.f}, bar);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, 1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, 1.f));
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
 }
 
@@ -121,9 +121,9 @@ TEST(CapsuleVsCapsule, EndToSideUsesTheClosestPoints)
     const Capsule standing{{50.f, 10.f}, {50.f, 60.f}, 4.f};
     const Contact contact = hitbox::capsuleVsCapsule(standing, bar);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, 1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, 1.f));
     EXPECT_FLOAT_EQ(contact.depth, 4.f);
-    EXPECT_EQ(contact.point, sf::Vector2f(50.f, 10.f)); // on B's surface
+    EXPECT_EQ(contact.point, hitbox::Vec2(50.f, 10.f)); // on B's surface
 }
 
 TEST(CapsuleVsCapsule, TouchingDoesNotCollide)
@@ -138,7 +138,7 @@ TEST(CapsuleVsCapsule, CrossingCoresArePushedClearOfTheOther)
     const Capsule crossing{{50.f, -30.f}, {60.f, 20.f}, 5.f};
     const Contact contact = hitbox::capsuleVsCapsule(crossing, bar);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f)); // A's middle is above B's line
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f)); // A's middle is above B's line
     EXPECT_FLOAT_EQ(contact.depth, 15.f + 20.f);        // its lower end is 20 px below
     const Capsule moved{crossing.start + contact.normal * contact.depth,
                         crossing.end + contact.normal * contact.depth, 5.f};
@@ -165,18 +165,18 @@ TEST(CapsuleVsCapsule, SwappingReversesTheNormal)
 
 TEST(CapsuleVsPolygon, ResolvesAgainstAFace)
 {
-    const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
+    const hitbox::Polygon floor = hitbox::toPolygon(hitbox::Box(0.f, 100.f, 200.f, 50.f));
     const Contact contact =
         hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, 8.f}, floor);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 3.f);
     EXPECT_FLOAT_EQ(contact.point.y, 100.f);
 }
 
 TEST(CapsuleVsPolygon, ARoundEndNearACornerUsesTheCornerDirection)
 {
-    const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
+    const hitbox::Polygon floor = hitbox::toPolygon(hitbox::Box(0.f, 100.f, 200.f, 50.f));
     // End 5 px from the corner (0, 100) along (-0.6, -0.8), radius 8: 3 px in.
     const Contact contact =
         hitbox::capsuleVsPolygon(Capsule{{-3.f, 96.f}, {-60.f, 96.f}, 8.f}, floor);
@@ -188,13 +188,13 @@ TEST(CapsuleVsPolygon, ARoundEndNearACornerUsesTheCornerDirection)
 
 TEST(CapsuleVsPolygon, TouchingDoesNotCollide)
 {
-    const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
+    const hitbox::Polygon floor = hitbox::toPolygon(hitbox::Box(0.f, 100.f, 200.f, 50.f));
     EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{20.f, 92.f}, {80.f, 92.f}, 8.f}, floor));
 }
 
 TEST(CapsuleVsPolygon, ZeroRadiusIsASegmentThatMustReachInside)
 {
-    const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
+    const hitbox::Polygon floor = hitbox::toPolygon(hitbox::Box(0.f, 100.f, 200.f, 50.f));
     EXPECT_TRUE(hitbox::capsuleVsPolygon(Capsule{{50.f, 90.f}, {50.f, 110.f}, 0.f}, floor));
     EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{0.f, 100.f}, {300.f, 100.f}, 0.f},
                                           floor)); // along an edge
@@ -205,7 +205,7 @@ TEST(CapsuleVsPolygon, ZeroRadiusIsASegmentThatMustReachInside)
 
 TEST(CapsuleVsPolygon, EmptyNaNOrNegativeRadiusNeverCollides)
 {
-    const hitbox::Polygon floor = hitbox::toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f));
+    const hitbox::Polygon floor = hitbox::toPolygon(hitbox::Box(0.f, 100.f, 200.f, 50.f));
     EXPECT_FALSE(
         hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, 8.f}, hitbox::Polygon{}));
     EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{20.f, 95.f}, {80.f, 95.f}, -8.f}, floor));

@@ -22,9 +22,9 @@ using hitbox::toPolygon;
 namespace
 {
 const float notANumber = std::numeric_limits<float>::quiet_NaN();
-const Polygon ground = toPolygon(sf::FloatRect(0.f, 100.f, 200.f, 50.f)); // x 0..200, y 100..150
+const Polygon ground = toPolygon(hitbox::Box(0.f, 100.f, 200.f, 50.f)); // x 0..200, y 100..150
 
-void expectNear(sf::Vector2f actual, sf::Vector2f expected, float tolerance = 1e-4f)
+void expectNear(hitbox::Vec2 actual, hitbox::Vec2 expected, float tolerance = 1e-4f)
 {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << ::testing::PrintToString(actual);
     EXPECT_NEAR(actual.y, expected.y, tolerance) << ::testing::PrintToString(actual);
@@ -36,11 +36,11 @@ Polygon reversed(Polygon polygon)
     return polygon;
 }
 
-Polygon diamond(sf::Vector2f centre, float halfDiagonal)
+Polygon diamond(hitbox::Vec2 centre, float halfDiagonal)
 {
     return Polygon{
-        {centre + sf::Vector2f(0.f, -halfDiagonal), centre + sf::Vector2f(halfDiagonal, 0.f),
-         centre + sf::Vector2f(0.f, halfDiagonal), centre + sf::Vector2f(-halfDiagonal, 0.f)}};
+        {centre + hitbox::Vec2(0.f, -halfDiagonal), centre + hitbox::Vec2(halfDiagonal, 0.f),
+         centre + hitbox::Vec2(0.f, halfDiagonal), centre + hitbox::Vec2(-halfDiagonal, 0.f)}};
 }
 } // namespace
 
@@ -48,27 +48,27 @@ Polygon diamond(sf::Vector2f centre, float halfDiagonal)
 
 TEST(ToPolygon, ABoxListsItsCornersDownTheLeftSideFirst)
 {
-    const Polygon box = toPolygon(sf::FloatRect(10.f, 20.f, 30.f, 40.f));
+    const Polygon box = toPolygon(hitbox::Box(10.f, 20.f, 30.f, 40.f));
     ASSERT_EQ(box.points.size(), 4u);
-    EXPECT_EQ(box.points[0], sf::Vector2f(10.f, 20.f));
-    EXPECT_EQ(box.points[1], sf::Vector2f(10.f, 60.f));
-    EXPECT_EQ(box.points[2], sf::Vector2f(40.f, 60.f));
-    EXPECT_EQ(box.points[3], sf::Vector2f(40.f, 20.f));
+    EXPECT_EQ(box.points[0], hitbox::Vec2(10.f, 20.f));
+    EXPECT_EQ(box.points[1], hitbox::Vec2(10.f, 60.f));
+    EXPECT_EQ(box.points[2], hitbox::Vec2(40.f, 60.f));
+    EXPECT_EQ(box.points[3], hitbox::Vec2(40.f, 20.f));
     // Negative sizes: the same box.
-    EXPECT_EQ(toPolygon(sf::FloatRect(40.f, 60.f, -30.f, -40.f)).points, box.points);
+    EXPECT_EQ(toPolygon(hitbox::Box(40.f, 60.f, -30.f, -40.f)).points, box.points);
 }
 
 TEST(ToPolygon, AnUnturnedOrientedBoxIsTheAxisAlignedBox)
 {
     const Polygon turned = toPolygon(OrientedBox{{25.f, 40.f}, {15.f, 20.f}, 0.f});
-    EXPECT_EQ(turned.points, toPolygon(sf::FloatRect(10.f, 20.f, 30.f, 40.f)).points);
+    EXPECT_EQ(turned.points, toPolygon(hitbox::Box(10.f, 20.f, 30.f, 40.f)).points);
 }
 
 TEST(ToPolygon, QuarterTurnsAreExact)
 {
     // Turned 90 degrees (clockwise on screen), a 30 x 40 box covers 40 x 30.
     const Polygon turned = toPolygon(OrientedBox{{0.f, 0.f}, {15.f, 20.f}, 90.f});
-    for (sf::Vector2f corner : turned.points)
+    for (hitbox::Vec2 corner : turned.points)
     {
         EXPECT_EQ(std::fabs(corner.x), 20.f);
         EXPECT_EQ(std::fabs(corner.y), 15.f);
@@ -88,10 +88,10 @@ TEST(ToPolygon, TurnsClockwiseOnScreenLikeSfml)
 
 TEST(PolygonVsPolygon, OverlappingBoxesGiveTheMinimumTranslation)
 {
-    const Polygon crate = toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 45.f)); // 5 px into the floor
+    const Polygon crate = toPolygon(hitbox::Box(50.f, 60.f, 40.f, 45.f)); // 5 px into the floor
     const Contact contact = polygonVsPolygon(crate, ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f)); // out of the floor, towards the crate
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f)); // out of the floor, towards the crate
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
     EXPECT_FLOAT_EQ(contact.point.y, 100.f); // on the floor's surface
 }
@@ -106,10 +106,10 @@ TEST(PolygonVsPolygon, AgreesWithBoxVsBoxContactOnAxisAlignedBoxes)
     int hits = 0;
     for (int i = 0; i < 20000; ++i)
     {
-        const sf::FloatRect a(float(coordinate(random)), float(coordinate(random)),
-                              float(size(random)), float(size(random)));
-        const sf::FloatRect b(float(coordinate(random)), float(coordinate(random)),
-                              float(size(random)), float(size(random)));
+        const hitbox::Box a(float(coordinate(random)), float(coordinate(random)),
+                            float(size(random)), float(size(random)));
+        const hitbox::Box b(float(coordinate(random)), float(coordinate(random)),
+                            float(size(random)), float(size(random)));
         const bool bothFlat =
             (a.width == 0.f || a.height == 0.f) && (b.width == 0.f || b.height == 0.f);
         if (bothFlat)
@@ -130,8 +130,8 @@ TEST(PolygonVsPolygon, AgreesWithBoxVsBoxContactOnAxisAlignedBoxes)
 
 TEST(PolygonVsPolygon, TouchingEdgesDoNotCollide)
 {
-    EXPECT_FALSE(polygonVsPolygon(toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 40.f)), ground));
-    EXPECT_FALSE(polygonVsPolygon(toPolygon(sf::FloatRect(200.f, 100.f, 10.f, 10.f)), ground));
+    EXPECT_FALSE(polygonVsPolygon(toPolygon(hitbox::Box(50.f, 60.f, 40.f, 40.f)), ground));
+    EXPECT_FALSE(polygonVsPolygon(toPolygon(hitbox::Box(200.f, 100.f, 10.f, 10.f)), ground));
 }
 
 TEST(PolygonVsPolygon, ACornerTouchingAnEdgeDoesNotCollide)
@@ -141,9 +141,9 @@ TEST(PolygonVsPolygon, ACornerTouchingAnEdgeDoesNotCollide)
     // 2 px lower it is 2 px in, and the shortest way out is straight up.
     const Contact contact = polygonVsPolygon(diamond({100.f, 92.f}, 10.f), ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 2.f);
-    EXPECT_EQ(contact.point, sf::Vector2f(100.f, 100.f));
+    EXPECT_EQ(contact.point, hitbox::Vec2(100.f, 100.f));
 }
 
 TEST(PolygonVsPolygon, RotatedBoxesWhoseBoundingBoxesOverlapCanBeApart)
@@ -180,10 +180,9 @@ TEST(PolygonVsPolygon, SwappingTheShapesReversesTheNormal)
 TEST(PolygonVsPolygon, APolygonInsideAnotherLeavesTheShortWay)
 {
     // A small box inside the floor, 3 px from its left side.
-    const Contact contact =
-        polygonVsPolygon(toPolygon(sf::FloatRect(3.f, 110.f, 5.f, 5.f)), ground);
+    const Contact contact = polygonVsPolygon(toPolygon(hitbox::Box(3.f, 110.f, 5.f, 5.f)), ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_FLOAT_EQ(contact.depth, 8.f); // its right side must clear x = 0
 }
 
@@ -192,10 +191,10 @@ TEST(PolygonVsPolygon, MovingByTheContactLeavesThemTouching)
     Polygon crate = toPolygon(OrientedBox{{60.f, 97.f}, {25.f, 8.f}, 20.f});
     const Contact contact = polygonVsPolygon(crate, ground);
     ASSERT_TRUE(contact);
-    for (sf::Vector2f& p : crate.points)
+    for (hitbox::Vec2& p : crate.points)
         p += contact.normal * (contact.depth * 0.99f);
     EXPECT_TRUE(polygonVsPolygon(crate, ground)); // 1% short: still in
-    for (sf::Vector2f& p : crate.points)
+    for (hitbox::Vec2& p : crate.points)
         p += contact.normal * (contact.depth * 0.02f);
     EXPECT_FALSE(polygonVsPolygon(crate, ground)); // 1% past: out
 }
@@ -207,7 +206,7 @@ TEST(PolygonVsPolygon, APointCollidesOnlyStrictlyInside)
     EXPECT_FALSE(polygonVsPolygon(Polygon{{{0.f, 100.f}}}, ground));  // on the corner
     const Contact contact = polygonVsPolygon(Polygon{{{10.f, 102.f}}}, ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 2.f);
 }
 
@@ -225,15 +224,15 @@ TEST(PolygonVsPolygon, ShapesWithNoAreaNeverCollideWithEachOther)
     const Polygon down{{{0.f, 10.f}, {10.f, 0.f}}};
     EXPECT_FALSE(polygonVsPolygon(across, down)); // crossing segments
     EXPECT_FALSE(polygonVsPolygon(Polygon{{{5.f, 5.f}}}, across));
-    EXPECT_FALSE(polygonVsPolygon(toPolygon(sf::FloatRect(0.f, 5.f, 10.f, 0.f)),
-                                  toPolygon(sf::FloatRect(5.f, 0.f, 0.f, 10.f))));
+    EXPECT_FALSE(polygonVsPolygon(toPolygon(hitbox::Box(0.f, 5.f, 10.f, 0.f)),
+                                  toPolygon(hitbox::Box(5.f, 0.f, 0.f, 10.f))));
 }
 
 TEST(PolygonVsPolygon, RepeatedPointsAreIgnored)
 {
-    const Polygon crate = toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 45.f));
+    const Polygon crate = toPolygon(hitbox::Box(50.f, 60.f, 40.f, 45.f));
     Polygon stuttering;
-    for (sf::Vector2f p : crate.points)
+    for (hitbox::Vec2 p : crate.points)
     {
         stuttering.points.push_back(p);
         stuttering.points.push_back(p);
@@ -241,7 +240,7 @@ TEST(PolygonVsPolygon, RepeatedPointsAreIgnored)
     stuttering.points.push_back(crate.points[0]); // closed by repeating the first point
     const Contact contact = polygonVsPolygon(stuttering, ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
 }
 
@@ -271,30 +270,30 @@ TEST(OrientedBoxVsOrientedBox, TurningABoxCanMakeItCollide)
 TEST(FindSeparatingAxis, ApartGivesTheWidestGapPointingTowardsA)
 {
     const Polygon right =
-        toPolygon(sf::FloatRect(210.f, 100.f, 20.f, 20.f)); // 10 px right of the floor
+        toPolygon(hitbox::Box(210.f, 100.f, 20.f, 20.f)); // 10 px right of the floor
     const AxisReport report = hitbox::findSeparatingAxis(right, ground);
     EXPECT_TRUE(report.separated);
-    EXPECT_EQ(report.axis, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(report.axis, hitbox::Vec2(1.f, 0.f));
     EXPECT_FLOAT_EQ(report.gap, 10.f);
     const AxisReport swapped = hitbox::findSeparatingAxis(ground, right);
-    EXPECT_EQ(swapped.axis, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(swapped.axis, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(FindSeparatingAxis, TouchingIsSeparatedWithAZeroGap)
 {
     const AxisReport report =
-        hitbox::findSeparatingAxis(toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 40.f)), ground);
+        hitbox::findSeparatingAxis(toPolygon(hitbox::Box(50.f, 60.f, 40.f, 40.f)), ground);
     EXPECT_TRUE(report.separated);
     EXPECT_EQ(report.gap, 0.f);
-    EXPECT_EQ(report.axis, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(report.axis, hitbox::Vec2(0.f, -1.f));
 }
 
 TEST(FindSeparatingAxis, OverlappingGivesTheLeastOverlapAsANegativeGap)
 {
-    const Polygon crate = toPolygon(sf::FloatRect(50.f, 60.f, 40.f, 45.f));
+    const Polygon crate = toPolygon(hitbox::Box(50.f, 60.f, 40.f, 45.f));
     const AxisReport report = hitbox::findSeparatingAxis(crate, ground);
     EXPECT_FALSE(report.separated);
-    EXPECT_EQ(report.axis, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(report.axis, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(report.gap, -5.f);
 }
 
@@ -302,7 +301,7 @@ TEST(FindSeparatingAxis, NothingToTestGivesNoAxis)
 {
     const AxisReport report = hitbox::findSeparatingAxis(Polygon{}, ground);
     EXPECT_TRUE(report.separated);
-    EXPECT_EQ(report.axis, sf::Vector2f(0.f, 0.f));
+    EXPECT_EQ(report.axis, hitbox::Vec2(0.f, 0.f));
     EXPECT_EQ(report.gap, 0.f);
 }
 
@@ -312,25 +311,25 @@ TEST(CircleVsPolygon, NearAnEdgePushesStraightOut)
 {
     const Contact contact = hitbox::circleVsPolygon(Circle{{50.f, 95.f}, 10.f}, ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
-    EXPECT_EQ(contact.point, sf::Vector2f(50.f, 100.f));
+    EXPECT_EQ(contact.point, hitbox::Vec2(50.f, 100.f));
 }
 
 TEST(CircleVsPolygon, NearACornerPushesAwayFromTheCorner)
 {
     const Contact contact = hitbox::circleVsPolygon(Circle{{-3.f, 96.f}, 10.f}, ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(-0.6f, -0.8f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(-0.6f, -0.8f));
     EXPECT_FLOAT_EQ(contact.depth, 5.f);
-    EXPECT_EQ(contact.point, sf::Vector2f(0.f, 100.f));
+    EXPECT_EQ(contact.point, hitbox::Vec2(0.f, 100.f));
 }
 
 TEST(CircleVsPolygon, ACentreInsideLeavesThroughTheNearestEdge)
 {
     const Contact contact = hitbox::circleVsPolygon(Circle{{197.f, 120.f}, 4.f}, ground);
     ASSERT_TRUE(contact);
-    EXPECT_EQ(contact.normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(contact.normal, hitbox::Vec2(1.f, 0.f));
     EXPECT_FLOAT_EQ(contact.depth, 7.f);
 }
 

@@ -17,9 +17,9 @@ namespace
 const float dt = 1.f / 120.f;
 
 // A floor of ten separate 32 px tiles, stored left to right, top at y = 100.
-std::vector<sf::FloatRect> tiledFloor()
+std::vector<hitbox::Box> tiledFloor()
 {
-    std::vector<sf::FloatRect> tiles;
+    std::vector<hitbox::Box> tiles;
     for (int i = 0; i < 10; ++i)
         tiles.push_back({32.f * float(i), 100.f, 32.f, 32.f});
     return tiles;
@@ -30,8 +30,8 @@ std::vector<sf::FloatRect> tiledFloor()
 // covered in any one step.
 float shortestStep(bool sortByTime)
 {
-    const std::vector<sf::FloatRect> tiles = tiledFloor();
-    sf::FloatRect box(290.f, 80.f, 20.f, 20.f);
+    const std::vector<hitbox::Box> tiles = tiledFloor();
+    hitbox::Box box(290.f, 80.f, 20.f, 20.f);
     float shortest = 1e9f;
     for (int step = 0; step < 100; ++step)
     {
@@ -62,35 +62,35 @@ TEST(MoveBoxAndSlide, StaysOnTopOfTheFloorAndLosesTheFallingSpeed)
         hitbox::moveBoxAndSlide({100.f, 70.f, 20.f, 20.f}, {60.f, 3000.f}, dt, tiledFloor());
     EXPECT_EQ(result.box.top, 80.f);          // 10 px gap closed, resting on the floor
     EXPECT_FLOAT_EQ(result.box.left, 100.5f); // the sideways motion is kept
-    EXPECT_EQ(result.velocity, sf::Vector2f(60.f, 0.f));
+    EXPECT_EQ(result.velocity, hitbox::Vec2(60.f, 0.f));
     ASSERT_FALSE(result.hits.empty());
-    EXPECT_EQ(result.hits[0].normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(result.hits[0].normal, hitbox::Vec2(0.f, -1.f));
 }
 
 TEST(MoveBoxAndSlide, StopsTouchingAWall)
 {
-    const std::vector<sf::FloatRect> wall{{200.f, 0.f, 20.f, 200.f}};
+    const std::vector<hitbox::Box> wall{{200.f, 0.f, 20.f, 200.f}};
     const MoveResult result =
         hitbox::moveBoxAndSlide({150.f, 50.f, 20.f, 20.f}, {6000.f, 0.f}, dt, wall);
     EXPECT_EQ(result.box.left, 180.f);
-    EXPECT_EQ(result.velocity, sf::Vector2f(0.f, 0.f));
+    EXPECT_EQ(result.velocity, hitbox::Vec2(0.f, 0.f));
     EXPECT_FALSE(hitbox::boxVsBox(result.box, wall[0]));
 }
 
 TEST(MoveBoxAndSlide, AnInsideCornerStopsBothWays)
 {
-    std::vector<sf::FloatRect> solids = tiledFloor();
+    std::vector<hitbox::Box> solids = tiledFloor();
     solids.push_back({200.f, 0.f, 20.f, 100.f}); // a wall standing on the floor
     const MoveResult result =
         hitbox::moveBoxAndSlide({170.f, 70.f, 20.f, 20.f}, {3000.f, 3000.f}, dt, solids);
     EXPECT_EQ(result.box.left, 180.f);
     EXPECT_EQ(result.box.top, 80.f);
-    EXPECT_EQ(result.velocity, sf::Vector2f(0.f, 0.f));
+    EXPECT_EQ(result.velocity, hitbox::Vec2(0.f, 0.f));
 }
 
 TEST(MoveBoxAndSlide, AOneMillionPixelsPerSecondBoxStopsAtAOnePixelWall)
 {
-    const std::vector<sf::FloatRect> paper{{500.f, 0.f, 1.f, 200.f}};
+    const std::vector<hitbox::Box> paper{{500.f, 0.f, 1.f, 200.f}};
     const MoveResult result =
         hitbox::moveBoxAndSlide({0.f, 50.f, 4.f, 4.f}, {1.0e6f, 0.f}, dt, paper);
     EXPECT_EQ(result.box.left, 496.f);
@@ -98,7 +98,7 @@ TEST(MoveBoxAndSlide, AOneMillionPixelsPerSecondBoxStopsAtAOnePixelWall)
 
 TEST(MoveBoxAndSlide, StartingInsideASolidIsPushedOut)
 {
-    const std::vector<sf::FloatRect> wall{{200.f, 0.f, 20.f, 200.f}};
+    const std::vector<hitbox::Box> wall{{200.f, 0.f, 20.f, 200.f}};
     const MoveResult result =
         hitbox::moveBoxAndSlide({195.f, 50.f, 20.f, 20.f}, {0.f, 0.f}, dt, wall);
     EXPECT_EQ(result.box.left, 180.f);
@@ -109,13 +109,13 @@ TEST(MoveBoxAndSlide, NothingInTheWayMovesTheWholeStep)
 {
     const MoveResult result =
         hitbox::moveBoxAndSlide({0.f, 0.f, 10.f, 10.f}, {120.f, -240.f}, dt, {});
-    EXPECT_EQ(result.box, sf::FloatRect(1.f, -2.f, 10.f, 10.f));
+    EXPECT_EQ(result.box, hitbox::Box(1.f, -2.f, 10.f, 10.f));
     EXPECT_TRUE(result.hits.empty());
 }
 
 TEST(MoveBoxAndSlide, NoTimeOrNaNMeansNoMove)
 {
-    const sf::FloatRect box(0.f, 0.f, 10.f, 10.f);
+    const hitbox::Box box(0.f, 0.f, 10.f, 10.f);
     EXPECT_EQ(hitbox::moveBoxAndSlide(box, {120.f, 0.f}, 0.f, {}).box, box);
     EXPECT_EQ(hitbox::moveBoxAndSlide(box, {120.f, 0.f}, -dt, {}).box, box);
     EXPECT_EQ(
@@ -133,12 +133,12 @@ TEST(MoveBoxAndSlide, NeverEndsInsideASolid)
     int blocked = 0;
     for (int room = 0; room < 2000; ++room)
     {
-        std::vector<sf::FloatRect> solids;
+        std::vector<hitbox::Box> solids;
         for (int i = 0; i < 8; ++i)
             solids.push_back({place(random), place(random), size(random), size(random)});
-        sf::FloatRect box(place(random), place(random), size(random) / 2.f, size(random) / 2.f);
+        hitbox::Box box(place(random), place(random), size(random) / 2.f, size(random) / 2.f);
         bool free = true;
-        for (const sf::FloatRect& solid : solids)
+        for (const hitbox::Box& solid : solids)
             free = free && !hitbox::boxVsBox(box, solid);
         if (!free)
             continue;
@@ -146,7 +146,7 @@ TEST(MoveBoxAndSlide, NeverEndsInsideASolid)
         {
             const MoveResult result =
                 hitbox::moveBoxAndSlide(box, {speed(random), speed(random)}, dt, solids);
-            for (const sf::FloatRect& solid : solids)
+            for (const hitbox::Box& solid : solids)
                 ASSERT_FALSE(hitbox::boxVsBox(result.box, solid))
                     << ::testing::PrintToString(box) << " -> "
                     << ::testing::PrintToString(result.box) << " inside "
@@ -160,20 +160,20 @@ TEST(MoveBoxAndSlide, NeverEndsInsideASolid)
 
 TEST(MoveBoxPerAxis, StopsAgainstAWallAndKeepsSliding)
 {
-    const std::vector<sf::FloatRect> wall{{200.f, 0.f, 20.f, 200.f}};
+    const std::vector<hitbox::Box> wall{{200.f, 0.f, 20.f, 200.f}};
     const MoveResult result =
         hitbox::moveBoxPerAxis({175.f, 50.f, 20.f, 20.f}, {1200.f, 600.f}, dt, wall);
     EXPECT_EQ(result.box.left, 180.f);
     EXPECT_EQ(result.box.top, 55.f);
-    EXPECT_EQ(result.velocity, sf::Vector2f(0.f, 600.f));
+    EXPECT_EQ(result.velocity, hitbox::Vec2(0.f, 600.f));
     ASSERT_EQ(result.hits.size(), 1u);
-    EXPECT_EQ(result.hits[0].normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(result.hits[0].normal, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(MoveBoxPerAxis, DoesNotSnagOnTileSeams)
 {
-    const std::vector<sf::FloatRect> tiles = tiledFloor();
-    sf::FloatRect box(290.f, 80.f, 20.f, 20.f);
+    const std::vector<hitbox::Box> tiles = tiledFloor();
+    hitbox::Box box(290.f, 80.f, 20.f, 20.f);
     for (int step = 0; step < 100; ++step)
     {
         const MoveResult result = hitbox::moveBoxPerAxis(box, {-240.f, 60.f}, dt, tiles);
@@ -186,8 +186,8 @@ TEST(MoveBoxPerAxis, DoesNotSnagOnTileSeams)
 TEST(MoveBoxPerAxis, IsADiscreteTestSoAFastBoxPassesAThinWall)
 {
     // 1200 px/s is 10 px a step: more than the 4 px box plus the 1 px wall.
-    const std::vector<sf::FloatRect> paper{{100.f, 0.f, 1.f, 200.f}};
-    sf::FloatRect box(0.f, 50.f, 4.f, 4.f);
+    const std::vector<hitbox::Box> paper{{100.f, 0.f, 1.f, 200.f}};
+    hitbox::Box box(0.f, 50.f, 4.f, 4.f);
     for (int step = 0; step < 20; ++step)
         box = hitbox::moveBoxPerAxis(box, {1200.f, 0.f}, dt, paper).box;
     EXPECT_GT(box.left, 101.f); // went straight through
@@ -196,7 +196,7 @@ TEST(MoveBoxPerAxis, IsADiscreteTestSoAFastBoxPassesAThinWall)
 TEST(MoveBoxPerAxis, EndsExactlyTouchingDespiteRounding)
 {
     // Sizes that do not add up exactly in float: the box must still end outside.
-    const std::vector<sf::FloatRect> wall{{100.1f, 0.f, 20.f, 200.f}};
+    const std::vector<hitbox::Box> wall{{100.1f, 0.f, 20.f, 200.f}};
     const MoveResult result =
         hitbox::moveBoxPerAxis({50.f, 50.f, 20.3f, 20.f}, {6000.f, 0.f}, dt, wall);
     EXPECT_FALSE(hitbox::boxVsBox(result.box, wall[0]));

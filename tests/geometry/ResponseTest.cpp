@@ -26,69 +26,69 @@ Hit floorHitAt(float time)
 TEST(SlideVelocity, KeepsTheMotionAlongTheSurfaceAndStopsAtIt)
 {
     // Falling at 100 px/s onto a floor reached a quarter of the way into the step.
-    const sf::Vector2f slid = hitbox::slideVelocity({40.f, 100.f}, floorHitAt(0.25f));
+    const hitbox::Vec2 slid = hitbox::slideVelocity({40.f, 100.f}, floorHitAt(0.25f));
     EXPECT_FLOAT_EQ(slid.x, 40.f); // along the floor: untouched
     EXPECT_FLOAT_EQ(slid.y, 25.f); // only the part before the impact is left
 }
 
 TEST(SlideVelocity, MovingByTheResultEndsTouchingTheSurface)
 {
-    const sf::FloatRect box(0.f, 0.f, 20.f, 20.f);
-    const sf::FloatRect floor(-100.f, 50.f, 400.f, 20.f);
-    const sf::Vector2f velocity(300.f, 600.f);
+    const hitbox::Box box(0.f, 0.f, 20.f, 20.f);
+    const hitbox::Box floor(-100.f, 50.f, 400.f, 20.f);
+    const hitbox::Vec2 velocity(300.f, 600.f);
     const float dt = 0.1f;
     const Hit hit = hitbox::sweepBoxVsBox(box, velocity * dt, floor);
     ASSERT_TRUE(hit);
-    const sf::Vector2f slid = hitbox::slideVelocity(velocity, hit);
+    const hitbox::Vec2 slid = hitbox::slideVelocity(velocity, hit);
     EXPECT_FLOAT_EQ(box.top + box.height + slid.y * dt, floor.top);
     EXPECT_FLOAT_EQ(slid.x, velocity.x);
 }
 
 TEST(SlideVelocity, NoHitOrMovingAwayChangesNothing)
 {
-    EXPECT_EQ(hitbox::slideVelocity({40.f, 100.f}, Hit{}), sf::Vector2f(40.f, 100.f));
-    EXPECT_EQ(hitbox::slideVelocity({40.f, -100.f}, floorHitAt(0.f)), sf::Vector2f(40.f, -100.f));
+    EXPECT_EQ(hitbox::slideVelocity({40.f, 100.f}, Hit{}), hitbox::Vec2(40.f, 100.f));
+    EXPECT_EQ(hitbox::slideVelocity({40.f, -100.f}, floorHitAt(0.f)), hitbox::Vec2(40.f, -100.f));
 }
 
 TEST(SlideVelocity, StartedInsideRemovesTheWholeInwardPart)
 {
     Hit inside = floorHitAt(0.f);
     inside.startedInside = true;
-    EXPECT_EQ(hitbox::slideVelocity({40.f, 100.f}, inside), sf::Vector2f(40.f, 0.f));
+    EXPECT_EQ(hitbox::slideVelocity({40.f, 100.f}, inside), hitbox::Vec2(40.f, 0.f));
 }
 
 TEST(BounceVelocity, ReflectsWithRestitution)
 {
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 1.f), sf::Vector2f(30.f, -100.f));
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 0.5f), sf::Vector2f(30.f, -50.f));
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 0.f), sf::Vector2f(30.f, 0.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 1.f), hitbox::Vec2(30.f, -100.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 0.5f), hitbox::Vec2(30.f, -50.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 0.f), hitbox::Vec2(30.f, 0.f));
 }
 
 TEST(BounceVelocity, ADiagonalSurfaceTurnsTheVelocity)
 {
     const float d = std::sqrt(0.5f);
-    const sf::Vector2f bounced = hitbox::bounceVelocity({100.f, 0.f}, {-d, -d}, 1.f);
+    const hitbox::Vec2 bounced = hitbox::bounceVelocity({100.f, 0.f}, {-d, -d}, 1.f);
     EXPECT_NEAR(bounced.x, 0.f, 1e-4f);
     EXPECT_NEAR(bounced.y, -100.f, 1e-4f);
 }
 
 TEST(BounceVelocity, LeavingOrNoNormalChangesNothingAndRestitutionIsClamped)
 {
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, -100.f}, {0.f, -1.f}, 1.f), sf::Vector2f(30.f, -100.f));
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, 0.f}, 1.f), sf::Vector2f(30.f, 100.f));
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 5.f), sf::Vector2f(30.f, -100.f));
-    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, -2.f), sf::Vector2f(30.f, 0.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, -100.f}, {0.f, -1.f}, 1.f), hitbox::Vec2(30.f, -100.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, 0.f}, 1.f), hitbox::Vec2(30.f, 100.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, 5.f), hitbox::Vec2(30.f, -100.f));
+    EXPECT_EQ(hitbox::bounceVelocity({30.f, 100.f}, {0.f, -1.f}, -2.f), hitbox::Vec2(30.f, 0.f));
 }
 
 TEST(PushOutOffset, MovesAJustClearOfB)
 {
-    const sf::FloatRect a(95.f, 0.f, 10.f, 10.f);
-    const sf::FloatRect b(100.f, 0.f, 50.f, 50.f);
+    const hitbox::Box a(95.f, 0.f, 10.f, 10.f);
+    const hitbox::Box b(100.f, 0.f, 50.f, 50.f);
     const hitbox::Contact contact = hitbox::boxVsBoxContact(a, b);
-    const sf::Vector2f offset = hitbox::pushOutOffset(contact);
-    EXPECT_EQ(offset, sf::Vector2f(-5.f, 0.f));
+    const hitbox::Vec2 offset = hitbox::pushOutOffset(contact);
+    EXPECT_EQ(offset, hitbox::Vec2(-5.f, 0.f));
     EXPECT_FALSE(hitbox::boxVsBox({a.left + offset.x, a.top + offset.y, a.width, a.height}, b));
-    EXPECT_EQ(hitbox::pushOutOffset(hitbox::Contact{}), sf::Vector2f(0.f, 0.f));
+    EXPECT_EQ(hitbox::pushOutOffset(hitbox::Contact{}), hitbox::Vec2(0.f, 0.f));
 }
 
 TEST(ElasticCollision, EqualMassesSwapTheirSpeedsAlongTheNormal)
@@ -103,14 +103,14 @@ TEST(ElasticCollision, EqualMassesSwapTheirSpeedsAlongTheNormal)
 
 TEST(ElasticCollision, KeepsMomentumAndEnergy)
 {
-    const sf::Vector2f normal(-0.6f, -0.8f);
+    const hitbox::Vec2 normal(-0.6f, -0.8f);
     const auto after = hitbox::elasticCollision({120.f, 90.f}, 2.f, {-10.f, -30.f}, 5.f, normal);
-    const sf::Vector2f momentumBefore =
-        sf::Vector2f(120.f, 90.f) * 2.f + sf::Vector2f(-10.f, -30.f) * 5.f;
-    const sf::Vector2f momentumAfter = after.first * 2.f + after.second * 5.f;
+    const hitbox::Vec2 momentumBefore =
+        hitbox::Vec2(120.f, 90.f) * 2.f + hitbox::Vec2(-10.f, -30.f) * 5.f;
+    const hitbox::Vec2 momentumAfter = after.first * 2.f + after.second * 5.f;
     EXPECT_NEAR(momentumAfter.x, momentumBefore.x, 1e-3f);
     EXPECT_NEAR(momentumAfter.y, momentumBefore.y, 1e-3f);
-    const auto energy = [](sf::Vector2f v, float m) { return 0.5f * m * (v.x * v.x + v.y * v.y); };
+    const auto energy = [](hitbox::Vec2 v, float m) { return 0.5f * m * (v.x * v.x + v.y * v.y); };
     EXPECT_NEAR(energy(after.first, 2.f) + energy(after.second, 5.f),
                 energy({120.f, 90.f}, 2.f) + energy({-10.f, -30.f}, 5.f), 0.5f);
 }
@@ -120,24 +120,24 @@ TEST(ElasticCollision, AnInfiniteMassIsAWall)
     const float infinite = std::numeric_limits<float>::infinity();
     const auto after =
         hitbox::elasticCollision({100.f, 20.f}, 1.f, {0.f, 0.f}, infinite, {-1.f, 0.f});
-    EXPECT_EQ(after.first, sf::Vector2f(-100.f, 20.f));
-    EXPECT_EQ(after.second, sf::Vector2f(0.f, 0.f));
+    EXPECT_EQ(after.first, hitbox::Vec2(-100.f, 20.f));
+    EXPECT_EQ(after.second, hitbox::Vec2(0.f, 0.f));
 }
 
 TEST(ElasticCollision, SeparatingOrInvalidMassesChangeNothing)
 {
     const auto apart = hitbox::elasticCollision({-100.f, 0.f}, 1.f, {50.f, 0.f}, 1.f, {-1.f, 0.f});
-    EXPECT_EQ(apart.first, sf::Vector2f(-100.f, 0.f));
+    EXPECT_EQ(apart.first, hitbox::Vec2(-100.f, 0.f));
     const auto zero = hitbox::elasticCollision({100.f, 0.f}, 0.f, {-50.f, 0.f}, 1.f, {-1.f, 0.f});
-    EXPECT_EQ(zero.first, sf::Vector2f(100.f, 0.f));
+    EXPECT_EQ(zero.first, hitbox::Vec2(100.f, 0.f));
     const auto nan = hitbox::elasticCollision({100.f, 0.f}, std::numeric_limits<float>::quiet_NaN(),
                                               {-50.f, 0.f}, 1.f, {-1.f, 0.f});
-    EXPECT_EQ(nan.second, sf::Vector2f(-50.f, 0.f));
+    EXPECT_EQ(nan.second, hitbox::Vec2(-50.f, 0.f));
     // 1 / 1e-40 overflows to infinity in float: unchanged, not NaN.
     const auto tiny =
         hitbox::elasticCollision({100.f, 0.f}, 1e-40f, {-50.f, 0.f}, 1.f, {-1.f, 0.f});
-    EXPECT_EQ(tiny.first, sf::Vector2f(100.f, 0.f));
-    EXPECT_EQ(tiny.second, sf::Vector2f(-50.f, 0.f));
+    EXPECT_EQ(tiny.first, hitbox::Vec2(100.f, 0.f));
+    EXPECT_EQ(tiny.second, hitbox::Vec2(-50.f, 0.f));
 }
 
 TEST(ElasticCollision, RestitutionZeroLeavesThemMovingTogether)

@@ -14,7 +14,7 @@ using hitbox::sweepBoxVsMovingBox;
 
 namespace
 {
-const sf::FloatRect wall(100.f, 0.f, 50.f, 100.f); // x 100..150, y 0..100
+const hitbox::Box wall(100.f, 0.f, 50.f, 100.f); // x 100..150, y 0..100
 const float notANumber = std::numeric_limits<float>::quiet_NaN();
 const float infinity = std::numeric_limits<float>::infinity();
 } // namespace
@@ -26,25 +26,25 @@ TEST(SegmentVsBox, HitsTheNearFaceFromEachSide)
     const Hit fromLeft = segmentVsBox({0.f, 50.f}, {200.f, 50.f}, wall);
     ASSERT_TRUE(fromLeft);
     EXPECT_FLOAT_EQ(fromLeft.time, 0.5f);
-    EXPECT_EQ(fromLeft.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(fromLeft.point, sf::Vector2f(100.f, 50.f));
+    EXPECT_EQ(fromLeft.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(fromLeft.point, hitbox::Vec2(100.f, 50.f));
     EXPECT_FALSE(fromLeft.startedInside);
 
     const Hit fromRight = segmentVsBox({250.f, 50.f}, {50.f, 50.f}, wall);
     ASSERT_TRUE(fromRight);
     EXPECT_FLOAT_EQ(fromRight.time, 0.5f);
-    EXPECT_EQ(fromRight.normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(fromRight.normal, hitbox::Vec2(1.f, 0.f));
 
     const Hit fromAbove = segmentVsBox({120.f, -100.f}, {120.f, 100.f}, wall);
     ASSERT_TRUE(fromAbove);
     EXPECT_FLOAT_EQ(fromAbove.time, 0.5f);
-    EXPECT_EQ(fromAbove.normal, sf::Vector2f(0.f, -1.f));
-    EXPECT_EQ(fromAbove.point, sf::Vector2f(120.f, 0.f));
+    EXPECT_EQ(fromAbove.normal, hitbox::Vec2(0.f, -1.f));
+    EXPECT_EQ(fromAbove.point, hitbox::Vec2(120.f, 0.f));
 
     const Hit fromBelow = segmentVsBox({120.f, 200.f}, {120.f, 0.f}, wall);
     ASSERT_TRUE(fromBelow);
     EXPECT_FLOAT_EQ(fromBelow.time, 0.5f);
-    EXPECT_EQ(fromBelow.normal, sf::Vector2f(0.f, 1.f));
+    EXPECT_EQ(fromBelow.normal, hitbox::Vec2(0.f, 1.f));
 }
 
 TEST(SegmentVsBox, StoppingShortOfTheBoxMisses)
@@ -78,7 +78,7 @@ TEST(SegmentVsBox, ParallelInsideTheSlabHits)
     const Hit hit = segmentVsBox({0.f, 10.f}, {300.f, 10.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 100.f / 300.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(SegmentVsBox, StartingInsideReportsThePushOut)
@@ -87,9 +87,9 @@ TEST(SegmentVsBox, StartingInsideReportsThePushOut)
     ASSERT_TRUE(hit);
     EXPECT_TRUE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f)); // nearest edge is the left one
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f)); // nearest edge is the left one
     EXPECT_FLOAT_EQ(hit.depth, 10.f);
-    EXPECT_EQ(hit.point, sf::Vector2f(100.f, 50.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(100.f, 50.f));
 }
 
 TEST(SegmentVsBox, StartingOnTheEdgeAndGoingInHitsAtTimeZero)
@@ -98,7 +98,7 @@ TEST(SegmentVsBox, StartingOnTheEdgeAndGoingInHitsAtTimeZero)
     ASSERT_TRUE(hit);
     EXPECT_FALSE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(SegmentVsBox, StartingOnTheEdgeAndGoingAwayMisses)
@@ -112,8 +112,8 @@ TEST(SegmentVsBox, ExactCornerHitGivesTheXNormal)
     const Hit hit = segmentVsBox({50.f, -50.f}, {150.f, 50.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.5f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(hit.point, sf::Vector2f(100.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(100.f, 0.f));
 }
 
 TEST(SegmentVsBox, GrazingACornerMisses)
@@ -133,13 +133,13 @@ TEST(SegmentVsBox, ZeroLengthIsAPointTest)
 
 TEST(SegmentVsBox, ZeroSizeBoxIsNeverHit)
 {
-    EXPECT_FALSE(segmentVsBox({0.f, 5.f}, {20.f, 5.f}, sf::FloatRect(10.f, 5.f, 0.f, 0.f)));
-    EXPECT_FALSE(segmentVsBox({0.f, 5.f}, {20.f, 5.f}, sf::FloatRect(10.f, 0.f, 0.f, 10.f)));
+    EXPECT_FALSE(segmentVsBox({0.f, 5.f}, {20.f, 5.f}, hitbox::Box(10.f, 5.f, 0.f, 0.f)));
+    EXPECT_FALSE(segmentVsBox({0.f, 5.f}, {20.f, 5.f}, hitbox::Box(10.f, 0.f, 0.f, 10.f)));
 }
 
 TEST(SegmentVsBox, NegativeSizeBoxIsReadAsSfmlDoes)
 {
-    const sf::FloatRect flipped(150.f, 100.f, -50.f, -100.f); // the same box as `wall`
+    const hitbox::Box flipped(150.f, 100.f, -50.f, -100.f); // the same box as `wall`
     const Hit hit = segmentVsBox({0.f, 50.f}, {200.f, 50.f}, flipped);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.5f);
@@ -149,64 +149,63 @@ TEST(SegmentVsBox, NaNOrInfiniteInputNeverHits)
 {
     EXPECT_FALSE(segmentVsBox({notANumber, 50.f}, {200.f, 50.f}, wall));
     EXPECT_FALSE(segmentVsBox({0.f, 50.f}, {infinity, 50.f}, wall));
-    EXPECT_FALSE(
-        segmentVsBox({0.f, 50.f}, {200.f, 50.f}, sf::FloatRect(notANumber, 0.f, 1.f, 1.f)));
+    EXPECT_FALSE(segmentVsBox({0.f, 50.f}, {200.f, 50.f}, hitbox::Box(notANumber, 0.f, 1.f, 1.f)));
 }
 
 // ---- box sweeps ----
 
 TEST(SweepBoxVsBox, StopsTouchingTheWall)
 {
-    const sf::FloatRect mover(0.f, 40.f, 20.f, 20.f);
+    const hitbox::Box mover(0.f, 40.f, 20.f, 20.f);
     const Hit hit = sweepBoxVsBox(mover, {160.f, 0.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 80.f / 160.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(hit.point, sf::Vector2f(100.f, 50.f)); // middle of the touching edge
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(100.f, 50.f)); // middle of the touching edge
 }
 
 TEST(SweepBoxVsBox, SlidingAlongASurfaceWhileTouchingMisses)
 {
-    const sf::FloatRect onTop(110.f, -20.f, 20.f, 20.f); // resting on the wall's top
+    const hitbox::Box onTop(110.f, -20.f, 20.f, 20.f); // resting on the wall's top
     EXPECT_FALSE(sweepBoxVsBox(onTop, {30.f, 0.f}, wall));
     EXPECT_FALSE(sweepBoxVsBox(onTop, {-300.f, 0.f}, wall));
 }
 
 TEST(SweepBoxVsBox, MovingAwayFromTouchingMisses)
 {
-    const sf::FloatRect onTop(110.f, -20.f, 20.f, 20.f);
+    const hitbox::Box onTop(110.f, -20.f, 20.f, 20.f);
     EXPECT_FALSE(sweepBoxVsBox(onTop, {5.f, -10.f}, wall));
 }
 
 TEST(SweepBoxVsBox, MovingIntoASurfaceFromTouchingHitsAtTimeZero)
 {
-    const sf::FloatRect onTop(110.f, -20.f, 20.f, 20.f);
+    const hitbox::Box onTop(110.f, -20.f, 20.f, 20.f);
     const Hit hit = sweepBoxVsBox(onTop, {10.f, 5.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_FALSE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(0.f, -1.f));
 }
 
 TEST(SweepBoxVsBox, StartingOverlappedReportsThePushOut)
 {
-    const sf::FloatRect mover(95.f, 40.f, 20.f, 20.f); // 15 px into the wall's left side
+    const hitbox::Box mover(95.f, 40.f, 20.f, 20.f); // 15 px into the wall's left side
     const Hit hit = sweepBoxVsBox(mover, {-50.f, 0.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_TRUE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_FLOAT_EQ(hit.depth, 15.f);
 }
 
 TEST(SweepBoxVsBox, ExactCornerHitGivesTheXNormal)
 {
-    const sf::FloatRect mover(60.f, -40.f, 20.f, 20.f); // bottom-right corner at (80, -20)
+    const hitbox::Box mover(60.f, -40.f, 20.f, 20.f); // bottom-right corner at (80, -20)
     const Hit hit = sweepBoxVsBox(mover, {40.f, 40.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.5f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(hit.point, sf::Vector2f(100.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(100.f, 0.f));
 }
 
 TEST(SweepBoxVsBox, ZeroDisplacementIsTheDiscreteTest)
@@ -226,27 +225,27 @@ TEST(SweepBoxVsBox, NaNInputNeverHits)
 
 TEST(SweepBoxVsBox, AFastMoverNeverJumpsAThinWall)
 {
-    const sf::FloatRect paper(500.f, 0.f, 1.f, 100.f);
-    const sf::FloatRect bullet(0.f, 45.f, 4.f, 4.f);
+    const hitbox::Box paper(500.f, 0.f, 1.f, 100.f);
+    const hitbox::Box bullet(0.f, 45.f, 4.f, 4.f);
     const Hit hit = sweepBoxVsBox(bullet, {1.0e6f / 120.f, 0.f}, paper);
     ASSERT_TRUE(hit);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(SweepBoxVsMovingBox, HeadOnBoxesMeetInTheMiddle)
 {
-    const sf::FloatRect left(0.f, 0.f, 10.f, 10.f);
-    const sf::FloatRect right(90.f, 0.f, 10.f, 10.f);
+    const hitbox::Box left(0.f, 0.f, 10.f, 10.f);
+    const hitbox::Box right(90.f, 0.f, 10.f, 10.f);
     const Hit hit = sweepBoxVsMovingBox(left, {50.f, 0.f}, right, {-50.f, 0.f});
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.8f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_FLOAT_EQ(hit.point.x, 50.f); // both have moved 40 px: they meet at x = 50
 }
 
 TEST(SweepBoxVsMovingBox, MovingTogetherNeverHits)
 {
-    const sf::FloatRect leader(20.f, 0.f, 10.f, 10.f);
-    const sf::FloatRect follower(0.f, 0.f, 10.f, 10.f);
+    const hitbox::Box leader(20.f, 0.f, 10.f, 10.f);
+    const hitbox::Box follower(0.f, 0.f, 10.f, 10.f);
     EXPECT_FALSE(sweepBoxVsMovingBox(follower, {500.f, 0.f}, leader, {500.f, 0.f}));
 }

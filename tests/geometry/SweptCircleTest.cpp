@@ -20,13 +20,13 @@ using hitbox::sweepCircleVsMovingCircle;
 
 namespace
 {
-const Circle ball{{100.f, 100.f}, 20.f};           // the target in most tests
-const sf::FloatRect wall(100.f, 0.f, 50.f, 100.f); // x 100..150, y 0..100
+const Circle ball{{100.f, 100.f}, 20.f};         // the target in most tests
+const hitbox::Box wall(100.f, 0.f, 50.f, 100.f); // x 100..150, y 0..100
 const float notANumber = std::numeric_limits<float>::quiet_NaN();
 const float infinity = std::numeric_limits<float>::infinity();
 const float diagonal = std::sqrt(0.5f);
 
-void expectNear(sf::Vector2f actual, sf::Vector2f expected, float tolerance = 1e-4f)
+void expectNear(hitbox::Vec2 actual, hitbox::Vec2 expected, float tolerance = 1e-4f)
 {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << ::testing::PrintToString(actual);
     EXPECT_NEAR(actual.y, expected.y, tolerance) << ::testing::PrintToString(actual);
@@ -40,23 +40,23 @@ TEST(SegmentVsCircle, HitsTheNearRimFromEachSide)
     const Hit fromLeft = segmentVsCircle({0.f, 100.f}, {200.f, 100.f}, ball);
     ASSERT_TRUE(fromLeft);
     EXPECT_FLOAT_EQ(fromLeft.time, 0.4f);
-    EXPECT_EQ(fromLeft.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(fromLeft.point, sf::Vector2f(80.f, 100.f));
+    EXPECT_EQ(fromLeft.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(fromLeft.point, hitbox::Vec2(80.f, 100.f));
     EXPECT_FALSE(fromLeft.startedInside);
 
     const Hit fromRight = segmentVsCircle({200.f, 100.f}, {0.f, 100.f}, ball);
     ASSERT_TRUE(fromRight);
     EXPECT_FLOAT_EQ(fromRight.time, 0.4f);
-    EXPECT_EQ(fromRight.normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(fromRight.normal, hitbox::Vec2(1.f, 0.f));
 
     const Hit fromAbove = segmentVsCircle({100.f, 0.f}, {100.f, 200.f}, ball);
     ASSERT_TRUE(fromAbove);
-    EXPECT_EQ(fromAbove.normal, sf::Vector2f(0.f, -1.f));
-    EXPECT_EQ(fromAbove.point, sf::Vector2f(100.f, 80.f));
+    EXPECT_EQ(fromAbove.normal, hitbox::Vec2(0.f, -1.f));
+    EXPECT_EQ(fromAbove.point, hitbox::Vec2(100.f, 80.f));
 
     const Hit fromBelow = segmentVsCircle({100.f, 200.f}, {100.f, 0.f}, ball);
     ASSERT_TRUE(fromBelow);
-    EXPECT_EQ(fromBelow.normal, sf::Vector2f(0.f, 1.f));
+    EXPECT_EQ(fromBelow.normal, hitbox::Vec2(0.f, 1.f));
 }
 
 TEST(SegmentVsCircle, PassingBesideMisses)
@@ -82,9 +82,9 @@ TEST(SegmentVsCircle, StartingInsideReportsThePushOut)
     ASSERT_TRUE(hit);
     EXPECT_TRUE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(1.f, 0.f));
     EXPECT_FLOAT_EQ(hit.depth, 10.f);
-    EXPECT_EQ(hit.point, sf::Vector2f(120.f, 100.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(120.f, 100.f));
 }
 
 TEST(SegmentVsCircle, StartingAtTheCentrePushesTowardsMinusX)
@@ -92,7 +92,7 @@ TEST(SegmentVsCircle, StartingAtTheCentrePushesTowardsMinusX)
     const Hit hit = segmentVsCircle({100.f, 100.f}, {100.f, 300.f}, ball);
     ASSERT_TRUE(hit);
     EXPECT_TRUE(hit.startedInside);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_FLOAT_EQ(hit.depth, 20.f);
 }
 
@@ -102,7 +102,7 @@ TEST(SegmentVsCircle, StartingOnTheRimGoingInHitsAtTimeZero)
     ASSERT_TRUE(hit);
     EXPECT_FALSE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(SegmentVsCircle, StartingOnTheRimGoingAwayOrAlongMisses)
@@ -145,8 +145,8 @@ TEST(SweepCircleVsCircle, StopsWithTheRimsTouching)
     const Hit hit = sweepCircleVsCircle(mover, {200.f, 0.f}, ball);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.35f); // centre at x = 70: 30 px apart, the radii added
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(hit.point, sf::Vector2f(80.f, 100.f)); // on the target's rim
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(80.f, 100.f)); // on the target's rim
 }
 
 TEST(SweepCircleVsCircle, AnOffCentreHitHasTheCentreToCentreNormal)
@@ -158,7 +158,7 @@ TEST(SweepCircleVsCircle, AnOffCentreHitHasTheCentreToCentreNormal)
     ASSERT_TRUE(hit);
     const float touchX = 100.f - std::sqrt(30.f * 30.f - 15.f * 15.f);
     EXPECT_NEAR(hit.time, touchX / 200.f, 1e-6f);
-    expectNear(hit.normal, sf::Vector2f(touchX - 100.f, -15.f) / 30.f);
+    expectNear(hit.normal, hitbox::Vec2(touchX - 100.f, -15.f) / 30.f);
 }
 
 TEST(SweepCircleVsCircle, TouchingAndMovingAwayOrAlongMisses)
@@ -174,7 +174,7 @@ TEST(SweepCircleVsCircle, TouchingAndMovingInHitsAtTimeZero)
     ASSERT_TRUE(hit);
     EXPECT_FALSE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
 }
 
 TEST(SweepCircleVsCircle, StartingOverlappedReportsThePushOut)
@@ -183,7 +183,7 @@ TEST(SweepCircleVsCircle, StartingOverlappedReportsThePushOut)
     ASSERT_TRUE(hit);
     EXPECT_TRUE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_FLOAT_EQ(hit.depth, 5.f);
 }
 
@@ -212,11 +212,11 @@ TEST(SweepCircleVsCircle, IsSymmetricAndTranslationInvariant)
     {
         const Circle a{{coordinate(random), coordinate(random)}, size(random)};
         const Circle b{{coordinate(random), coordinate(random)}, size(random)};
-        const sf::Vector2f move(coordinate(random) * 2.f, coordinate(random) * 2.f);
+        const hitbox::Vec2 move(coordinate(random) * 2.f, coordinate(random) * 2.f);
         const Hit forward = sweepCircleVsCircle(a, move, b);
         const Hit backward = sweepCircleVsCircle(b, -move, a);
         ASSERT_EQ(forward.hit, backward.hit);
-        const sf::Vector2f shift(std::round(coordinate(random)) * 4.f,
+        const hitbox::Vec2 shift(std::round(coordinate(random)) * 4.f,
                                  std::round(coordinate(random)) * 4.f);
         const Hit shifted = sweepCircleVsCircle(Circle{a.center + shift, a.radius}, move,
                                                 Circle{b.center + shift, b.radius});
@@ -241,7 +241,7 @@ TEST(SweepCircleVsMovingCircle, HeadOnBallsMeetInTheMiddle)
     const Hit hit = sweepCircleVsMovingCircle(left, {100.f, 0.f}, right, {-100.f, 0.f});
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.4f); // 80 px apart, closing at 200 px per step
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
     expectNear(hit.point, {50.f, 0.f}); // both have moved 40 px: they meet at x = 50
 }
 
@@ -271,13 +271,13 @@ TEST(SweepCircleVsBox, HitsAFaceAndStopsTouchingIt)
     const Hit hit = sweepCircleVsBox(Circle{{0.f, 50.f}, 10.f}, {200.f, 0.f}, wall);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.45f); // centre at x = 90
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
-    EXPECT_EQ(hit.point, sf::Vector2f(100.f, 50.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
+    EXPECT_EQ(hit.point, hitbox::Vec2(100.f, 50.f));
 
     const Hit fromBelow = sweepCircleVsBox(Circle{{120.f, 200.f}, 10.f}, {0.f, -200.f}, wall);
     ASSERT_TRUE(fromBelow);
     EXPECT_FLOAT_EQ(fromBelow.time, 0.45f);
-    EXPECT_EQ(fromBelow.normal, sf::Vector2f(0.f, 1.f));
+    EXPECT_EQ(fromBelow.normal, hitbox::Vec2(0.f, 1.f));
 }
 
 TEST(SweepCircleVsBox, HitsARoundedCornerWithTheCornerToCentreNormal)
@@ -314,7 +314,7 @@ TEST(SweepCircleVsBox, StartingOverlappedReportsThePushOut)
     ASSERT_TRUE(hit);
     EXPECT_TRUE(hit.startedInside);
     EXPECT_EQ(hit.time, 0.f);
-    EXPECT_EQ(hit.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(hit.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_FLOAT_EQ(hit.depth, 5.f);
 }
 
@@ -328,15 +328,15 @@ TEST(SweepCircleVsBox, ZeroRadiusIsTheSegmentTest)
     EXPECT_FALSE(sweepCircleVsBox(Circle{{0.f, 0.f}, 0.f}, {200.f, 0.f}, wall)); // along an edge
     // Passing just left of a corner (checked with exact fractions): the segment test misses,
     // so the zero-radius circle must too (its corner circles have no area).
-    const sf::FloatRect box(37.2179489f, 19.766571f, 41.850708f, 12.6833782f);
-    const sf::Vector2f start(28.6879559f, 101.916504f), move(10.1210279f, -97.4727402f);
+    const hitbox::Box box(37.2179489f, 19.766571f, 41.850708f, 12.6833782f);
+    const hitbox::Vec2 start(28.6879559f, 101.916504f), move(10.1210279f, -97.4727402f);
     EXPECT_FALSE(hitbox::segmentVsBox(start, start + move, box));
     EXPECT_FALSE(sweepCircleVsBox(Circle{start, 0.f}, move, box));
 }
 
 TEST(SweepCircleVsBox, ZeroSizeBoxIsAPointToHit)
 {
-    const sf::FloatRect point(100.f, 100.f, 0.f, 0.f);
+    const hitbox::Box point(100.f, 100.f, 0.f, 0.f);
     const Hit box = sweepCircleVsBox(Circle{{0.f, 100.f}, 10.f}, {200.f, 0.f}, point);
     const Hit circle =
         sweepCircleVsCircle(Circle{{0.f, 100.f}, 10.f}, {200.f, 0.f}, Circle{{100.f, 100.f}, 0.f});
@@ -349,7 +349,7 @@ TEST(SweepCircleVsBox, ZeroSizeBoxIsAPointToHit)
 
 TEST(SweepCircleVsBox, NegativeSizeBoxIsReadAsSfmlDoes)
 {
-    const sf::FloatRect flipped(150.f, 100.f, -50.f, -100.f); // the same box as `wall`
+    const hitbox::Box flipped(150.f, 100.f, -50.f, -100.f); // the same box as `wall`
     const Hit hit = sweepCircleVsBox(Circle{{0.f, 50.f}, 10.f}, {200.f, 0.f}, flipped);
     ASSERT_TRUE(hit);
     EXPECT_FLOAT_EQ(hit.time, 0.45f);
@@ -370,7 +370,7 @@ TEST(SweptTests, NeverMissACrossingOfAOnePixelWallAtAnySpeedUpTo1e6PixelsPerSeco
     // A 1 px wall; movers fired at it from the left at speeds from 1 px/s to 10^6 px/s and
     // angles up to 60 degrees off the normal, one 1/120 s step each, always far enough to
     // end beyond the wall. Every sweep must hit, at the time the mover reaches the wall.
-    const sf::FloatRect paper(500.f, -1000.f, 1.f, 2000.f);
+    const hitbox::Box paper(500.f, -1000.f, 1.f, 2000.f);
     const float dt = 1.f / 120.f;
     std::mt19937 random(11u);
     std::uniform_real_distribution<float> angle(-1.047f, 1.047f);
@@ -380,10 +380,10 @@ TEST(SweptTests, NeverMissACrossingOfAOnePixelWallAtAnySpeedUpTo1e6PixelsPerSeco
         for (int k = 0; k < 8; ++k)
         {
             const float heading = angle(random);
-            const sf::Vector2f move(speed * dt * std::cos(heading), speed * dt * std::sin(heading));
+            const hitbox::Vec2 move(speed * dt * std::cos(heading), speed * dt * std::sin(heading));
             // Start so that the leading edge reaches x = 500, at y = 0, somewhere in the step.
             const float before = std::uniform_real_distribution<float>(0.01f, 0.99f)(random);
-            const sf::Vector2f start(500.f - before * move.x, -before * move.y);
+            const hitbox::Vec2 start(500.f - before * move.x, -before * move.y);
             if (!(move.x > 2.f)) // too slow to get across the wall in one step
                 continue;
             ++tested;
@@ -391,18 +391,18 @@ TEST(SweptTests, NeverMissACrossingOfAOnePixelWallAtAnySpeedUpTo1e6PixelsPerSeco
             ASSERT_TRUE(segment) << "segment at " << speed << " px/s";
             EXPECT_NEAR(start.x + segment.time * move.x, 500.f, 1e-3f + 1e-7f * move.x);
 
-            const sf::FloatRect bullet(start.x - 4.f, start.y - 2.f, 4.f, 4.f);
+            const hitbox::Box bullet(start.x - 4.f, start.y - 2.f, 4.f, 4.f);
             const Hit box = hitbox::sweepBoxVsBox(bullet, move, paper);
             ASSERT_TRUE(box) << "box at " << speed << " px/s";
-            EXPECT_EQ(box.normal, sf::Vector2f(-1.f, 0.f));
+            EXPECT_EQ(box.normal, hitbox::Vec2(-1.f, 0.f));
 
             const Hit round = sweepCircleVsBox(Circle{{start.x - 3.f, start.y}, 3.f}, move, paper);
             ASSERT_TRUE(round) << "circle at " << speed << " px/s";
-            EXPECT_EQ(round.normal, sf::Vector2f(-1.f, 0.f));
+            EXPECT_EQ(round.normal, hitbox::Vec2(-1.f, 0.f));
 
             // A 1 px ball standing in the way of a 1 px ball.
             const Hit balls =
-                sweepCircleVsCircle(Circle{{start.x - 0.5f, 0.f}, 0.5f}, sf::Vector2f(move.x, 0.f),
+                sweepCircleVsCircle(Circle{{start.x - 0.5f, 0.f}, 0.5f}, hitbox::Vec2(move.x, 0.f),
                                     Circle{{500.5f, 0.f}, 0.5f});
             ASSERT_TRUE(balls) << "balls at " << speed << " px/s";
         }

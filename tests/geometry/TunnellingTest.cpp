@@ -14,8 +14,8 @@ using hitbox::Circle;
 
 namespace
 {
-const sf::FloatRect paper(500.f, 0.f, 1.f, 100.f);
-const sf::FloatRect bullet(400.f, 48.f, 4.f, 4.f);
+const hitbox::Box paper(500.f, 0.f, 1.f, 100.f);
+const hitbox::Box bullet(400.f, 48.f, 4.f, 4.f);
 const float dt = 1.f / 120.f;
 const float notANumber = std::numeric_limits<float>::quiet_NaN();
 } // namespace
@@ -69,10 +69,10 @@ TEST(CanTunnel, WarnsBeforeEveryStraightMissOfADiscreteTest)
     int misses = 0;
     for (int i = 0; i < 50000; ++i)
     {
-        const sf::FloatRect mover(place(random), place(random), size(random), size(random));
-        const sf::FloatRect target(place(random), place(random), size(random), size(random));
-        const sf::Vector2f step =
-            i % 2 ? sf::Vector2f(move(random), 0.f) : sf::Vector2f(0.f, move(random));
+        const hitbox::Box mover(place(random), place(random), size(random), size(random));
+        const hitbox::Box target(place(random), place(random), size(random), size(random));
+        const hitbox::Vec2 step =
+            i % 2 ? hitbox::Vec2(move(random), 0.f) : hitbox::Vec2(0.f, move(random));
         if (hitbox::discreteTestMisses(mover, step, target))
         {
             ++misses;
@@ -86,8 +86,8 @@ TEST(CanTunnel, WarnsBeforeEveryStraightMissOfADiscreteTest)
 
 TEST(DiscreteTestMisses, TheBulletThroughPaper)
 {
-    const sf::Vector2f step = sf::Vector2f(1.0e4f, 0.f) * dt; // 83 px a step
-    sf::FloatRect atTheStart(450.f, 48.f, 4.f, 4.f);
+    const hitbox::Vec2 step = hitbox::Vec2(1.0e4f, 0.f) * dt; // 83 px a step
+    hitbox::Box atTheStart(450.f, 48.f, 4.f, 4.f);
     EXPECT_TRUE(hitbox::discreteTestMisses(atTheStart, step, paper));
     // Slow enough and the discrete test sees it at the end of some step.
     EXPECT_FALSE(hitbox::discreteTestMisses({497.f, 48.f, 4.f, 4.f}, {2.f, 0.f}, paper));
@@ -99,37 +99,37 @@ TEST(DiscreteTestMisses, TheBulletThroughPaper)
 
 TEST(SweptBounds, HoldsTheStartAndTheEnd)
 {
-    const sf::FloatRect bounds = hitbox::sweptBounds(bullet, {-100.f, 30.f});
-    EXPECT_EQ(bounds, sf::FloatRect(300.f, 48.f, 104.f, 34.f));
+    const hitbox::Box bounds = hitbox::sweptBounds(bullet, {-100.f, 30.f});
+    EXPECT_EQ(bounds, hitbox::Box(300.f, 48.f, 104.f, 34.f));
     EXPECT_EQ(hitbox::sweptBounds(bullet, {0.f, 0.f}), bullet);
-    EXPECT_EQ(hitbox::sweptBounds(sf::FloatRect(404.f, 52.f, -4.f, -4.f), {0.f, 0.f}), bullet);
+    EXPECT_EQ(hitbox::sweptBounds(hitbox::Box(404.f, 52.f, -4.f, -4.f), {0.f, 0.f}), bullet);
     EXPECT_EQ(hitbox::sweptBounds(Circle{{10.f, 10.f}, 5.f}, {20.f, 0.f}),
-              sf::FloatRect(5.f, 5.f, 30.f, 10.f));
+              hitbox::Box(5.f, 5.f, 30.f, 10.f));
 }
 
 TEST(SpeculativeVelocity, ShortensTheMoveToEndTouching)
 {
-    const sf::Vector2f velocity(2.0e4f, 0.f); // 167 px a step: would pass the wall
-    const sf::Vector2f clamped = hitbox::speculativeVelocity(bullet, velocity, dt, {paper});
+    const hitbox::Vec2 velocity(2.0e4f, 0.f); // 167 px a step: would pass the wall
+    const hitbox::Vec2 clamped = hitbox::speculativeVelocity(bullet, velocity, dt, {paper});
     EXPECT_NEAR(bullet.left + bullet.width + clamped.x * dt, 500.f, 1e-3f);
     EXPECT_EQ(clamped.y, 0.f);
 }
 
 TEST(SpeculativeVelocity, TheNearestSolidDecides)
 {
-    const std::vector<sf::FloatRect> solids{paper, {450.f, 0.f, 1.f, 100.f}};
-    const sf::Vector2f clamped = hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, dt, solids);
+    const std::vector<hitbox::Box> solids{paper, {450.f, 0.f, 1.f, 100.f}};
+    const hitbox::Vec2 clamped = hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, dt, solids);
     EXPECT_NEAR(bullet.left + bullet.width + clamped.x * dt, 450.f, 1e-3f);
 }
 
 TEST(SpeculativeVelocity, NoHitOrStartingInsideKeepsTheVelocity)
 {
     EXPECT_EQ(hitbox::speculativeVelocity(bullet, {-1.0e4f, 0.f}, dt, {paper}),
-              sf::Vector2f(-1.0e4f, 0.f));
+              hitbox::Vec2(-1.0e4f, 0.f));
     EXPECT_EQ(hitbox::speculativeVelocity({499.f, 48.f, 4.f, 4.f}, {1.0e4f, 0.f}, dt, {paper}),
-              sf::Vector2f(1.0e4f, 0.f));
+              hitbox::Vec2(1.0e4f, 0.f));
     EXPECT_EQ(hitbox::speculativeVelocity(bullet, {1.0e4f, 0.f}, 0.f, {paper}),
-              sf::Vector2f(1.0e4f, 0.f));
+              hitbox::Vec2(1.0e4f, 0.f));
 }
 
 TEST(SpeculativeVelocity, NeverEndsInsideTheWallSoNoLaterStepPassesThrough)
@@ -143,15 +143,15 @@ TEST(SpeculativeVelocity, NeverEndsInsideTheWallSoNoLaterStepPassesThrough)
     int passedThrough = 0;
     for (int sample = 0; sample < 20000; ++sample)
     {
-        sf::FloatRect mover(100.f * unit(random), 100.f * unit(random), 1.f + 19.f * unit(random),
-                            1.f + 19.f * unit(random));
+        hitbox::Box mover(100.f * unit(random), 100.f * unit(random), 1.f + 19.f * unit(random),
+                          1.f + 19.f * unit(random));
         // Tall enough that no path can go round it: passing it means passing through it.
-        const sf::FloatRect wall(150.f + 150.f * unit(random), -300.f, 1.f + 19.f * unit(random),
-                                 700.f);
-        const sf::Vector2f velocity(100.f + 19900.f * unit(random), 4000.f * unit(random) - 2000.f);
+        const hitbox::Box wall(150.f + 150.f * unit(random), -300.f, 1.f + 19.f * unit(random),
+                               700.f);
+        const hitbox::Vec2 velocity(100.f + 19900.f * unit(random), 4000.f * unit(random) - 2000.f);
         for (int step = 0; step < 3; ++step)
         {
-            const sf::Vector2f kept = hitbox::speculativeVelocity(mover, velocity, frame, {wall});
+            const hitbox::Vec2 kept = hitbox::speculativeVelocity(mover, velocity, frame, {wall});
             mover.left += kept.x * frame;
             mover.top += kept.y * frame;
             endedInside += hitbox::boxVsBox(mover, wall);

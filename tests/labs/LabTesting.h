@@ -1,7 +1,7 @@
 // LabTesting.h - small helpers shared by the labs' grading tests.
 #pragma once
 
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include <SFML/System/Vector2.hpp>
 #include <gtest/gtest.h>
@@ -12,6 +12,20 @@
 
 namespace labtesting
 {
+
+// The geometry helpers for an SFML rectangle (the boxes that GameObjects report).
+inline sf::Vector2f centerOf(const sf::FloatRect& rect)
+{
+    return hitbox::toSfml(hitbox::centerOf(hitbox::toBox(rect)));
+}
+inline float rightOf(const sf::FloatRect& rect)
+{
+    return hitbox::rightOf(hitbox::toBox(rect));
+}
+inline float bottomOf(const sf::FloatRect& rect)
+{
+    return hitbox::bottomOf(hitbox::toBox(rect));
+}
 // "(x, y)" for failure messages.
 inline std::string text(sf::Vector2f vector)
 {

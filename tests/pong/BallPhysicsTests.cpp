@@ -2,7 +2,7 @@
 // never passes through anything, however fast and whatever the step length.
 #include "BallPhysics.h"
 
-#include "support/Printers.h"
+#include "support/SfmlPrinters.h"
 
 #include "hitbox/app/App.h"
 
@@ -13,7 +13,6 @@
 
 namespace
 {
-const float pi = 3.14159265f;
 
 // A court with both paddles standing still in their start positions.
 struct Court
@@ -55,12 +54,12 @@ struct Court
 
 float degreesFromHorizontal(sf::Vector2f velocity)
 {
-    return std::atan2(velocity.y, std::abs(velocity.x)) * 180.f / pi;
+    return std::atan2(velocity.y, std::abs(velocity.x)) * 180.f / hitbox::pi;
 }
 
 float leftPaddleFaceX(const Court& court)
 {
-    return hitbox::rightOf(court.left.getCollisionBox());
+    return hitbox::rightOf(hitbox::toBox(court.left.getCollisionBox()));
 }
 } // namespace
 
@@ -82,7 +81,8 @@ TEST(BallWalls, BallGoingDownBouncesOffTheBottomWall)
     court.place({600.f, 600.f}, {-300.f, 600.f});
     ASSERT_EQ(court.stepUntilHit(), std::vector<GameEvent>{GameEvent::WallHit});
     EXPECT_FLOAT_EQ(court.ball.getVelocity().y, -600.f);
-    EXPECT_LE(hitbox::bottomOf(court.ball.getCollisionBox()), court.arena.playBottom());
+    EXPECT_LE(hitbox::bottomOf(hitbox::toBox(court.ball.getCollisionBox())),
+              court.arena.playBottom());
 }
 
 TEST(BallWalls, TheBounceHappensPartWayThroughTheStepAndTheRestOfTheMoveIsKept)
@@ -104,7 +104,7 @@ TEST(BallWalls, AVeryFastSteepBallStaysBetweenTheWalls)
     for (int i = 0; i < 50; ++i)
     {
         court.step();
-        const sf::FloatRect box = court.ball.getCollisionBox();
+        const hitbox::Box box = hitbox::toBox(court.ball.getCollisionBox());
         ASSERT_GE(box.top, court.arena.playTop()) << "step " << i;
         ASSERT_LE(hitbox::bottomOf(box), court.arena.playBottom()) << "step " << i;
     }
@@ -228,12 +228,13 @@ TEST(BallPaddle, APaddleNeverPushesIntoTheBall)
 {
     // Ball resting just under the paddle's bottom end; the paddle tries to move down.
     Court court;
-    const float paddleBottom = hitbox::bottomOf(court.left.getCollisionBox());
+    const float paddleBottom = hitbox::bottomOf(hitbox::toBox(court.left.getCollisionBox()));
     court.place({court.left.getPosition().x, paddleBottom + 7.f + 3.f}, {0.f, 0.f});
     court.left.planMove(1.f, court.arena, hitbox::stepSeconds); // 5 px down: into the ball
     court.left.finishMove(court.ball.getCollisionBox());
     EXPECT_FALSE(court.ball.getCollisionBox().intersects(court.left.getCollisionBox()));
-    EXPECT_NEAR(hitbox::bottomOf(court.left.getCollisionBox()), paddleBottom + 3.f, 1e-3f);
+    EXPECT_NEAR(hitbox::bottomOf(hitbox::toBox(court.left.getCollisionBox())), paddleBottom + 3.f,
+                1e-3f);
 }
 
 TEST(BallPaddle, ABallGrazingAPaddleCornerBouncesOnceAndGoesOn)

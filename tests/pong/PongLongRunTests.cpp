@@ -1,6 +1,8 @@
 // Long games: nothing escapes, nothing becomes NaN, and a seed replays the same game.
 #include "PongTestHelpers.h"
 
+#include "hitbox/geometry/Overlap.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -30,9 +32,10 @@ void playAndCheckEveryStep(float seconds, unsigned seed)
     {
         step(pong, noKeys);
         const Ball& ball = pong.getBall();
-        const sf::FloatRect box = ball.getCollisionBox();
+        const hitbox::Box box = hitbox::toBox(ball.getCollisionBox());
         const Score& score = pong.getScore();
-        ASSERT_TRUE(hitbox::isFinite(box) && hitbox::isFinite(ball.getVelocity())) << "step " << i;
+        ASSERT_TRUE(hitbox::isFinite(box) && hitbox::isFinite(hitbox::toVec2(ball.getVelocity())))
+            << "step " << i;
         ASSERT_GE(box.top, arena.playTop()) << "step " << i;
         ASSERT_LE(hitbox::bottomOf(box), arena.playBottom()) << "step " << i;
         ASSERT_GT(box.left, -size - oneStep) << "step " << i;
@@ -43,10 +46,10 @@ void playAndCheckEveryStep(float seconds, unsigned seed)
         {
             ASSERT_GE(score.pointsOf(side), 0);
             ASSERT_LE(score.pointsOf(side), score.getPointsToWin());
-            const sf::FloatRect paddle = pong.getPaddle(side).getCollisionBox();
+            const hitbox::Box paddle = hitbox::toBox(pong.getPaddle(side).getCollisionBox());
             ASSERT_GE(paddle.top, arena.playTop()) << "step " << i;
             ASSERT_LE(hitbox::bottomOf(paddle), arena.playBottom()) << "step " << i;
-            ASSERT_FALSE(paddle.intersects(box)) << "ball inside a paddle at step " << i;
+            ASSERT_FALSE(hitbox::boxVsBox(paddle, box)) << "ball inside a paddle at step " << i;
         }
     }
     // The hour was really played: matches were won and rallies happened.

@@ -61,7 +61,7 @@ inline std::string show(const hitbox::Polygon& polygon)
     std::ostringstream out;
     out.precision(9);
     out << "Polygon{";
-    for (sf::Vector2f p : polygon.points)
+    for (hitbox::Vec2 p : polygon.points)
         out << "(" << p.x << ", " << p.y << ") ";
     out << "}";
     return out.str();
@@ -93,11 +93,11 @@ struct RandomCases
         const double v = uniform(low, high);
         return static_cast<float>(chance(0.1) ? std::round(v) : v);
     }
-    sf::Vector2f position() { return {value(0, 600), value(0, 600)}; }
+    hitbox::Vec2 position() { return {value(0, 600), value(0, 600)}; }
     float radius() { return chance(0.05) ? 0.f : value(0.5, 80); }
-    sf::FloatRect box()
+    hitbox::Box box()
     {
-        sf::FloatRect box(value(0, 600), value(0, 600), value(0.5, 150), value(0.5, 150));
+        hitbox::Box box(value(0, 600), value(0, 600), value(0.5, 150), value(0.5, 150));
         if (chance(0.05))
         {
             box.left += box.width;
@@ -105,7 +105,7 @@ struct RandomCases
         }
         return box;
     }
-    sf::Vector2f displacement()
+    hitbox::Vec2 displacement()
     {
         const double kind = uniform(0, 1);
         if (kind < 0.05)
@@ -113,8 +113,8 @@ struct RandomCases
         if (kind < 0.15)
             return {value(-2, 2), value(-2, 2)};
         if (kind < 0.30)
-            return chance(0.5) ? sf::Vector2f(value(-300, 300), 0.f)
-                               : sf::Vector2f(0.f, value(-300, 300));
+            return chance(0.5) ? hitbox::Vec2(value(-300, 300), 0.f)
+                               : hitbox::Vec2(0.f, value(-300, 300));
         if (kind < 0.40)
         {
             // Up to 10^6 px/s at 120 steps a second.
@@ -191,9 +191,9 @@ inline Tally sweptCircles(long cases, unsigned seed)
     {
         const hitbox::Circle mover{random.position(), random.radius()};
         const hitbox::Circle target{random.position(), random.radius()};
-        const sf::Vector2f move = random.displacement();
+        const hitbox::Vec2 move = random.displacement();
         const bool moving = random.chance(0.3);
-        const sf::Vector2f targetMove = moving ? random.displacement() : sf::Vector2f();
+        const hitbox::Vec2 targetMove = moving ? random.displacement() : hitbox::Vec2();
         hitbox::Hit hit;
         if (moving)
             hit = hitbox::sweepCircleVsMovingCircle(mover, move, target, targetMove);
@@ -230,8 +230,8 @@ inline Tally sweptCircleVsBox(long cases, unsigned seed)
     for (long i = 0; i < cases && tally.failures < 20; ++i)
     {
         const hitbox::Circle mover{random.position(), random.radius()};
-        const sf::FloatRect box = random.box();
-        const sf::Vector2f move = random.displacement();
+        const hitbox::Box box = random.box();
+        const hitbox::Vec2 move = random.displacement();
         const hitbox::Hit hit = hitbox::sweepCircleVsBox(mover, move, box);
         const auto depthAt = [&](double s, Point offset)
         {
@@ -253,15 +253,15 @@ inline Tally sweptBoxes(long cases, unsigned seed)
     Tally tally;
     for (long i = 0; i < cases && tally.failures < 20; ++i)
     {
-        sf::FloatRect mover = random.box();
+        hitbox::Box mover = random.box();
         if (random.chance(0.2))
             mover.width = mover.height = 0.f; // a point: segmentVsBox
-        const sf::FloatRect target = random.box();
-        const sf::Vector2f move = random.displacement();
+        const hitbox::Box target = random.box();
+        const hitbox::Vec2 move = random.displacement();
         const hitbox::Hit hit =
             mover.width == 0.f
                 ? hitbox::segmentVsBox({mover.left, mover.top},
-                                       sf::Vector2f(mover.left, mover.top) + move, target)
+                                       hitbox::Vec2(mover.left, mover.top) + move, target)
                 : hitbox::sweepBoxVsBox(mover, move, target);
         const auto depthAt = [&](double s, Point offset)
         { return reference::boxPenetration(mover, reference::toPoint(move) * s + offset, target); };
@@ -276,7 +276,7 @@ inline Tally sweptBoxes(long cases, unsigned seed)
 inline std::vector<reference::Vec<double>> asVecs(const hitbox::Polygon& polygon)
 {
     std::vector<reference::Vec<double>> points;
-    for (sf::Vector2f p : polygon.points)
+    for (hitbox::Vec2 p : polygon.points)
         points.push_back({p.x, p.y});
     return points;
 }
@@ -284,7 +284,7 @@ inline std::vector<reference::Vec<double>> asVecs(const hitbox::Polygon& polygon
 inline std::vector<reference::Point> asPoints(const hitbox::Polygon& polygon)
 {
     std::vector<reference::Point> points;
-    for (sf::Vector2f p : polygon.points)
+    for (hitbox::Vec2 p : polygon.points)
         points.push_back({p.x, p.y});
     return points;
 }
@@ -422,12 +422,12 @@ inline Tally polygonsWithWholeNumbers(long cases, unsigned seed)
             continue;
         }
         // Moving both by the same whole-number offset changes nothing (exact).
-        const sf::Vector2f offset(float(randomWhole(-1000, 1000)), float(randomWhole(-1000, 1000)));
+        const hitbox::Vec2 offset(float(randomWhole(-1000, 1000)), float(randomWhole(-1000, 1000)));
         hitbox::Polygon movedA = polygons[0];
         hitbox::Polygon movedB = polygons[1];
-        for (sf::Vector2f& p : movedA.points)
+        for (hitbox::Vec2& p : movedA.points)
             p += offset;
-        for (sf::Vector2f& p : movedB.points)
+        for (hitbox::Vec2& p : movedB.points)
             p += offset;
         const hitbox::Contact moved = hitbox::polygonVsPolygon(movedA, movedB);
         if (moved.hit != contact.hit ||
@@ -461,7 +461,7 @@ inline hitbox::Capsule randomCapsule(RandomCases& random, bool allowZeroRadius)
     hitbox::Capsule capsule;
     capsule.start = {random.value(0, 300), random.value(0, 300)};
     capsule.end = random.chance(0.1) ? capsule.start
-                                     : capsule.start + sf::Vector2f(random.value(-150, 150),
+                                     : capsule.start + hitbox::Vec2(random.value(-150, 150),
                                                                     random.value(-150, 150));
     capsule.radius = allowZeroRadius && random.chance(0.05) ? 0.f : random.value(1, 40);
     return capsule;
@@ -491,7 +491,7 @@ void judgeCapsule(Tally& tally, const hitbox::Contact& contact, double radii, do
     if (std::fabs(std::hypot(contact.normal.x, contact.normal.y) - 1.0) > 1e-4)
         fail(tally, "the normal is not a unit vector", scene);
     // Moving A by the contact separates them (touching at most).
-    const sf::Vector2f push = contact.normal * contact.depth;
+    const hitbox::Vec2 push = contact.normal * contact.depth;
     if (radii - distanceAfter(push) > tolerance)
         fail(tally, "moving A by normal * depth leaves them overlapping", scene);
     // With the cores apart, it is also the shortest such move.
@@ -512,37 +512,37 @@ inline Tally capsules(long cases, unsigned seed)
     {
         const hitbox::Capsule a = randomCapsule(random, true);
         const hitbox::Capsule b = randomCapsule(random, true);
-        const auto coreDistance = [&](sf::Vector2f offset)
+        const auto coreDistance = [&](hitbox::Vec2 offset)
         {
             return reference::segmentDistance(toPoint(a.start + offset), toPoint(a.end + offset),
                                               toPoint(b.start), toPoint(b.end));
         };
         judgeCapsule(tally, hitbox::capsuleVsCapsule(a, b), double(a.radius) + b.radius,
-                     coreDistance(sf::Vector2f()), coreDistance,
+                     coreDistance(hitbox::Vec2()), coreDistance,
                      [&] { return show(a) + " vs " + show(b); });
         if (hitbox::capsuleVsCapsule(a, b).hit != hitbox::capsuleVsCapsule(b, a).hit)
             fail(tally, "capsuleVsCapsule is not symmetric",
                  [&] { return show(a) + " vs " + show(b); });
 
         const hitbox::Circle circle{b.start, b.radius};
-        const auto toCircle = [&](sf::Vector2f offset)
+        const auto toCircle = [&](hitbox::Vec2 offset)
         {
             return reference::pointSegmentDistance(
                 toPoint(circle.center), toPoint(a.start + offset), toPoint(a.end + offset));
         };
         judgeCapsule(tally, hitbox::capsuleVsCircle(a, circle), double(a.radius) + circle.radius,
-                     toCircle(sf::Vector2f()), toCircle,
+                     toCircle(hitbox::Vec2()), toCircle,
                      [&] { return show(a) + " vs " + show(circle); });
 
         hitbox::Capsule round = randomCapsule(random, false);
         const hitbox::Polygon polygon = randomConvexPolygon(random, 300);
-        const auto toPolygon = [&](sf::Vector2f offset)
+        const auto toPolygon = [&](hitbox::Vec2 offset)
         {
             return reference::segmentPolygonDistance(
                 toPoint(round.start + offset), toPoint(round.end + offset), asPoints(polygon));
         };
         judgeCapsule(tally, hitbox::capsuleVsPolygon(round, polygon), round.radius,
-                     toPolygon(sf::Vector2f()), toPolygon,
+                     toPolygon(hitbox::Vec2()), toPolygon,
                      [&] { return show(round) + " vs " + show(polygon); });
     }
     return tally;

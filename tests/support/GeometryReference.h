@@ -11,8 +11,7 @@
 //     crossing test, instead of the closest-point formula.
 #pragma once
 
-#include <SFML/Graphics/Rect.hpp>
-#include <SFML/System/Vector2.hpp>
+#include "hitbox/geometry/Shapes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +52,7 @@ inline double length(Point a)
 {
     return std::hypot(a.x, a.y);
 }
-inline Point toPoint(sf::Vector2f v)
+inline Point toPoint(hitbox::Vec2 v)
 {
     return {v.x, v.y};
 }
@@ -68,7 +67,7 @@ inline double circlePenetration(Point a, double radiusA, Point b, double radiusB
 
 // Signed distance from a point to a box: negative inside (the usual formula for a box
 // centred at the origin, after moving the point).
-inline double signedDistanceToBox(Point p, const sf::FloatRect& box)
+inline double signedDistanceToBox(Point p, const hitbox::Box& box)
 {
     const double left = std::min<double>(box.left, double(box.left) + box.width);
     const double top = std::min<double>(box.top, double(box.top) + box.height);
@@ -82,7 +81,7 @@ inline double signedDistanceToBox(Point p, const sf::FloatRect& box)
 }
 
 // Two boxes (the mover's top-left moved by `offset`): the smaller of the two axis overlaps.
-inline double boxPenetration(const sf::FloatRect& a, Point offset, const sf::FloatRect& b)
+inline double boxPenetration(const hitbox::Box& a, Point offset, const hitbox::Box& b)
 {
     const double aLeft = std::min<double>(a.left, double(a.left) + a.width) + offset.x;
     const double aTop = std::min<double>(a.top, double(a.top) + a.height) + offset.y;

@@ -1,4 +1,4 @@
-// Printers.h - GoogleTest printers, so a failure reads FloatRect{x=10, y=0, w=50, h=50}
+// Printers.h - GoogleTest printers, so a failure reads Box{x=10, y=0, w=50, h=50}
 // instead of a dump of bytes. Include it in every test file that compares these types.
 #pragma once
 
@@ -6,25 +6,17 @@
 
 #include <ostream>
 
-namespace sf
-{
-inline void PrintTo(const Vector2f& vector, std::ostream* out)
-{
-    *out << "Vector2f{" << vector.x << ", " << vector.y << "}";
-}
-inline void PrintTo(const Vector2i& vector, std::ostream* out)
-{
-    *out << "Vector2i{" << vector.x << ", " << vector.y << "}";
-}
-inline void PrintTo(const FloatRect& box, std::ostream* out)
-{
-    *out << "FloatRect{x=" << box.left << ", y=" << box.top << ", w=" << box.width
-         << ", h=" << box.height << "}";
-}
-} // namespace sf
-
 namespace hitbox
 {
+inline void PrintTo(const Vec2& vector, std::ostream* out)
+{
+    *out << "Vec2{" << vector.x << ", " << vector.y << "}";
+}
+inline void PrintTo(const Box& box, std::ostream* out)
+{
+    *out << "Box{x=" << box.left << ", y=" << box.top << ", w=" << box.width << ", h=" << box.height
+         << "}";
+}
 inline void PrintTo(const Circle& circle, std::ostream* out)
 {
     *out << "Circle{center=(" << circle.center.x << ", " << circle.center.y

@@ -22,7 +22,7 @@ void BoxArrays::load(const std::vector<BroadphaseItem>& items)
     {
         layer[i] = items[i].layer;
         mask[i] = items[i].mask;
-        const sf::FloatRect& box = items[i].box;
+        const Box& box = items[i].box;
         if (!(std::isfinite(box.left) && std::isfinite(box.top) && std::isfinite(box.width) &&
               std::isfinite(box.height)))
         {
@@ -33,7 +33,7 @@ void BoxArrays::load(const std::vector<BroadphaseItem>& items)
         }
         // The same arithmetic as boxVsBox (normalised(), then left + width), so the broadphase
         // and the exact test agree to the last bit, even at huge coordinates.
-        const sf::FloatRect upright = normalised(box);
+        const Box upright = normalised(box);
         minX[i] = upright.left;
         minY[i] = upright.top;
         maxX[i] = upright.left + upright.width;

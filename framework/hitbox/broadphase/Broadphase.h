@@ -12,9 +12,7 @@
 //   - game rules filter first: layers and masks (see below).
 #pragma once
 
-#include "hitbox/debug/DebugRenderer.h"
-
-#include <SFML/Graphics/Rect.hpp>
+#include "hitbox/geometry/Shapes.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -27,7 +25,7 @@ namespace hitbox
 // One collider as the broadphase sees it: its world box and which layers it is on / hits.
 struct BroadphaseItem
 {
-    sf::FloatRect box;
+    Box box;
     std::uint32_t layer = 1;
     std::uint32_t mask = 0xFFFFFFFF;
 };
@@ -54,6 +52,22 @@ struct BroadphaseStats
     std::size_t pairsFound = 0;
 };
 
+// What a broadphase built in its last findPairs, as plain data: debug/BroadphaseDrawing.h
+// draws it. Each method fills its own part; the others stay empty.
+struct BroadphaseLayout
+{
+    // Grid: cell (column, row) is the square at gridOrigin + (column, row) * cellSize.
+    Vec2 gridOrigin;
+    float cellSize = 0.f;
+    int columns = 0;
+    int rows = 0;
+    std::vector<std::uint32_t> boxesPerCell; // row by row; empty when there is no grid
+    // Quadtree: the region of every node.
+    std::vector<Box> nodes;
+    // Sort and sweep: each usable box's x range (left, right), in sweep order.
+    std::vector<Vec2> sweepIntervals;
+};
+
 class Broadphase
 {
 public:
@@ -63,8 +77,8 @@ public:
     virtual void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) = 0;
     virtual const char* name() const = 0;
     virtual BroadphaseStats stats() const = 0; // of the last findPairs
-    // Grid cells / quadtree nodes / sweep axis of the last findPairs.
-    virtual void drawDebug(DebugRenderer& /*debug*/) const {}
+    // Grid cells / quadtree nodes / sweep axis of the last findPairs (brute force: none).
+    virtual BroadphaseLayout layout() const { return {}; }
 };
 
 // A broadphase with good defaults (the grid picks its cell size from the items' sizes).

@@ -300,40 +300,20 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     lastStats.pairsFound = pairs.size();
 }
 
-void GridBroadphase::drawDebug(DebugRenderer& debug) const
+BroadphaseLayout GridBroadphase::layout() const
 {
-    // Too many cells to draw one by one would hide everything else: outline occupied cells
-    // only when there are not too many, otherwise just the grid lines.
+    BroadphaseLayout result;
     const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
     if (cellStart.size() != cellCount + 1)
-        return;
-    const float cell = usedCellSize;
-    if (columns <= 400 && rows <= 400)
-    {
-        const float right = originX + cell * static_cast<float>(columns);
-        const float bottom = originY + cell * static_cast<float>(rows);
-        for (int cx = 0; cx <= columns; ++cx)
-        {
-            const float x = originX + cell * static_cast<float>(cx);
-            debug.line({x, originY}, {x, bottom}, DebugRenderer::hintColor);
-        }
-        for (int cy = 0; cy <= rows; ++cy)
-        {
-            const float y = originY + cell * static_cast<float>(cy);
-            debug.line({originX, y}, {right, y}, DebugRenderer::hintColor);
-        }
-    }
-    if (cellCount > 20000)
-        return;
+        return result; // no findPairs yet
+    result.gridOrigin = {originX, originY};
+    result.cellSize = usedCellSize;
+    result.columns = columns;
+    result.rows = rows;
+    result.boxesPerCell.resize(cellCount);
     for (std::size_t c = 0; c < cellCount; ++c)
-    {
-        const std::uint32_t inCell = cellStart[c + 1] - cellStart[c];
-        if (inCell < 2)
-            continue; // cells with two or more boxes are where the tests happen
-        const float x = originX + cell * static_cast<float>(c % columns);
-        const float y = originY + cell * static_cast<float>(c / columns);
-        debug.box({x, y, cell, cell}, DebugRenderer::touchingColor);
-    }
+        result.boxesPerCell[c] = cellStart[c + 1] - cellStart[c];
+    return result;
 }
 
 } // namespace hitbox

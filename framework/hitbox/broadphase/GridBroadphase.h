@@ -22,8 +22,8 @@ public:
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
     const char* name() const override { return "Grid"; }
     BroadphaseStats stats() const override { return lastStats; }
-    // Draws the grid lines and outlines the cells that hold at least one box.
-    void drawDebug(DebugRenderer& debug) const override;
+    // The grid and how many boxes each cell holds.
+    BroadphaseLayout layout() const override;
 
     // The cell size used by the last findPairs, in pixels.
     float getCellSize() const { return usedCellSize; }

@@ -145,14 +145,14 @@ void QuadtreeBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
     lastStats.pairsFound = pairs.size();
 }
 
-void QuadtreeBroadphase::drawDebug(DebugRenderer& debug) const
+BroadphaseLayout QuadtreeBroadphase::layout() const
 {
+    BroadphaseLayout result;
     for (const Node& node : nodes)
-    {
-        debug.box({node.region.minX, node.region.minY, node.region.maxX - node.region.minX,
-                   node.region.maxY - node.region.minY},
-                  DebugRenderer::hintColor);
-    }
+        result.nodes.push_back({node.region.minX, node.region.minY,
+                                node.region.maxX - node.region.minX,
+                                node.region.maxY - node.region.minY});
+    return result;
 }
 
 } // namespace hitbox

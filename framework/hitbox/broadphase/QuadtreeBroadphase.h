@@ -24,8 +24,8 @@ public:
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
     const char* name() const override { return "Quadtree"; }
     BroadphaseStats stats() const override { return lastStats; }
-    // Outlines every node of the last frame's tree.
-    void drawDebug(DebugRenderer& debug) const override;
+    // Every node's region.
+    BroadphaseLayout layout() const override;
 
 private:
     struct Bounds

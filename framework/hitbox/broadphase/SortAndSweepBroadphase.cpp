@@ -79,19 +79,13 @@ void SortAndSweepBroadphase::findPairs(const std::vector<BroadphaseItem>& items,
     lastStats.pairsFound = pairs.size();
 }
 
-void SortAndSweepBroadphase::drawDebug(DebugRenderer& debug) const
+BroadphaseLayout SortAndSweepBroadphase::layout() const
 {
-    // One thin bar per box, stacked in sweep order, so students see the sorted intervals.
-    const float rowHeight = 3.f;
-    const std::size_t shown = std::min<std::size_t>(order.size(), 200);
-    for (std::size_t i = 0; i < shown; ++i)
-    {
-        const std::uint32_t item = order[i];
-        if (!boxes.isUsable(item))
-            continue;
-        const float y = 4.f + rowHeight * static_cast<float>(i % 40);
-        debug.line({boxes.minX[item], y}, {boxes.maxX[item], y}, DebugRenderer::hintColor);
-    }
+    BroadphaseLayout result;
+    for (const std::uint32_t item : order)
+        if (boxes.isUsable(item))
+            result.sweepIntervals.push_back({boxes.minX[item], boxes.maxX[item]});
+    return result;
 }
 
 } // namespace hitbox

@@ -19,8 +19,8 @@ public:
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
     const char* name() const override { return "SortAndSweep"; }
     BroadphaseStats stats() const override { return lastStats; }
-    // Draws each box's x range on the sweep axis along the top of the world.
-    void drawDebug(DebugRenderer& debug) const override;
+    // Each box's x range, in sweep order.
+    BroadphaseLayout layout() const override;
 
 private:
     void sortByLeftEdge();

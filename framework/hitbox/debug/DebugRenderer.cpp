@@ -20,45 +20,45 @@ namespace
 const float arrowSeconds = 0.25f; // velocity arrows show a quarter of a second of motion
 const float normalLength = 24.f;
 const float lineWidth = 2.f; // pixels
-const float pi = 3.14159265f;
 } // namespace
 
-void DebugRenderer::line(sf::Vector2f from, sf::Vector2f to, sf::Color color)
+void DebugRenderer::line(Vec2 from, Vec2 to, sf::Color color)
 {
     // Each line is a thin quad (two triangles) rather than a 1-pixel sf::PrimitiveType::Lines
     // segment, so outlines stay visible on a lecture-hall projector.
-    const sf::Vector2f along = to - from;
+    const Vec2 along = to - from;
     const float length = std::sqrt(along.x * along.x + along.y * along.y);
-    const sf::Vector2f side = length > 0.f
-                                  ? sf::Vector2f(-along.y, along.x) * (lineWidth / 2.f / length)
-                                  : sf::Vector2f(lineWidth / 2.f, 0.f);
-    const sf::Vertex corners[4] = {
-        {from - side, color}, {from + side, color}, {to + side, color}, {to - side, color}};
+    const Vec2 side = length > 0.f ? Vec2(-along.y, along.x) * (lineWidth / 2.f / length)
+                                   : Vec2(lineWidth / 2.f, 0.f);
+    const sf::Vertex corners[4] = {{toSfml(from - side), color},
+                                   {toSfml(from + side), color},
+                                   {toSfml(to + side), color},
+                                   {toSfml(to - side), color}};
     for (int index : {0, 1, 2, 0, 2, 3})
         vertices.append(corners[index]);
 }
 
-void DebugRenderer::arrow(sf::Vector2f from, sf::Vector2f to, sf::Color color)
+void DebugRenderer::arrow(Vec2 from, Vec2 to, sf::Color color)
 {
     line(from, to, color);
-    const sf::Vector2f along = to - from;
+    const Vec2 along = to - from;
     const float length = std::sqrt(along.x * along.x + along.y * along.y);
     if (length < 1e-3f)
         return;
     // Two short strokes at 30 degrees either side of the shaft make the head.
-    const sf::Vector2f back = -along / length * std::fmin(8.f, length / 2.f);
-    const sf::Vector2f side(-back.y * 0.5f, back.x * 0.5f);
+    const Vec2 back = -along / length * std::fmin(8.f, length / 2.f);
+    const Vec2 side(-back.y * 0.5f, back.x * 0.5f);
     line(to, to + back + side, color);
     line(to, to + back - side, color);
 }
 
-void DebugRenderer::box(const sf::FloatRect& area, sf::Color color)
+void DebugRenderer::box(const Box& area, sf::Color color)
 {
-    const sf::FloatRect b = normalised(area);
-    const sf::Vector2f topLeft(b.left, b.top);
-    const sf::Vector2f topRight(b.left + b.width, b.top);
-    const sf::Vector2f bottomRight(b.left + b.width, b.top + b.height);
-    const sf::Vector2f bottomLeft(b.left, b.top + b.height);
+    const Box b = normalised(area);
+    const Vec2 topLeft(b.left, b.top);
+    const Vec2 topRight(b.left + b.width, b.top);
+    const Vec2 bottomRight(b.left + b.width, b.top + b.height);
+    const Vec2 bottomLeft(b.left, b.top + b.height);
     line(topLeft, topRight, color);
     line(topRight, bottomRight, color);
     line(bottomRight, bottomLeft, color);
@@ -72,30 +72,30 @@ void DebugRenderer::circle(const Circle& shape, sf::Color color)
     {
         const float a0 = 2.f * pi * static_cast<float>(i) / segments;
         const float a1 = 2.f * pi * static_cast<float>(i + 1) / segments;
-        line(shape.center + shape.radius * sf::Vector2f(std::cos(a0), std::sin(a0)),
-             shape.center + shape.radius * sf::Vector2f(std::cos(a1), std::sin(a1)), color);
+        line(shape.center + shape.radius * Vec2(std::cos(a0), std::sin(a0)),
+             shape.center + shape.radius * Vec2(std::cos(a1), std::sin(a1)), color);
     }
 }
 
-void DebugRenderer::cross(sf::Vector2f point, float size, sf::Color color)
+void DebugRenderer::cross(Vec2 point, float size, sf::Color color)
 {
-    line(point - sf::Vector2f(size, size), point + sf::Vector2f(size, size), color);
-    line(point - sf::Vector2f(size, -size), point + sf::Vector2f(size, -size), color);
+    line(point - Vec2(size, size), point + Vec2(size, size), color);
+    line(point - Vec2(size, -size), point + Vec2(size, -size), color);
 }
 
 void DebugRenderer::objectBox(const GameObject& object, bool touching)
 {
-    const sf::FloatRect area = object.getCollisionBox();
+    const Box area = toBox(object.getCollisionBox());
     box(area, touching ? touchingColor : freeColor);
-    const sf::Vector2f middle = centerOf(area);
-    arrow(middle, middle + object.getVelocity() * arrowSeconds, velocityColor);
+    const Vec2 middle = centerOf(area);
+    arrow(middle, middle + toVec2(object.getVelocity()) * arrowSeconds, velocityColor);
 }
 
 void DebugRenderer::objectCircle(const GameObject& object, bool touching)
 {
     const Circle shape = object.getBoundingCircle();
     circle(shape, touching ? touchingColor : freeColor);
-    arrow(shape.center, shape.center + object.getVelocity() * arrowSeconds, velocityColor);
+    arrow(shape.center, shape.center + toVec2(object.getVelocity()) * arrowSeconds, velocityColor);
 }
 
 void DebugRenderer::contact(const Contact& found)

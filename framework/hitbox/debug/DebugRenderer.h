@@ -5,7 +5,7 @@
 // no window, so tests can check what would be drawn.
 #pragma once
 
-#include "hitbox/geometry/Shapes.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
@@ -29,11 +29,11 @@ public:
     static const sf::Color normalColor;   // contact normals
     static const sf::Color hintColor;     // anything else: rays, swept areas, grids
 
-    void line(sf::Vector2f from, sf::Vector2f to, sf::Color color);
-    void arrow(sf::Vector2f from, sf::Vector2f to, sf::Color color);
-    void box(const sf::FloatRect& box, sf::Color color);
+    void line(Vec2 from, Vec2 to, sf::Color color);
+    void arrow(Vec2 from, Vec2 to, sf::Color color);
+    void box(const Box& box, sf::Color color);
     void circle(const Circle& circle, sf::Color color);
-    void cross(sf::Vector2f point, float size, sf::Color color);
+    void cross(Vec2 point, float size, sf::Color color);
 
     // An object's world collision box (or bounding circle) and its velocity arrow, which
     // shows where the object will be in a quarter of a second.

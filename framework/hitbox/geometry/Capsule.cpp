@@ -1,7 +1,7 @@
 #include "hitbox/geometry/Capsule.h"
 
 #include "hitbox/geometry/Overlap.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,16 +22,16 @@ double clamp01(double value)
     return std::min(1.0, std::max(0.0, value));
 }
 
-sf::Vector2f middleOf(const Capsule& capsule)
+Vec2 middleOf(const Capsule& capsule)
 {
     return (capsule.start + capsule.end) / 2.f;
 }
 
 // A unit vector at right angles to the segment, on the side of `towards` (or (-y, x) when
 // `towards` is on the line). The zero vector when the segment has no length.
-sf::Vector2f sideNormal(sf::Vector2f start, sf::Vector2f end, sf::Vector2f towards)
+Vec2 sideNormal(Vec2 start, Vec2 end, Vec2 towards)
 {
-    sf::Vector2f normal = unitOr(perpendicular(end - start), {0.f, 0.f});
+    Vec2 normal = unitVectorOr(perpendicular(end - start), {0.f, 0.f});
     if (dot(towards - start, normal) < 0.f)
         normal = -normal;
     return normal;
@@ -39,13 +39,13 @@ sf::Vector2f sideNormal(sf::Vector2f start, sf::Vector2f end, sf::Vector2f towar
 
 // The capsules' cores touch or cross: push A across B's segment (or across A's own segment
 // when B's is a point) far enough that A's whole segment is radiusSum away from that line.
-Contact crossingContact(const Capsule& a, const Capsule& b, sf::Vector2f pointOnB)
+Contact crossingContact(const Capsule& a, const Capsule& b, Vec2 pointOnB)
 {
     Contact contact;
     contact.hit = true;
     const float radiusSum = a.radius + b.radius;
-    sf::Vector2f normal = sideNormal(b.start, b.end, middleOf(a));
-    if (normal != sf::Vector2f())
+    Vec2 normal = sideNormal(b.start, b.end, middleOf(a));
+    if (normal != Vec2())
     {
         const float deepestEnd =
             std::fmin(dot(a.start - b.start, normal), dot(a.end - b.start, normal));
@@ -55,7 +55,7 @@ Contact crossingContact(const Capsule& a, const Capsule& b, sf::Vector2f pointOn
     else
     {
         // B is a point lying on A's segment: move A sideways off it.
-        normal = unitOr(perpendicular(a.end - a.start), {-1.f, 0.f});
+        normal = unitVectorOr(perpendicular(a.end - a.start), {-1.f, 0.f});
         contact.normal = normal;
         contact.depth = radiusSum;
     }
@@ -64,12 +64,12 @@ Contact crossingContact(const Capsule& a, const Capsule& b, sf::Vector2f pointOn
 }
 
 // Which side of the line a->b the point p is on (double, so the sign is trustworthy).
-double sideOf(sf::Vector2f a, sf::Vector2f b, sf::Vector2f p)
+double sideOf(Vec2 a, Vec2 b, Vec2 p)
 {
     return (double(b.x) - a.x) * (double(p.y) - a.y) - (double(b.y) - a.y) * (double(p.x) - a.x);
 }
 
-bool segmentsCross(sf::Vector2f a0, sf::Vector2f a1, sf::Vector2f b0, sf::Vector2f b1)
+bool segmentsCross(Vec2 a0, Vec2 a1, Vec2 b0, Vec2 b1)
 {
     const double first = sideOf(a0, a1, b0) * sideOf(a0, a1, b1);
     const double second = sideOf(b0, b1, a0) * sideOf(b0, b1, a1);
@@ -78,19 +78,19 @@ bool segmentsCross(sf::Vector2f a0, sf::Vector2f a1, sf::Vector2f b0, sf::Vector
 
 // Closest points this near are "the same point" for choosing a direction: the rounding of
 // the closest-point formula is about a millionth of the coordinates' size.
-bool nearlySame(sf::Vector2f a, sf::Vector2f b)
+bool nearlySame(Vec2 a, Vec2 b)
 {
     const float scale = 1.f + std::fmax(std::fmax(std::fabs(a.x), std::fabs(a.y)),
                                         std::fmax(std::fabs(b.x), std::fabs(b.y)));
-    return lengthOf(a - b) <= 1e-6f * scale;
+    return length(a - b) <= 1e-6f * scale;
 }
 
 } // namespace
 
 // [slide:capsule-closest-point]
-sf::Vector2f closestPointOnSegment(sf::Vector2f point, sf::Vector2f start, sf::Vector2f end)
+Vec2 closestPointOnSegment(Vec2 point, Vec2 start, Vec2 end)
 {
-    const sf::Vector2f along = end - start;
+    const Vec2 along = end - start;
     const double lengthSquared = double(along.x) * along.x + double(along.y) * along.y;
     if (lengthSquared == 0.0)
         return start; // a segment with no length is a point
@@ -120,14 +120,13 @@ struct SegmentTimes
     double t;
 };
 
-SegmentTimes closestTimes(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
-                          sf::Vector2f end2)
+SegmentTimes closestTimes(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2)
 {
     // Write the points as start1 + s * d1 and start2 + t * d2 and minimise the distance over
     // s and t in [0, 1] (the usual derivation: set both derivatives to zero, then clamp).
-    const sf::Vector2f d1 = end1 - start1;
-    const sf::Vector2f d2 = end2 - start2;
-    const sf::Vector2f r = start1 - start2;
+    const Vec2 d1 = end1 - start1;
+    const Vec2 d2 = end2 - start2;
+    const Vec2 r = start1 - start2;
     const double a = double(d1.x) * d1.x + double(d1.y) * d1.y;
     const double e = double(d2.x) * d2.x + double(d2.y) * d2.y;
     const double f = double(d2.x) * r.x + double(d2.y) * r.y;
@@ -169,7 +168,7 @@ SegmentTimes closestTimes(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f s
 }
 
 // The point at `time` along start..end, in double precision.
-void pointAt(sf::Vector2f start, sf::Vector2f end, double time, double& x, double& y)
+void pointAt(Vec2 start, Vec2 end, double time, double& x, double& y)
 {
     x = start.x + (double(end.x) - start.x) * time;
     y = start.y + (double(end.y) - start.y) * time;
@@ -177,8 +176,7 @@ void pointAt(sf::Vector2f start, sf::Vector2f end, double time, double& x, doubl
 
 } // namespace
 
-SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
-                                      sf::Vector2f end2)
+SegmentPoints closestPointsOfSegments(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2)
 {
     const SegmentTimes times = closestTimes(start1, end1, start2, end2);
     double x1, y1, x2, y2;
@@ -197,8 +195,7 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
     const bool crossing = segmentsCross(a.start, a.end, b.start, b.end);
     if (crossing || nearlySame(closest.first, closest.second))
     {
-        if (!(lengthOf(closest.first - closest.second) < radiusSum) &&
-            !(crossing && radiusSum > 0.f))
+        if (!(length(closest.first - closest.second) < radiusSum) && !(crossing && radiusSum > 0.f))
             return Contact{}; // two segments with no area, or apart by more than the radii
         return crossingContact(a, b, closest.second);
     }
@@ -217,7 +214,7 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
                       static_cast<float>((ay - by) / distance)};
     contact.depth = static_cast<float>(radiusSum - distance);
     contact.point =
-        sf::Vector2f(static_cast<float>(bx), static_cast<float>(by)) + contact.normal * b.radius;
+        Vec2(static_cast<float>(bx), static_cast<float>(by)) + contact.normal * b.radius;
     return contact;
 }
 
@@ -226,7 +223,7 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
     Contact contact;
     if (!isUsable(capsule) || polygon.points.empty())
         return contact;
-    for (sf::Vector2f point : polygon.points)
+    for (Vec2 point : polygon.points)
         if (!isFinite(point))
             return contact;
     if (capsule.radius == 0.f && twiceSignedArea(polygon) == 0.f)
@@ -234,8 +231,8 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
 
     // Candidate axes (see the header): the polygon's edge normals, the capsule's normal, and
     // each capsule end to each corner.
-    const std::vector<sf::Vector2f>& corners = polygon.points;
-    std::vector<sf::Vector2f> axes;
+    const std::vector<Vec2>& corners = polygon.points;
+    std::vector<Vec2> axes;
     std::vector<bool> fromPolygonFace;
     for (std::size_t i = 0; i < corners.size(); ++i)
     {
@@ -244,8 +241,8 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
     }
     axes.push_back(perpendicular(capsule.end - capsule.start));
     fromPolygonFace.push_back(false);
-    for (sf::Vector2f corner : corners)
-        for (sf::Vector2f end : {capsule.start, capsule.end})
+    for (Vec2 corner : corners)
+        for (Vec2 end : {capsule.start, capsule.end})
         {
             axes.push_back(corner - end);
             fromPolygonFace.push_back(false);
@@ -255,14 +252,14 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
     bool bestFromFace = false;
     for (std::size_t i = 0; i < axes.size(); ++i)
     {
-        sf::Vector2f axis = unitOr(axes[i], {0.f, 0.f});
-        if (axis == sf::Vector2f())
+        Vec2 axis = unitVectorOr(axes[i], {0.f, 0.f});
+        if (axis == Vec2())
             continue; // a repeated corner, or a capsule end on a corner
         if (axis.x < 0.f || (axis.x == 0.f && axis.y < 0.f))
             axis = -axis; // point right (or down): ties then go left (or up)
         float polygonMin = dot(corners[0], axis);
         float polygonMax = polygonMin;
-        for (sf::Vector2f corner : corners)
+        for (Vec2 corner : corners)
         {
             polygonMin = std::fmin(polygonMin, dot(corner, axis));
             polygonMax = std::fmax(polygonMax, dot(corner, axis));
@@ -294,11 +291,11 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
         contact.point = corners[0];
         return contact;
     }
-    const sf::Vector2f n = contact.normal;
+    const Vec2 n = contact.normal;
     if (bestFromFace)
     {
         // The capsule's deepest point, moved onto the polygon's face.
-        const sf::Vector2f deepestEnd =
+        const Vec2 deepestEnd =
             dot(capsule.start, n) <= dot(capsule.end, n) ? capsule.start : capsule.end;
         contact.point = deepestEnd - n * capsule.radius + n * contact.depth;
     }
@@ -306,7 +303,7 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
     {
         // The polygon's corner that reaches deepest into the capsule.
         contact.point = corners[0];
-        for (sf::Vector2f corner : corners)
+        for (Vec2 corner : corners)
             if (dot(corner, n) > dot(contact.point, n))
                 contact.point = corner;
     }

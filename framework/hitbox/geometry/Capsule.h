@@ -30,24 +30,23 @@ namespace hitbox
 
 struct Capsule
 {
-    sf::Vector2f start;
-    sf::Vector2f end;
+    Vec2 start;
+    Vec2 end;
     float radius = 0.f;
 };
 
 // The point of the segment start..end nearest to `point` (start when the segment has no
 // length). Ties cannot happen: the nearest point of a segment is unique.
-sf::Vector2f closestPointOnSegment(sf::Vector2f point, sf::Vector2f start, sf::Vector2f end);
+Vec2 closestPointOnSegment(Vec2 point, Vec2 start, Vec2 end);
 
 // The closest pair of points between two segments (first on segment 1, second on 2). For
 // parallel overlapping segments, where many pairs are equally close, one of them.
 struct SegmentPoints
 {
-    sf::Vector2f first;
-    sf::Vector2f second;
+    Vec2 first;
+    Vec2 second;
 };
-SegmentPoints closestPointsOfSegments(sf::Vector2f start1, sf::Vector2f end1, sf::Vector2f start2,
-                                      sf::Vector2f end2);
+SegmentPoints closestPointsOfSegments(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2);
 
 // A = the capsule, B = the circle. Point: on the circle's rim.
 Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);

@@ -8,7 +8,7 @@ namespace hitbox
 namespace
 {
 
-float lengthSquared(sf::Vector2f vector)
+float lengthSquared(Vec2 vector)
 {
     return vector.x * vector.x + vector.y * vector.y;
 }
@@ -20,7 +20,7 @@ bool isUsable(const Circle& circle)
 
 // The point of the box nearest to `point` (the point itself when it is inside).
 // [slide:closest-point-in-box]
-sf::Vector2f closestPointInBox(sf::Vector2f point, const sf::FloatRect& box)
+Vec2 closestPointInBox(Vec2 point, const Box& box)
 {
     return {std::fmin(std::fmax(point.x, box.left), rightOf(box)),
             std::fmin(std::fmax(point.y, box.top), bottomOf(box))};
@@ -39,28 +39,28 @@ float overlapDepth(float reach, float distanceSquared)
 } // namespace
 
 // [slide:point-in-box]
-bool pointInBox(sf::Vector2f point, const sf::FloatRect& box)
+bool pointInBox(Vec2 point, const Box& box)
 {
     if (!isFinite(point) || !isFinite(box))
         return false;
-    const sf::FloatRect b = normalised(box);
+    const Box b = normalised(box);
     // Strict: a point on an edge is outside (the edge rule in Overlap.h).
     return b.left < point.x && point.x < rightOf(b) && b.top < point.y && point.y < bottomOf(b);
 }
 // [/slide]
 
-bool pointInCircle(sf::Vector2f point, const Circle& circle)
+bool pointInCircle(Vec2 point, const Circle& circle)
 {
     return circleVsCircle(Circle{point, 0.f}, circle);
 }
 
 // [slide:aabb-overlap]
-bool boxVsBox(const sf::FloatRect& first, const sf::FloatRect& second)
+bool boxVsBox(const Box& first, const Box& second)
 {
     if (!isFinite(first) || !isFinite(second))
         return false;
-    const sf::FloatRect a = normalised(first);
-    const sf::FloatRect b = normalised(second);
+    const Box a = normalised(first);
+    const Box b = normalised(second);
     // Two boxes overlap when their x ranges overlap AND their y ranges overlap.
     // Strict "<": boxes that only touch do not collide.
     return a.left < rightOf(b) && b.left < rightOf(a) && a.top < bottomOf(b) && b.top < bottomOf(a);
@@ -73,43 +73,43 @@ bool circleVsCircle(const Circle& a, const Circle& b)
     if (!isUsable(a) || !isUsable(b))
         return false;
     // Compare squared distances: same answer as comparing distances, no square root.
-    const sf::Vector2f between = a.center - b.center;
+    const Vec2 between = a.center - b.center;
     const float radiusSum = a.radius + b.radius;
     return lengthSquared(between) < radiusSum * radiusSum;
 }
 // [/slide]
 
 // [slide:circle-box-clamp]
-bool circleVsBox(const Circle& circle, const sf::FloatRect& box)
+bool circleVsBox(const Circle& circle, const Box& box)
 {
     if (!isUsable(circle) || !isFinite(box))
         return false;
-    const sf::FloatRect b = normalised(box);
+    const Box b = normalised(box);
     if (pointInBox(circle.center, b))
         return true;
-    const sf::Vector2f fromBox = circle.center - closestPointInBox(circle.center, b);
+    const Vec2 fromBox = circle.center - closestPointInBox(circle.center, b);
     return lengthSquared(fromBox) < circle.radius * circle.radius;
 }
 // [/slide]
 
-Contact pointInBoxContact(sf::Vector2f point, const sf::FloatRect& box)
+Contact pointInBoxContact(Vec2 point, const Box& box)
 {
     return circleVsBoxContact(Circle{point, 0.f}, box);
 }
 
-Contact pointInCircleContact(sf::Vector2f point, const Circle& circle)
+Contact pointInCircleContact(Vec2 point, const Circle& circle)
 {
     return circleVsCircleContact(Circle{point, 0.f}, circle);
 }
 
 // [slide:aabb-contact]
-Contact boxVsBoxContact(const sf::FloatRect& first, const sf::FloatRect& second)
+Contact boxVsBoxContact(const Box& first, const Box& second)
 {
     Contact contact;
     if (!boxVsBox(first, second))
         return contact;
-    const sf::FloatRect a = normalised(first);
-    const sf::FloatRect b = normalised(second);
+    const Box a = normalised(first);
+    const Box b = normalised(second);
 
     // How far A must move each way to stop overlapping B; the shortest wins.
     const float pushLeft = rightOf(a) - b.left;
@@ -147,24 +147,24 @@ Contact circleVsCircleContact(const Circle& a, const Circle& b)
     Contact contact;
     if (!circleVsCircle(a, b))
         return contact;
-    const sf::Vector2f between = a.center - b.center;
+    const Vec2 between = a.center - b.center;
     const float distance = std::sqrt(lengthSquared(between));
     // Same centre: no direction is better than another; push A towards -x (documented).
-    contact.normal = distance > 0.f ? between / distance : sf::Vector2f(-1.f, 0.f);
+    contact.normal = distance > 0.f ? between / distance : Vec2(-1.f, 0.f);
     contact.depth = overlapDepth(a.radius + b.radius, lengthSquared(between));
     contact.point = b.center + contact.normal * b.radius;
     contact.hit = true;
     return contact;
 }
 
-Contact circleVsBoxContact(const Circle& circle, const sf::FloatRect& box)
+Contact circleVsBoxContact(const Circle& circle, const Box& box)
 {
     Contact contact;
     if (!circleVsBox(circle, box))
         return contact;
-    const sf::FloatRect b = normalised(box);
-    const sf::Vector2f closest = closestPointInBox(circle.center, b);
-    const sf::Vector2f fromBox = circle.center - closest;
+    const Box b = normalised(box);
+    const Vec2 closest = closestPointInBox(circle.center, b);
+    const Vec2 fromBox = circle.center - closest;
     const float distanceSquared = lengthSquared(fromBox);
     contact.hit = true;
 

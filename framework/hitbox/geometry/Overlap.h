@@ -24,20 +24,20 @@
 namespace hitbox
 {
 
-bool pointInBox(sf::Vector2f point, const sf::FloatRect& box);
-bool pointInCircle(sf::Vector2f point, const Circle& circle);
-bool boxVsBox(const sf::FloatRect& a, const sf::FloatRect& b);
+bool pointInBox(Vec2 point, const Box& box);
+bool pointInCircle(Vec2 point, const Circle& circle);
+bool boxVsBox(const Box& a, const Box& b);
 bool circleVsCircle(const Circle& a, const Circle& b);
-bool circleVsBox(const Circle& circle, const sf::FloatRect& box);
+bool circleVsBox(const Circle& circle, const Box& box);
 
 // A = the point. Normal: out of the nearest edge of the box; depth: distance to that edge.
-Contact pointInBoxContact(sf::Vector2f point, const sf::FloatRect& box);
+Contact pointInBoxContact(Vec2 point, const Box& box);
 // A = the point. Normal: from the circle's centre towards the point.
-Contact pointInCircleContact(sf::Vector2f point, const Circle& circle);
+Contact pointInCircleContact(Vec2 point, const Circle& circle);
 // Pushes along the axis of least overlap. Equal overlaps: the x axis wins.
-Contact boxVsBoxContact(const sf::FloatRect& a, const sf::FloatRect& b);
+Contact boxVsBoxContact(const Box& a, const Box& b);
 Contact circleVsCircleContact(const Circle& a, const Circle& b);
 // A = the circle, B = the box. A centre inside the box is pushed out of the nearest edge.
-Contact circleVsBoxContact(const Circle& circle, const sf::FloatRect& box);
+Contact circleVsBoxContact(const Circle& circle, const Box& box);
 
 } // namespace hitbox

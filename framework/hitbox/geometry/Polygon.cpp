@@ -2,7 +2,7 @@
 
 #include "hitbox/geometry/Capsule.h"
 #include "hitbox/geometry/Overlap.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <cmath>
 
@@ -13,10 +13,10 @@ namespace
 
 // The polygon without NaN (then empty) and without repeated neighbouring points, so every
 // edge has a length and a direction.
-std::vector<sf::Vector2f> cleaned(const Polygon& polygon)
+std::vector<Vec2> cleaned(const Polygon& polygon)
 {
-    std::vector<sf::Vector2f> points;
-    for (sf::Vector2f point : polygon.points)
+    std::vector<Vec2> points;
+    for (Vec2 point : polygon.points)
     {
         if (!isFinite(point))
             return {};
@@ -28,7 +28,7 @@ std::vector<sf::Vector2f> cleaned(const Polygon& polygon)
     return points;
 }
 
-float twiceSignedAreaOf(const std::vector<sf::Vector2f>& points)
+float twiceSignedAreaOf(const std::vector<Vec2>& points)
 {
     float sum = 0.f;
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -43,10 +43,10 @@ struct Shadow
     float max;
 };
 
-Shadow shadowOn(const std::vector<sf::Vector2f>& points, sf::Vector2f axis)
+Shadow shadowOn(const std::vector<Vec2>& points, Vec2 axis)
 {
     Shadow shadow{dot(points[0], axis), dot(points[0], axis)};
-    for (sf::Vector2f point : points)
+    for (Vec2 point : points)
     {
         const float along = dot(point, axis);
         shadow.min = std::fmin(shadow.min, along);
@@ -58,9 +58,9 @@ Shadow shadowOn(const std::vector<sf::Vector2f>& points, sf::Vector2f axis)
 // One edge's axis, turned to point right (or down when vertical) so that "ties go to the
 // negative direction" means left or up, as in boxVsBoxContact. Not unit length: with whole
 // number coordinates the shadows are then exact, so touching is found exactly.
-sf::Vector2f edgeAxis(sf::Vector2f from, sf::Vector2f to)
+Vec2 edgeAxis(Vec2 from, Vec2 to)
 {
-    sf::Vector2f axis = perpendicular(to - from);
+    Vec2 axis = perpendicular(to - from);
     if (axis.x < 0.f || (axis.x == 0.f && axis.y < 0.f))
         axis = -axis;
     return axis;
@@ -73,12 +73,11 @@ sf::Vector2f edgeAxis(sf::Vector2f from, sf::Vector2f to)
 struct AxisOverlap
 {
     bool apart;
-    float overlap;         // pixels; minus the gap when apart
-    sf::Vector2f towardsA; // unit: the way to move A (from B's side to A's side)
+    float overlap; // pixels; minus the gap when apart
+    Vec2 towardsA; // unit: the way to move A (from B's side to A's side)
 };
 
-AxisOverlap overlapOnAxis(const std::vector<sf::Vector2f>& a, const std::vector<sf::Vector2f>& b,
-                          sf::Vector2f axis)
+AxisOverlap overlapOnAxis(const std::vector<Vec2>& a, const std::vector<Vec2>& b, Vec2 axis)
 {
     const Shadow shadowA = shadowOn(a, axis);
     const Shadow shadowB = shadowOn(b, axis);
@@ -87,10 +86,10 @@ AxisOverlap overlapOnAxis(const std::vector<sf::Vector2f>& a, const std::vector<
     // Equal pushes go the negative way (left or up), as boxVsBoxContact does.
     const bool negative = pushNegative <= pushPositive;
     const float push = negative ? pushNegative : pushPositive;
-    const sf::Vector2f unit = axis / lengthOf(axis);
+    const Vec2 unit = axis / length(axis);
     // (+ 0.f turns a -0 into 0, so an axis-aligned normal prints and compares cleanly.)
-    const sf::Vector2f towardsA = negative ? sf::Vector2f(-unit.x + 0.f, -unit.y + 0.f) : unit;
-    return {push <= 0.f, push / lengthOf(axis), towardsA};
+    const Vec2 towardsA = negative ? Vec2(-unit.x + 0.f, -unit.y + 0.f) : unit;
+    return {push <= 0.f, push / length(axis), towardsA};
 }
 // [/slide]
 
@@ -100,15 +99,14 @@ struct Search
     bool anyAxis = false;
     bool separated = false;
     float largestGap = 0.f;   // pixels, while separated
-    sf::Vector2f gapAxis;     // unit, from B's side towards A's side
+    Vec2 gapAxis;             // unit, from B's side towards A's side
     float leastOverlap = 0.f; // pixels, while not separated
-    sf::Vector2f overlapAxis; // unit, out of B towards A: the contact normal
+    Vec2 overlapAxis;         // unit, out of B towards A: the contact normal
     bool overlapAxisFromB = false;
 };
 
-void tryEdgesOf(const std::vector<sf::Vector2f>& owner, bool ownerIsB,
-                const std::vector<sf::Vector2f>& a, const std::vector<sf::Vector2f>& b,
-                Search& search)
+void tryEdgesOf(const std::vector<Vec2>& owner, bool ownerIsB, const std::vector<Vec2>& a,
+                const std::vector<Vec2>& b, Search& search)
 {
     if (owner.size() < 2)
         return; // a point has no edges
@@ -142,10 +140,10 @@ void tryEdgesOf(const std::vector<sf::Vector2f>& owner, bool ownerIsB,
 }
 
 // The point of `points` furthest along `direction`.
-sf::Vector2f supportPoint(const std::vector<sf::Vector2f>& points, sf::Vector2f direction)
+Vec2 supportPoint(const std::vector<Vec2>& points, Vec2 direction)
 {
-    sf::Vector2f best = points[0];
-    for (sf::Vector2f point : points)
+    Vec2 best = points[0];
+    for (Vec2 point : points)
         if (dot(point, direction) > dot(best, direction))
             best = point;
     return best;
@@ -153,7 +151,7 @@ sf::Vector2f supportPoint(const std::vector<sf::Vector2f>& points, sf::Vector2f 
 
 // cos and sin of an angle in degrees, exact for whole quarter turns (so a box turned by 90
 // degrees has exactly the corners of the unturned box with its sides swapped).
-sf::Vector2f cosSinOfDegrees(float degrees)
+Vec2 cosSinOfDegrees(float degrees)
 {
     const double turned = std::fmod(double(degrees), 360.0);
     const double quarter = turned / 90.0;
@@ -170,7 +168,7 @@ sf::Vector2f cosSinOfDegrees(float degrees)
 
 // Try the axis at right angles to every edge of both shapes (seed 002: "an axis exists
 // perpendicular to each edge"). One axis where the shadows do not overlap is enough.
-Search searchAxes(const std::vector<sf::Vector2f>& a, const std::vector<sf::Vector2f>& b)
+Search searchAxes(const std::vector<Vec2>& a, const std::vector<Vec2>& b)
 {
     Search search;
     tryEdgesOf(a, false, a, b, search);
@@ -179,7 +177,7 @@ Search searchAxes(const std::vector<sf::Vector2f>& a, const std::vector<sf::Vect
 }
 
 // Nothing to compare (an empty polygon) or nothing to share (two shapes with no area).
-bool neverCollide(const std::vector<sf::Vector2f>& a, const std::vector<sf::Vector2f>& b)
+bool neverCollide(const std::vector<Vec2>& a, const std::vector<Vec2>& b)
 {
     return a.empty() || b.empty() || (twiceSignedAreaOf(a) == 0.f && twiceSignedAreaOf(b) == 0.f);
 }
@@ -188,25 +186,24 @@ bool neverCollide(const std::vector<sf::Vector2f>& a, const std::vector<sf::Vect
 
 Polygon toPolygon(const OrientedBox& box)
 {
-    const sf::Vector2f cosSin = cosSinOfDegrees(box.angleDegrees);
+    const Vec2 cosSin = cosSinOfDegrees(box.angleDegrees);
     const float halfWidth = std::fabs(box.halfSize.x);
     const float halfHeight = std::fabs(box.halfSize.y);
     Polygon polygon;
-    for (sf::Vector2f corner :
-         {sf::Vector2f(-halfWidth, -halfHeight), sf::Vector2f(-halfWidth, halfHeight),
-          sf::Vector2f(halfWidth, halfHeight), sf::Vector2f(halfWidth, -halfHeight)})
+    for (Vec2 corner : {Vec2(-halfWidth, -halfHeight), Vec2(-halfWidth, halfHeight),
+                        Vec2(halfWidth, halfHeight), Vec2(halfWidth, -halfHeight)})
     {
         // The rotation sf::Transform::rotate uses: clockwise on screen for a positive angle.
-        const sf::Vector2f turned(corner.x * cosSin.x - corner.y * cosSin.y,
-                                  corner.x * cosSin.y + corner.y * cosSin.x);
+        const Vec2 turned(corner.x * cosSin.x - corner.y * cosSin.y,
+                          corner.x * cosSin.y + corner.y * cosSin.x);
         polygon.points.push_back(box.center + turned);
     }
     return polygon;
 }
 
-Polygon toPolygon(const sf::FloatRect& box)
+Polygon toPolygon(const Box& box)
 {
-    const sf::FloatRect b = normalised(box);
+    const Box b = normalised(box);
     return Polygon{
         {{b.left, b.top}, {b.left, bottomOf(b)}, {rightOf(b), bottomOf(b)}, {rightOf(b), b.top}}};
 }
@@ -219,8 +216,8 @@ float twiceSignedArea(const Polygon& polygon)
 AxisReport findSeparatingAxis(const Polygon& first, const Polygon& second)
 {
     AxisReport report;
-    const std::vector<sf::Vector2f> a = cleaned(first);
-    const std::vector<sf::Vector2f> b = cleaned(second);
+    const std::vector<Vec2> a = cleaned(first);
+    const std::vector<Vec2> b = cleaned(second);
     if (neverCollide(a, b))
         return report;
     const Search search = searchAxes(a, b);
@@ -235,8 +232,8 @@ AxisReport findSeparatingAxis(const Polygon& first, const Polygon& second)
 Contact polygonVsPolygon(const Polygon& first, const Polygon& second)
 {
     Contact contact;
-    const std::vector<sf::Vector2f> a = cleaned(first);
-    const std::vector<sf::Vector2f> b = cleaned(second);
+    const std::vector<Vec2> a = cleaned(first);
+    const std::vector<Vec2> b = cleaned(second);
     if (neverCollide(a, b))
         return contact;
     const Search search = searchAxes(a, b);
@@ -260,16 +257,16 @@ Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b)
     return polygonVsPolygon(toPolygon(a), toPolygon(b));
 }
 
-bool pointInPolygon(sf::Vector2f point, const Polygon& polygon)
+bool pointInPolygon(Vec2 point, const Polygon& polygon)
 {
-    const std::vector<sf::Vector2f> points = cleaned(polygon);
+    const std::vector<Vec2> points = cleaned(polygon);
     const float area = twiceSignedAreaOf(points);
     if (area == 0.f || !isFinite(point))
         return false;
     // Strictly on the inner side of every edge (the inner side depends on the winding).
     for (std::size_t i = 0; i < points.size(); ++i)
     {
-        const sf::Vector2f edge = points[(i + 1) % points.size()] - points[i];
+        const Vec2 edge = points[(i + 1) % points.size()] - points[i];
         if (!(cross(edge, point - points[i]) * area > 0.f))
             return false;
     }
@@ -279,25 +276,25 @@ bool pointInPolygon(sf::Vector2f point, const Polygon& polygon)
 Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
 {
     Contact contact;
-    const std::vector<sf::Vector2f> points = cleaned(polygon);
+    const std::vector<Vec2> points = cleaned(polygon);
     if (points.empty() || !isFinite(circle) || circle.radius < 0.f)
         return contact;
     const float area = twiceSignedAreaOf(points);
     const bool inside = pointInPolygon(circle.center, polygon);
 
     // The closest point of the polygon's outline to the centre, and the edge it is on.
-    sf::Vector2f closest = points[0];
+    Vec2 closest = points[0];
     for (std::size_t i = 0; i < points.size(); ++i)
     {
-        const sf::Vector2f onEdge =
+        const Vec2 onEdge =
             closestPointOnSegment(circle.center, points[i], points[(i + 1) % points.size()]);
-        if (lengthOf(circle.center - onEdge) < lengthOf(circle.center - closest))
+        if (length(circle.center - onEdge) < length(circle.center - closest))
         {
             closest = onEdge;
         }
     }
-    const sf::Vector2f fromPolygon = circle.center - closest;
-    const float distance = lengthOf(fromPolygon);
+    const Vec2 fromPolygon = circle.center - closest;
+    const float distance = length(fromPolygon);
 
     if (!inside && distance > 0.f)
     {
@@ -317,8 +314,8 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
     if (area == 0.f)
     {
         // Centre exactly on a polygon with no area (a point or a segment): push across it.
-        const sf::Vector2f along = points.size() > 1 ? points[1] - points[0] : sf::Vector2f();
-        contact.normal = unitOr(-perpendicular(along), {-1.f, 0.f});
+        const Vec2 along = points.size() > 1 ? points[1] - points[0] : Vec2();
+        contact.normal = unitVectorOr(-perpendicular(along), {-1.f, 0.f});
         contact.depth = circle.radius;
         contact.point = circle.center;
         return contact;
@@ -327,11 +324,10 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
     float nearest = -1.f;
     for (std::size_t i = 0; i < points.size(); ++i)
     {
-        const sf::Vector2f edge = points[(i + 1) % points.size()] - points[i];
+        const Vec2 edge = points[(i + 1) % points.size()] - points[i];
         // Outward normal: the inner side is where cross(edge, p) * area > 0.
-        const sf::Vector2f outward =
-            unitOr(area > 0.f ? sf::Vector2f(edge.y, -edge.x) : sf::Vector2f(-edge.y, edge.x),
-                   {-1.f, 0.f});
+        const Vec2 outward =
+            unitVectorOr(area > 0.f ? Vec2(edge.y, -edge.x) : Vec2(-edge.y, edge.x), {-1.f, 0.f});
         const float toEdge = -dot(circle.center - points[i], outward);
         if (nearest < 0.f || toEdge < nearest)
         {

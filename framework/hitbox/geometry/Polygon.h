@@ -41,22 +41,22 @@ namespace hitbox
 // rotating; angleDegrees turns it clockwise on screen, like sf::Transformable::setRotation.
 struct OrientedBox
 {
-    sf::Vector2f center;
-    sf::Vector2f halfSize;
+    Vec2 center;
+    Vec2 halfSize;
     float angleDegrees = 0.f;
 };
 
 // A convex polygon: its corners in order around the edge (either way round). World pixels.
 struct Polygon
 {
-    std::vector<sf::Vector2f> points;
+    std::vector<Vec2> points;
 };
 
 // The four corners, starting with the box's own top-left and going down its left side first
 // (so the first edge's axis is the box's x axis). A negative half size is read as positive.
 Polygon toPolygon(const OrientedBox& box);
 // The four corners of an axis-aligned box, in the same order (negative sizes normalised).
-Polygon toPolygon(const sf::FloatRect& box);
+Polygon toPolygon(const Box& box);
 
 // Twice the signed area (positive when the points run clockwise on screen, y down).
 float twiceSignedArea(const Polygon& polygon);
@@ -69,7 +69,7 @@ float twiceSignedArea(const Polygon& polygon);
 struct AxisReport
 {
     bool separated = true;
-    sf::Vector2f axis;
+    Vec2 axis;
     float gap = 0.f;
 };
 AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
@@ -88,6 +88,6 @@ Contact polygonVsCircle(const Polygon& polygon, const Circle& circle);
 Contact circleVsPolygon(const Circle& circle, const Polygon& polygon);
 
 // True when `point` is strictly inside the convex polygon (on an edge is outside).
-bool pointInPolygon(sf::Vector2f point, const Polygon& polygon);
+bool pointInPolygon(Vec2 point, const Polygon& polygon);
 
 } // namespace hitbox

@@ -2,7 +2,7 @@
 
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Response.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@ namespace
 
 constexpr int maxRounds = 3;
 
-sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
+Box movedBy(Box box, Vec2 offset)
 {
     box.left += offset.x;
     box.top += offset.y;
@@ -22,7 +22,7 @@ sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
 }
 
 // The velocity to keep after touching a surface: the part into it goes entirely.
-sf::Vector2f withoutPartInto(sf::Vector2f velocity, sf::Vector2f normal)
+Vec2 withoutPartInto(Vec2 velocity, Vec2 normal)
 {
     const float into = dot(velocity, normal);
     return into < 0.f ? velocity - normal * into : velocity;
@@ -39,7 +39,7 @@ float startEndingAt(float edge, float size)
 }
 
 // Moves `box` out of `solid` through the face with normal `normal` (an axis direction).
-sf::FloatRect placedAgainst(sf::FloatRect box, const sf::FloatRect& solid, sf::Vector2f normal)
+Box placedAgainst(Box box, const Box& solid, Vec2 normal)
 {
     if (normal.x < 0.f)
         box.left = startEndingAt(solid.left, box.width);
@@ -60,11 +60,10 @@ struct Candidate
 };
 
 // How long the stretch of surface is along which the moved mover touches the solid.
-float sharedLengthOf(const Hit& hit, const sf::FloatRect& mover, sf::Vector2f move,
-                     const sf::FloatRect& solid)
+float sharedLengthOf(const Hit& hit, const Box& mover, Vec2 move, const Box& solid)
 {
-    const sf::FloatRect then(mover.left + move.x * hit.time, mover.top + move.y * hit.time,
-                             mover.width, mover.height);
+    const Box then(mover.left + move.x * hit.time, mover.top + move.y * hit.time, mover.width,
+                   mover.height);
     if (hit.normal.x != 0.f)
         return std::fmin(bottomOf(then), bottomOf(solid)) - std::fmax(then.top, solid.top);
     return std::fmin(rightOf(then), rightOf(solid)) - std::fmax(then.left, solid.left);
@@ -72,14 +71,14 @@ float sharedLengthOf(const Hit& hit, const sf::FloatRect& mover, sf::Vector2f mo
 
 } // namespace
 
-MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
-                           const std::vector<sf::FloatRect>& solids, bool sortByTime)
+MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids,
+                           bool sortByTime)
 {
     MoveResult result{normalised(box), velocity, {}};
     if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return result;
-    sf::Vector2f stepVelocity = velocity; // used for this step's move (seed 004's slide)
-    std::vector<Candidate> resolved;      // for the rounding clean-up at the end
+    Vec2 stepVelocity = velocity;    // used for this step's move (seed 004's slide)
+    std::vector<Candidate> resolved; // for the rounding clean-up at the end
     for (int round = 0; round < maxRounds; ++round)
     {
         // 1. Which solids would this move hit, and when?
@@ -125,39 +124,38 @@ MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, floa
     // against that surface, so that touching stays touching (the edge rule).
     for (std::size_t i = 0; i < resolved.size(); ++i)
     {
-        const sf::FloatRect solid = normalised(solids[resolved[i].solid]);
+        const Box solid = normalised(solids[resolved[i].solid]);
         if (boxVsBox(result.box, solid))
             result.box = placedAgainst(result.box, solid, result.hits[i].normal);
     }
     return result;
 }
 
-MoveResult moveBoxPerAxis(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
-                          const std::vector<sf::FloatRect>& solids)
+MoveResult moveBoxPerAxis(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids)
 {
     MoveResult result{normalised(box), velocity, {}};
     if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return result;
-    const sf::Vector2f move = velocity * dt;
+    const Vec2 move = velocity * dt;
     for (int axis = 0; axis < 2; ++axis)
     {
         const float step = axis == 0 ? move.x : move.y;
-        const sf::FloatRect before = result.box;
+        const Box before = result.box;
         if (axis == 0)
             result.box.left += step;
         else
             result.box.top += step;
-        for (const sf::FloatRect& solidBox : solids)
+        for (const Box& solidBox : solids)
         {
-            const sf::FloatRect solid = normalised(solidBox);
+            const Box solid = normalised(solidBox);
             if (!boxVsBox(result.box, solid))
                 continue;
             // Push back against this axis's motion. Not moving on this axis: leave it to the
             // other axis, unless nothing moves at all.
-            sf::Vector2f normal;
+            Vec2 normal;
             if (step != 0.f)
-                normal = axis == 0 ? sf::Vector2f(step > 0.f ? -1.f : 1.f, 0.f)
-                                   : sf::Vector2f(0.f, step > 0.f ? -1.f : 1.f);
+                normal = axis == 0 ? Vec2(step > 0.f ? -1.f : 1.f, 0.f)
+                                   : Vec2(0.f, step > 0.f ? -1.f : 1.f);
             else if (axis == 1 && move.x == 0.f)
                 normal = boxVsBoxContact(result.box, solid).normal;
             else

@@ -26,8 +26,8 @@ namespace hitbox
 
 struct MoveResult
 {
-    sf::FloatRect box;     // where the mover ends up
-    sf::Vector2f velocity; // the velocity to keep: the parts into each surface hit removed
+    Box box;               // where the mover ends up
+    Vec2 velocity;         // the velocity to keep: the parts into each surface hit removed
     std::vector<Hit> hits; // the hits resolved, in the order they were resolved
 };
 
@@ -37,15 +37,14 @@ struct MoveResult
 // that starts overlapping a solid is first pushed out of it (the push-out of boxVsBoxContact). Up
 // to three rounds, so that a slide that turns into another solid (an inside corner) is caught too.
 // dt <= 0, NaN or infinite input: no move.
-MoveResult moveBoxAndSlide(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
-                           const std::vector<sf::FloatRect>& solids, bool sortByTime = true);
+MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids,
+                           bool sortByTime = true);
 
 // Seed 003's per-axis move: x first, then y; after each, push out of every solid overlapped,
 // against the direction of that axis's motion, and zero that axis's velocity. Each Hit has
 // time = the fraction of that axis's move kept, the face normal, the depth pushed out, and
 // the middle of the touching edge as point. A solid overlapped while not moving on that axis
 // is left for the other axis (or, if neither moves, pushed out as boxVsBoxContact says).
-MoveResult moveBoxPerAxis(const sf::FloatRect& box, sf::Vector2f velocity, float dt,
-                          const std::vector<sf::FloatRect>& solids);
+MoveResult moveBoxPerAxis(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids);
 
 } // namespace hitbox

@@ -1,6 +1,6 @@
 #include "hitbox/geometry/Response.h"
 
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <cmath>
 
@@ -8,7 +8,7 @@ namespace hitbox
 {
 
 // [slide:response-slide]
-sf::Vector2f slideVelocity(sf::Vector2f velocity, const Hit& hit)
+Vec2 slideVelocity(Vec2 velocity, const Hit& hit)
 {
     if (!hit.hit)
         return velocity;
@@ -21,7 +21,7 @@ sf::Vector2f slideVelocity(sf::Vector2f velocity, const Hit& hit)
 // [/slide]
 
 // [slide:response-bounce]
-sf::Vector2f bounceVelocity(sf::Vector2f velocity, sf::Vector2f normal, float restitution)
+Vec2 bounceVelocity(Vec2 velocity, Vec2 normal, float restitution)
 {
     const float bounciness = std::fmin(std::fmax(restitution, 0.f), 1.f);
     const float alongNormal = dot(velocity, normal);
@@ -32,16 +32,15 @@ sf::Vector2f bounceVelocity(sf::Vector2f velocity, sf::Vector2f normal, float re
 }
 // [/slide]
 
-sf::Vector2f pushOutOffset(const Contact& contact)
+Vec2 pushOutOffset(const Contact& contact)
 {
     if (!contact.hit)
         return {0.f, 0.f};
     return contact.normal * contact.depth;
 }
 
-VelocityPair elasticCollision(sf::Vector2f firstVelocity, float firstMass,
-                              sf::Vector2f secondVelocity, float secondMass, sf::Vector2f normal,
-                              float restitution)
+VelocityPair elasticCollision(Vec2 firstVelocity, float firstMass, Vec2 secondVelocity,
+                              float secondMass, Vec2 normal, float restitution)
 {
     const VelocityPair unchanged{firstVelocity, secondVelocity};
     if (!(firstMass > 0.f) || !(secondMass > 0.f))

@@ -26,16 +26,16 @@ namespace hitbox
 //   v + n * |v . n| * (1 - t)
 // Only the part of the velocity going INTO the surface is taken away, and only for the part
 // of the step after the impact (1 - t). Started inside (t = 0): the whole inward part goes.
-sf::Vector2f slideVelocity(sf::Vector2f velocity, const Hit& hit);
+Vec2 slideVelocity(Vec2 velocity, const Hit& hit);
 
 // Reflect the velocity off a surface: the part into the surface is reversed and scaled by
 // `restitution` (1 = perfectly bouncy, 0 = stops dead against it, like a slide). The part
 // along the surface is kept. Restitution is clamped to [0, 1].
-sf::Vector2f bounceVelocity(sf::Vector2f velocity, sf::Vector2f normal, float restitution);
+Vec2 bounceVelocity(Vec2 velocity, Vec2 normal, float restitution);
 
 // How far to move A so that it stops overlapping B: normal * depth (the minimum translation
 // vector). After it they touch, which is not a collision. (0, 0) when there is no hit.
-sf::Vector2f pushOutOffset(const Contact& contact);
+Vec2 pushOutOffset(const Contact& contact);
 
 // Two bodies that bump: new velocities after an elastic collision along `normal` (out of the
 // second towards the first, as a Contact's normal with A = first). Momentum is kept and, with
@@ -45,11 +45,10 @@ sf::Vector2f pushOutOffset(const Contact& contact);
 // bodies already moving apart, change nothing.
 struct VelocityPair
 {
-    sf::Vector2f first;
-    sf::Vector2f second;
+    Vec2 first;
+    Vec2 second;
 };
-VelocityPair elasticCollision(sf::Vector2f firstVelocity, float firstMass,
-                              sf::Vector2f secondVelocity, float secondMass, sf::Vector2f normal,
-                              float restitution = 1.f);
+VelocityPair elasticCollision(Vec2 firstVelocity, float firstMass, Vec2 secondVelocity,
+                              float secondMass, Vec2 normal, float restitution = 1.f);
 
 } // namespace hitbox

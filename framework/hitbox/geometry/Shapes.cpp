@@ -5,27 +5,22 @@
 namespace hitbox
 {
 
-sf::Vector2f centerOf(const sf::FloatRect& box)
+Vec2 centerOf(const Box& box)
 {
     return {box.left + box.width / 2.f, box.top + box.height / 2.f};
 }
 
-float rightOf(const sf::FloatRect& box)
+float rightOf(const Box& box)
 {
     return box.left + box.width;
 }
 
-float bottomOf(const sf::FloatRect& box)
+float bottomOf(const Box& box)
 {
     return box.top + box.height;
 }
 
-bool isFinite(sf::Vector2f point)
-{
-    return std::isfinite(point.x) && std::isfinite(point.y);
-}
-
-bool isFinite(const sf::FloatRect& box)
+bool isFinite(const Box& box)
 {
     return std::isfinite(box.left) && std::isfinite(box.top) && std::isfinite(box.width) &&
            std::isfinite(box.height);

@@ -1,23 +1,51 @@
 // Shapes.h - the plain value types every collision test works on.
 //
-// Units are pixels (world units) and seconds. Boxes are sf::FloatRect (left, top, width,
-// height), vectors are sf::Vector2f: the types SFML students already know. Nothing here
-// draws or needs a window.
+// Units are pixels (world units) and seconds. Boxes (left, top, width, height) and vectors
+// (Vec2.h) are Hitbox's own plain values: nothing here knows SFML, draws or needs a window
+// (framework/hitbox/sfml/Conversions.h converts to and from Box / Vec2).
 #pragma once
 
-#include <SFML/Graphics/Rect.hpp>
-#include <SFML/System/Vector2.hpp>
+#include "hitbox/geometry/Vec2.h"
 
 #include <cmath>
 
 namespace hitbox
 {
 
+// An axis-aligned box: top-left corner and size in pixels, the fields of Box.
+// A negative width or height spans backwards from left/top (see normalised()).
+struct Box
+{
+    float left = 0.f;
+    float top = 0.f;
+    float width = 0.f;
+    float height = 0.f;
+
+    constexpr Box() = default;
+    constexpr Box(float leftValue, float topValue, float widthValue, float heightValue)
+        : left(leftValue), top(topValue), width(widthValue), height(heightValue)
+    {
+    }
+    constexpr Box(Vec2 topLeft, Vec2 size)
+        : left(topLeft.x), top(topLeft.y), width(size.x), height(size.y)
+    {
+    }
+};
+// Exact comparison of the four fields.
+constexpr bool operator==(const Box& a, const Box& b)
+{
+    return a.left == b.left && a.top == b.top && a.width == b.width && a.height == b.height;
+}
+constexpr bool operator!=(const Box& a, const Box& b)
+{
+    return !(a == b);
+}
+
 // A circle: centre in world pixels, radius in pixels. A negative radius is not a circle and
 // never collides; a zero radius is a point.
 struct Circle
 {
-    sf::Vector2f center;
+    Vec2 center;
     float radius = 0.f;
 };
 
@@ -26,10 +54,10 @@ struct Circle
 // moving A by `normal * depth` separates the two (the minimum translation vector).
 struct Contact
 {
-    bool hit = false;    // true only when the shapes share area (see Overlap.h's edge rules)
-    sf::Vector2f normal; // unit length when hit, (0, 0) otherwise
-    float depth = 0.f;   // penetration depth in pixels, > 0 when hit
-    sf::Vector2f point;  // a point where they touch, on B's surface
+    bool hit = false;  // true only when the shapes share area (see Overlap.h's edge rules)
+    Vec2 normal;       // unit length when hit, (0, 0) otherwise
+    float depth = 0.f; // penetration depth in pixels, > 0 when hit
+    Vec2 point;        // a point where they touch, on B's surface
 
     explicit operator bool() const { return hit; }
 };
@@ -49,9 +77,9 @@ inline float sizeReaching(float from, float to)
 // sf::Rect::intersects reads it); normalised() turns it into the usual form, whose right edge
 // (left + width) is the original left to the last bit. Inline: the broadphases run it for
 // every box every frame, and a call into another file is not inlined.
-inline sf::FloatRect normalised(const sf::FloatRect& box)
+inline Box normalised(const Box& box)
 {
-    sf::FloatRect result = box;
+    Box result = box;
     if (box.width < 0.f)
     {
         result.left = box.left + box.width;
@@ -64,13 +92,12 @@ inline sf::FloatRect normalised(const sf::FloatRect& box)
     }
     return result;
 }
-sf::Vector2f centerOf(const sf::FloatRect& box);
-float rightOf(const sf::FloatRect& box);
-float bottomOf(const sf::FloatRect& box);
+Vec2 centerOf(const Box& box);
+float rightOf(const Box& box);
+float bottomOf(const Box& box);
 
 // True when every coordinate is a finite number (no NaN, no infinity).
-bool isFinite(sf::Vector2f point);
-bool isFinite(const sf::FloatRect& box);
+bool isFinite(const Box& box);
 bool isFinite(const Circle& circle);
 
 } // namespace hitbox

@@ -58,14 +58,13 @@ Hit startedInsideHit(const Contact& overlap)
 }
 
 // [slide:swept-box]
-Hit sweepBoxVsBox(const sf::FloatRect& moverBox, sf::Vector2f displacement,
-                  const sf::FloatRect& targetBox)
+Hit sweepBoxVsBox(const Box& moverBox, Vec2 displacement, const Box& targetBox)
 {
     Hit hit;
     if (!isFinite(moverBox) || !isFinite(displacement) || !isFinite(targetBox))
         return hit;
-    const sf::FloatRect mover = normalised(moverBox);
-    const sf::FloatRect target = normalised(targetBox);
+    const Box mover = normalised(moverBox);
+    const Box target = normalised(targetBox);
     if (boxVsBox(mover, target))
         return startedInsideHit(boxVsBoxContact(mover, target));
 
@@ -86,8 +85,7 @@ Hit sweepBoxVsBox(const sf::FloatRect& moverBox, sf::Vector2f displacement,
 
     // The axis entered last is the face that was hit. An exact corner enters both at once:
     // the x axis wins, so the normal is never (0, 0).
-    const sf::Vector2f moved(mover.left + displacement.x * hit.time,
-                             mover.top + displacement.y * hit.time);
+    const Vec2 moved(mover.left + displacement.x * hit.time, mover.top + displacement.y * hit.time);
     if (x.enter >= y.enter)
     {
         const bool fromLeft = displacement.x > 0.f;
@@ -108,14 +106,14 @@ Hit sweepBoxVsBox(const sf::FloatRect& moverBox, sf::Vector2f displacement,
 }
 // [/slide]
 
-Hit segmentVsBox(sf::Vector2f start, sf::Vector2f end, const sf::FloatRect& box)
+Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box)
 {
     // A point is a box of zero size, so the segment is that box's move.
-    return sweepBoxVsBox(sf::FloatRect(start, sf::Vector2f(0.f, 0.f)), end - start, box);
+    return sweepBoxVsBox(Box(start, Vec2(0.f, 0.f)), end - start, box);
 }
 
-Hit sweepBoxVsMovingBox(const sf::FloatRect& mover, sf::Vector2f moverDisplacement,
-                        const sf::FloatRect& target, sf::Vector2f targetDisplacement)
+Hit sweepBoxVsMovingBox(const Box& mover, Vec2 moverDisplacement, const Box& target,
+                        Vec2 targetDisplacement)
 {
     // Watch from the target: it stands still and the mover makes the relative move.
     Hit hit = sweepBoxVsBox(mover, moverDisplacement - targetDisplacement, target);

@@ -44,8 +44,8 @@ struct Hit
 {
     bool hit = false;
     float time = 1.f;           // time of impact in [0, 1], a fraction of the move
-    sf::Vector2f point;         // where they touch at that time (on the target's surface)
-    sf::Vector2f normal;        // unit length when hit, (0, 0) otherwise
+    Vec2 point;                 // where they touch at that time (on the target's surface)
+    Vec2 normal;                // unit length when hit, (0, 0) otherwise
     bool startedInside = false; // already sharing area at time 0 (then time == 0)
     float depth = 0.f;          // how deep the mover already was, only when startedInside
 
@@ -59,18 +59,17 @@ Hit startedInsideHit(const Contact& overlap);
 // The slab method (seed 004): the segment from `start` to `end` against a box. A segment is
 // a point moving from start to end, so it hits when that point passes strictly inside the
 // box. `point` is start + time * (end - start).
-Hit segmentVsBox(sf::Vector2f start, sf::Vector2f end, const sf::FloatRect& box);
+Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box);
 
 // A box moving by `displacement` against a box that stays still. The idea (seed 004): grow
 // the target by the mover's size (the Minkowski sum) and cast the mover's centre through it
 // with the slab method. `point` is the middle of the touching edge (or the corner).
-Hit sweepBoxVsBox(const sf::FloatRect& mover, sf::Vector2f displacement,
-                  const sf::FloatRect& target);
+Hit sweepBoxVsBox(const Box& mover, Vec2 displacement, const Box& target);
 
 // Both boxes move during the step. Only the relative move matters, so this sweeps the mover
 // by (moverDisplacement - targetDisplacement) against a still target. `point` is where they
 // touch in the world at that time (the target has moved by time * targetDisplacement).
-Hit sweepBoxVsMovingBox(const sf::FloatRect& mover, sf::Vector2f moverDisplacement,
-                        const sf::FloatRect& target, sf::Vector2f targetDisplacement);
+Hit sweepBoxVsMovingBox(const Box& mover, Vec2 moverDisplacement, const Box& target,
+                        Vec2 targetDisplacement);
 
 } // namespace hitbox

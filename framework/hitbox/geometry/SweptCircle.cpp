@@ -1,9 +1,10 @@
 #include "hitbox/geometry/SweptCircle.h"
 
 #include "hitbox/geometry/Overlap.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <cmath>
+#include <initializer_list>
 
 namespace hitbox
 {
@@ -24,7 +25,7 @@ bool isUsable(const Circle& circle)
 //   a t^2 + 2 b t + c = 0,  a = move.move,  b = f.move,  c = f.f - radius^2,  f = start - centre.
 // Returns a time in [0, 1), or a negative number for "no hit". The caller has already
 // handled a start strictly inside (c < 0).
-double entryTime(sf::Vector2f start, sf::Vector2f move, sf::Vector2f centre, float radius)
+double entryTime(Vec2 start, Vec2 move, Vec2 centre, float radius)
 {
     const double fx = double(start.x) - centre.x;
     const double fy = double(start.y) - centre.y;
@@ -43,7 +44,7 @@ double entryTime(sf::Vector2f start, sf::Vector2f move, sf::Vector2f centre, flo
 // [/slide]
 
 // A cast of the point `start` by `move` against one circle, filled in as a Hit.
-Hit castAgainstCircle(sf::Vector2f start, sf::Vector2f move, const Circle& circle)
+Hit castAgainstCircle(Vec2 start, Vec2 move, const Circle& circle)
 {
     Hit hit;
     if (circle.radius == 0.f) // no area: a point never gets strictly inside (rounding in the
@@ -53,20 +54,20 @@ Hit castAgainstCircle(sf::Vector2f start, sf::Vector2f move, const Circle& circl
         return hit;
     hit.hit = true;
     hit.time = std::fmin(static_cast<float>(time), latestTime);
-    const sf::Vector2f centreThen = start + move * hit.time;
-    hit.normal = unitOr(centreThen - circle.center, {-1.f, 0.f});
+    const Vec2 centreThen = start + move * hit.time;
+    hit.normal = unitVectorOr(centreThen - circle.center, {-1.f, 0.f});
     hit.point = circle.center + hit.normal * circle.radius;
     return hit;
 }
 
 } // namespace
 
-Hit segmentVsCircle(sf::Vector2f start, sf::Vector2f end, const Circle& circle)
+Hit segmentVsCircle(Vec2 start, Vec2 end, const Circle& circle)
 {
     return sweepCircleVsCircle(Circle{start, 0.f}, end - start, circle);
 }
 
-Hit sweepCircleVsCircle(const Circle& mover, sf::Vector2f displacement, const Circle& target)
+Hit sweepCircleVsCircle(const Circle& mover, Vec2 displacement, const Circle& target)
 {
     if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
         return Hit{};
@@ -80,8 +81,8 @@ Hit sweepCircleVsCircle(const Circle& mover, sf::Vector2f displacement, const Ci
     return hit;
 }
 
-Hit sweepCircleVsMovingCircle(const Circle& mover, sf::Vector2f moverDisplacement,
-                              const Circle& target, sf::Vector2f targetDisplacement)
+Hit sweepCircleVsMovingCircle(const Circle& mover, Vec2 moverDisplacement, const Circle& target,
+                              Vec2 targetDisplacement)
 {
     // Watch from the target: it stands still and the mover makes the relative move.
     Hit hit = sweepCircleVsCircle(mover, moverDisplacement - targetDisplacement, target);
@@ -90,11 +91,11 @@ Hit sweepCircleVsMovingCircle(const Circle& mover, sf::Vector2f moverDisplacemen
     return hit;
 }
 
-Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& box)
+Hit sweepCircleVsBox(const Circle& mover, Vec2 displacement, const Box& box)
 {
     if (!isUsable(mover) || !isFinite(box) || !isFinite(displacement))
         return Hit{};
-    const sf::FloatRect b = normalised(box);
+    const Box b = normalised(box);
     if (circleVsBox(mover, b))
         return startedInsideHit(circleVsBoxContact(mover, b));
 
@@ -102,15 +103,14 @@ Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::F
     // The rounded box is the union of a wide slab, a tall slab and four corner circles. The
     // centre's first entry into the union is the earliest entry into any one of them.
     const float r = mover.radius;
-    const sf::Vector2f start = mover.center;
-    const sf::Vector2f end = start + displacement;
+    const Vec2 start = mover.center;
+    const Vec2 end = start + displacement;
     Hit best = segmentVsBox(start, end, {b.left - r, b.top, b.width + 2.f * r, b.height});
     const Hit tall = segmentVsBox(start, end, {b.left, b.top - r, b.width, b.height + 2.f * r});
     if (tall.hit && (!best.hit || tall.time < best.time))
         best = tall;
-    for (sf::Vector2f corner :
-         {sf::Vector2f(b.left, b.top), sf::Vector2f(rightOf(b), b.top),
-          sf::Vector2f(b.left, bottomOf(b)), sf::Vector2f(rightOf(b), bottomOf(b))})
+    for (Vec2 corner : {Vec2(b.left, b.top), Vec2(rightOf(b), b.top), Vec2(b.left, bottomOf(b)),
+                        Vec2(rightOf(b), bottomOf(b))})
     {
         const Hit round = castAgainstCircle(start, displacement, Circle{corner, r});
         if (round.hit && (!best.hit || round.time < best.time)) // ties: the face wins

@@ -35,17 +35,17 @@ namespace hitbox
 // A point moving from `start` to `end` against a circle (the ray cast of a circle). `point`
 // is where the segment crosses the circle's rim; `normal` points from the centre out through
 // that point.
-Hit segmentVsCircle(sf::Vector2f start, sf::Vector2f end, const Circle& circle);
+Hit segmentVsCircle(Vec2 start, Vec2 end, const Circle& circle);
 
 // A circle moving by `displacement` against a circle that stays still: the time of impact
 // from the quadratic of seed 003. `point` is where the two rims touch at that time.
-Hit sweepCircleVsCircle(const Circle& mover, sf::Vector2f displacement, const Circle& target);
+Hit sweepCircleVsCircle(const Circle& mover, Vec2 displacement, const Circle& target);
 
 // Both circles move during the step. Only the relative move matters (seed 003's B = vp - vq),
 // so this sweeps the mover by (moverDisplacement - targetDisplacement) against a still
 // target. `point` is where they touch in the world at that time.
-Hit sweepCircleVsMovingCircle(const Circle& mover, sf::Vector2f moverDisplacement,
-                              const Circle& target, sf::Vector2f targetDisplacement);
+Hit sweepCircleVsMovingCircle(const Circle& mover, Vec2 moverDisplacement, const Circle& target,
+                              Vec2 targetDisplacement);
 
 // A circle moving by `displacement` against a still box. Its centre is cast against the
 // rounded box (the box grown by the radius: two slabs and four corner circles), and the
@@ -54,6 +54,6 @@ Hit sweepCircleVsMovingCircle(const Circle& mover, sf::Vector2f moverDisplacemen
 // Ties between a face and a corner go to the face (so an exact corner still gets a unit
 // normal). Negative box sizes are read as SFML reads them; a zero-size box is a point or a
 // line, hit when the circle's area reaches it.
-Hit sweepCircleVsBox(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& box);
+Hit sweepCircleVsBox(const Circle& mover, Vec2 displacement, const Box& box);
 
 } // namespace hitbox

@@ -4,7 +4,7 @@
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
 #include "hitbox/geometry/SweptCircle.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <cmath>
 
@@ -13,7 +13,7 @@ namespace hitbox
 namespace
 {
 
-sf::FloatRect movedBy(sf::FloatRect box, sf::Vector2f offset)
+Box movedBy(Box box, Vec2 offset)
 {
     box.left += offset.x;
     box.top += offset.y;
@@ -25,7 +25,7 @@ bool isUsable(const Circle& circle)
     return isFinite(circle) && circle.radius >= 0.f;
 }
 
-sf::FloatRect boundsOf(const Circle& circle)
+Box boundsOf(const Circle& circle)
 {
     return {circle.center.x - circle.radius, circle.center.y - circle.radius, 2.f * circle.radius,
             2.f * circle.radius};
@@ -34,13 +34,12 @@ sf::FloatRect boundsOf(const Circle& circle)
 } // namespace
 
 // [slide:tunnelling-check]
-bool canTunnel(const sf::FloatRect& moverBox, sf::Vector2f displacement,
-               const sf::FloatRect& targetBox)
+bool canTunnel(const Box& moverBox, Vec2 displacement, const Box& targetBox)
 {
     if (!isFinite(moverBox) || !isFinite(displacement) || !isFinite(targetBox))
         return false;
-    const sf::FloatRect mover = normalised(moverBox);
-    const sf::FloatRect target = normalised(targetBox);
+    const Box mover = normalised(moverBox);
+    const Box target = normalised(targetBox);
     // To get from touching one side to touching the other, the mover travels its own size
     // plus the target's. A step at least that long can jump the target completely.
     const bool longEnough = std::fabs(displacement.x) >= mover.width + target.width ||
@@ -50,41 +49,40 @@ bool canTunnel(const sf::FloatRect& moverBox, sf::Vector2f displacement,
 }
 // [/slide]
 
-bool canTunnel(const Circle& mover, sf::Vector2f displacement, const Circle& target)
+bool canTunnel(const Circle& mover, Vec2 displacement, const Circle& target)
 {
     if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
         return false;
-    const bool longEnough = lengthOf(displacement) >= 2.f * (mover.radius + target.radius);
+    const bool longEnough = length(displacement) >= 2.f * (mover.radius + target.radius);
     // The mover's path is a capsule: does it reach the target at all?
     const Capsule path{mover.center, mover.center + displacement, mover.radius};
     return longEnough && capsuleVsCircle(path, target).hit;
 }
 
-bool canTunnel(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& target)
+bool canTunnel(const Circle& mover, Vec2 displacement, const Box& target)
 {
     if (!isUsable(mover))
         return false;
     return canTunnel(boundsOf(mover), displacement, target);
 }
 
-bool discreteTestMisses(const sf::FloatRect& mover, sf::Vector2f displacement,
-                        const sf::FloatRect& target)
+bool discreteTestMisses(const Box& mover, Vec2 displacement, const Box& target)
 {
     return sweepBoxVsBox(mover, displacement, target).hit && !boxVsBox(mover, target) &&
            !boxVsBox(movedBy(mover, displacement), target);
 }
 
-bool discreteTestMisses(const Circle& mover, sf::Vector2f displacement, const Circle& target)
+bool discreteTestMisses(const Circle& mover, Vec2 displacement, const Circle& target)
 {
     const Circle moved{mover.center + displacement, mover.radius};
     return sweepCircleVsCircle(mover, displacement, target).hit && !circleVsCircle(mover, target) &&
            !circleVsCircle(moved, target);
 }
 
-sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement)
+Box sweptBounds(const Box& box, Vec2 displacement)
 {
-    const sf::FloatRect start = normalised(box);
-    const sf::FloatRect end = movedBy(start, displacement);
+    const Box start = normalised(box);
+    const Box end = movedBy(start, displacement);
     const float left = std::fmin(start.left, end.left);
     const float top = std::fmin(start.top, end.top);
     const float right = std::fmax(rightOf(start), rightOf(end));
@@ -92,20 +90,19 @@ sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement)
     return {left, top, right - left, bottom - top};
 }
 
-sf::FloatRect sweptBounds(const Circle& circle, sf::Vector2f displacement)
+Box sweptBounds(const Circle& circle, Vec2 displacement)
 {
     return sweptBounds(boundsOf(circle), displacement);
 }
 
-sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f velocity, float dt,
-                                 const std::vector<sf::FloatRect>& solids)
+Vec2 speculativeVelocity(const Box& mover, Vec2 velocity, float dt, const std::vector<Box>& solids)
 {
     if (!isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return velocity;
     // Seed 000: rather than resolve an overlap afterwards, shorten the move so it never
     // happens. The earliest time of impact over all solids decides how much of it to keep.
     float earliest = 1.f;
-    for (const sf::FloatRect& solid : solids)
+    for (const Box& solid : solids)
     {
         const Hit hit = sweepBoxVsBox(mover, velocity * dt, solid);
         if (hit.hit && !hit.startedInside)
@@ -118,8 +115,8 @@ sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f veloci
     // already overlapping is found, to the last bit of the float.
     auto endsInsideASolid = [&](float time)
     {
-        const sf::FloatRect moved = movedBy(mover, velocity * time * dt);
-        for (const sf::FloatRect& solid : solids)
+        const Box moved = movedBy(mover, velocity * time * dt);
+        for (const Box& solid : solids)
             if (boxVsBox(moved, solid) && !boxVsBox(mover, solid))
                 return true;
         return false;

@@ -24,25 +24,24 @@ namespace hitbox
 // on some axis the move is at least the two sizes added on that axis (then the mover can go
 // from touching one side to touching the other, and neither end of the step overlaps).
 // Note: clipping a corner diagonally can be missed at any speed; only a sweep catches that.
-bool canTunnel(const sf::FloatRect& mover, sf::Vector2f displacement, const sf::FloatRect& target);
+bool canTunnel(const Box& mover, Vec2 displacement, const Box& target);
 // Circles: the move is at least the two diameters added, and the mover's path (a capsule)
 // reaches the target. That is the head-on case: passing off-centre crosses a shorter chord,
 // so a shorter move can already skip it (discreteTestMisses or a sweep catches that).
-bool canTunnel(const Circle& mover, sf::Vector2f displacement, const Circle& target);
+bool canTunnel(const Circle& mover, Vec2 displacement, const Circle& target);
 // A circle against a box: the circle counts as its bounding box (2r by 2r).
-bool canTunnel(const Circle& mover, sf::Vector2f displacement, const sf::FloatRect& target);
+bool canTunnel(const Circle& mover, Vec2 displacement, const Box& target);
 
 // True when the sweep says the mover hits the target during the step but the discrete
 // test at the start and at the end of the step sees no overlap: the miss actually happens.
-bool discreteTestMisses(const sf::FloatRect& mover, sf::Vector2f displacement,
-                        const sf::FloatRect& target);
-bool discreteTestMisses(const Circle& mover, sf::Vector2f displacement, const Circle& target);
+bool discreteTestMisses(const Box& mover, Vec2 displacement, const Box& target);
+bool discreteTestMisses(const Circle& mover, Vec2 displacement, const Circle& target);
 
 // The smallest box holding the mover at the start and at the end of the step (and so, for a
 // box or a circle moving in a straight line, everywhere between). Broad phase: only targets
 // that overlap these bounds can be hit this step. NaN input: returned as it comes.
-sf::FloatRect sweptBounds(const sf::FloatRect& box, sf::Vector2f displacement);
-sf::FloatRect sweptBounds(const Circle& circle, sf::Vector2f displacement);
+Box sweptBounds(const Box& box, Vec2 displacement);
+Box sweptBounds(const Circle& circle, Vec2 displacement);
 
 // Speculative contacts (seed 000), simplified: the velocity scaled down so that moving by
 // velocity * dt ends touching the first solid the box would hit, never inside it (where
@@ -50,7 +49,6 @@ sf::FloatRect sweptBounds(const Circle& circle, sf::Vector2f displacement);
 // is then apart by at most that much). The whole velocity is scaled, so there is no slide;
 // see Resolve.h for that. A box already overlapping a solid
 // keeps its velocity (pushing out is a separate job). No hit: unchanged.
-sf::Vector2f speculativeVelocity(const sf::FloatRect& mover, sf::Vector2f velocity, float dt,
-                                 const std::vector<sf::FloatRect>& solids);
+Vec2 speculativeVelocity(const Box& mover, Vec2 velocity, float dt, const std::vector<Box>& solids);
 
 } // namespace hitbox

@@ -27,14 +27,15 @@ bool Collision::checkBoundingCircle(GameObject* first, GameObject* second)
 
 bool Collision::checkBoundingBox(GameObject* first, GameObject* second)
 {
-    return canCollide(first, second) &&
-           hitbox::boxVsBox(first->getCollisionBox(), second->getCollisionBox());
+    return canCollide(first, second) && hitbox::boxVsBox(hitbox::toBox(first->getCollisionBox()),
+                                                         hitbox::toBox(second->getCollisionBox()));
 }
 // [/slide]
 
 bool Collision::checkBoundingBox(GameObject* object, sf::Vector2f point)
 {
-    return canCollide(object) && hitbox::pointInBox(point, object->getCollisionBox());
+    return canCollide(object) &&
+           hitbox::pointInBox(hitbox::toVec2(point), hitbox::toBox(object->getCollisionBox()));
 }
 
 bool Collision::checkBoundingBox(GameObject* object, sf::Vector2i point)
@@ -45,7 +46,8 @@ bool Collision::checkBoundingBox(GameObject* object, sf::Vector2i point)
 bool Collision::checkCircleBox(GameObject* circleObject, GameObject* boxObject)
 {
     return canCollide(circleObject, boxObject) &&
-           hitbox::circleVsBox(circleObject->getBoundingCircle(), boxObject->getCollisionBox());
+           hitbox::circleVsBox(circleObject->getBoundingCircle(),
+                               hitbox::toBox(boxObject->getCollisionBox()));
 }
 
 hitbox::Contact Collision::getBoundingCircleContact(GameObject* first, GameObject* second)
@@ -59,7 +61,8 @@ hitbox::Contact Collision::getBoundingBoxContact(GameObject* first, GameObject* 
 {
     if (!canCollide(first, second))
         return {};
-    return hitbox::boxVsBoxContact(first->getCollisionBox(), second->getCollisionBox());
+    return hitbox::boxVsBoxContact(hitbox::toBox(first->getCollisionBox()),
+                                   hitbox::toBox(second->getCollisionBox()));
 }
 
 hitbox::Contact Collision::getCircleBoxContact(GameObject* circleObject, GameObject* boxObject)
@@ -67,5 +70,5 @@ hitbox::Contact Collision::getCircleBoxContact(GameObject* circleObject, GameObj
     if (!canCollide(circleObject, boxObject))
         return {};
     return hitbox::circleVsBoxContact(circleObject->getBoundingCircle(),
-                                      boxObject->getCollisionBox());
+                                      hitbox::toBox(boxObject->getCollisionBox()));
 }

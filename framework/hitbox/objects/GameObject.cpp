@@ -80,7 +80,7 @@ sf::FloatRect GameObject::getCollisionBox() const
 {
     // The box is measured from the origin point; the shape's own coordinates start at its
     // top-left corner, so shift by the origin before applying the object's transform.
-    sf::FloatRect box = hitbox::normalised(getLocalCollisionBox());
+    sf::FloatRect box = hitbox::toSfml(hitbox::normalised(hitbox::toBox(getLocalCollisionBox())));
     box.left += getOrigin().x;
     box.top += getOrigin().y;
     return getTransform().transformRect(box);
@@ -92,13 +92,14 @@ hitbox::Circle GameObject::getBoundingCircle() const
 {
     const sf::Vector2f scale(std::fabs(getScale().x), std::fabs(getScale().y));
     if (hasOwnCircle) // a circle stretched one way is an ellipse: keep the one inside it
-        return {getTransform().transformPoint(circleCenter + getOrigin()),
+        return {hitbox::toVec2(getTransform().transformPoint(circleCenter + getOrigin())),
                 circleRadius * std::fmin(scale.x, scale.y)};
     // The circle inscribed in the (scaled) collision box: the fix for the old framework,
     // which took the radius from the shape's width and the centre from its top-left corner.
-    const sf::FloatRect box = hitbox::normalised(getLocalCollisionBox());
+    const hitbox::Box box = hitbox::normalised(hitbox::toBox(getLocalCollisionBox()));
     const float radius = std::fmin(box.width * scale.x, box.height * scale.y) / 2.f;
-    return {getTransform().transformPoint(hitbox::centerOf(box) + getOrigin()), radius};
+    const sf::Vector2f center = hitbox::toSfml(hitbox::centerOf(box)) + getOrigin();
+    return {hitbox::toVec2(getTransform().transformPoint(center)), radius};
 }
 // [/slide]
 

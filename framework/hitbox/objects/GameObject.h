@@ -10,7 +10,7 @@
 // Until a box is set, the collision box is the whole shape and follows setSize/setOrigin.
 #pragma once
 
-#include "hitbox/geometry/Shapes.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 

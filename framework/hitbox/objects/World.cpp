@@ -11,10 +11,10 @@ namespace
 {
 
 // The box the broadphase sees: it must contain the shape the exact test uses.
-sf::FloatRect boundsOf(GameObject& object, World::Shape shape)
+Box boundsOf(GameObject& object, World::Shape shape)
 {
     if (shape == World::Shape::Box)
-        return object.getCollisionBox();
+        return toBox(object.getCollisionBox());
     const Circle circle = object.getBoundingCircle();
     return {circle.center.x - circle.radius, circle.center.y - circle.radius, 2.f * circle.radius,
             2.f * circle.radius};
@@ -66,9 +66,9 @@ BroadphaseStats World::getBroadphaseStats() const
     return broadphase->stats();
 }
 
-void World::drawDebug(DebugRenderer& debug) const
+BroadphaseLayout World::getBroadphaseLayout() const
 {
-    broadphase->drawDebug(debug);
+    return broadphase->layout();
 }
 
 bool World::exactTest(const Entry& first, const Entry& second) const

@@ -69,8 +69,9 @@ public:
     // What the broadphase did last time, and how many exact tests followed.
     BroadphaseStats getBroadphaseStats() const;
     std::size_t getExactTests() const { return exactTests; }
-    // The broadphase's picture: grid cells, quadtree nodes or the sweep axis.
-    void drawDebug(DebugRenderer& debug) const;
+    // The broadphase's picture: grid cells, quadtree nodes or the sweep axis (for
+    // debug/BroadphaseDrawing.h).
+    BroadphaseLayout getBroadphaseLayout() const;
 
 private:
     struct Entry

@@ -58,7 +58,7 @@ struct Player
     }
     sf::Vector2f boxCenterOnScreen(int index) const
     {
-        return onScreen(hitbox::centerOf(level.getBox(index).getCollisionBox()));
+        return onScreen(labtesting::centerOf(level.getBox(index).getCollisionBox()));
     }
 };
 
@@ -82,7 +82,7 @@ sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
                 return point;
         }
     ADD_FAILURE() << "box " << index << " is covered completely";
-    return hitbox::centerOf(box);
+    return labtesting::centerOf(box);
 }
 
 // Where the mouse is in world coordinates when it is at `pixel` in a window of
@@ -157,7 +157,7 @@ TEST(Task1FindTheBoxUnderTheMouse, JustInsideTheCornerIsHoveredJustOutsideIsNot)
     EXPECT_EQ(player.level.getHoveredBox(), 0);
     player.moveMouseTo({box.left - 1.f, box.top + 1.f});
     EXPECT_EQ(player.level.getHoveredBox(), PointInBoxLevel::noBox);
-    player.moveMouseTo({hitbox::rightOf(box) + 1.f, hitbox::bottomOf(box) - 1.f});
+    player.moveMouseTo({labtesting::rightOf(box) + 1.f, labtesting::bottomOf(box) - 1.f});
     EXPECT_NE(player.level.getHoveredBox(), 0);
 }
 
@@ -172,10 +172,10 @@ TEST(Task1FindTheBoxUnderTheMouse, WhereBoxesOverlapTheOneDrawnOnTopIsHovered)
             if (player.level.getBox(first).getCollisionBox().intersects(
                     player.level.getBox(second).getCollisionBox(), overlap))
             {
-                player.moveMouseTo(hitbox::centerOf(overlap));
+                player.moveMouseTo(labtesting::centerOf(overlap));
                 EXPECT_GE(player.level.getHoveredBox(), second)
                     << "boxes " << first << " and " << second << " overlap at "
-                    << labtesting::text(hitbox::centerOf(overlap));
+                    << labtesting::text(labtesting::centerOf(overlap));
                 return;
             }
         }

@@ -28,7 +28,7 @@ constexpr float testSpeed = 260.f;
 
 float dot(sf::Vector2f a, sf::Vector2f b)
 {
-    return a.x * b.x + a.y * b.y;
+    return hitbox::dot(hitbox::toVec2(a), hitbox::toVec2(b));
 }
 
 float length(sf::Vector2f v)

@@ -85,7 +85,7 @@ TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsTheCrateNotTheWholePicture)
 TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsCentredOnThePicture)
 {
     const Square square(middle, {}, sf::Color::Red);
-    EXPECT_VEC_NEAR(hitbox::centerOf(square.getCollisionBox()), middle, 0.01f);
+    EXPECT_VEC_NEAR(labtesting::centerOf(square.getCollisionBox()), middle, 0.01f);
     const sf::FloatRect box = square.getCollisionBox();
     EXPECT_NEAR(box.left, middle.x - crateSize / 2.f, 0.01f) << "a margin on the left...";
     EXPECT_NEAR(box.top, middle.y - crateSize / 2.f, 0.01f) << "...and on top";

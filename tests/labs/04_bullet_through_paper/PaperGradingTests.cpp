@@ -38,7 +38,7 @@ TEST(Task1DiscreteTest, SlowBulletStopsInsideTheWall)
     const PaperLevel level = shootOnce(600.f);
     const Bullet& bullet = *level.getBullet(Lane::Discrete);
     EXPECT_TRUE(bullet.hitTheWall());
-    EXPECT_TRUE(hitbox::boxVsBox(bullet.getCollisionBox(), level.getWall()))
+    EXPECT_TRUE(hitbox::boxVsBox(hitbox::toBox(bullet.getCollisionBox()), level.getWall()))
         << "a discrete test finds the wall only once the bullet is already inside it";
     EXPECT_EQ(level.getScore(Lane::Discrete).hits, 1);
     EXPECT_EQ(level.getScore(Lane::Discrete).misses, 0);
@@ -136,7 +136,8 @@ TEST(Task3TunnelWarning, AgreesWithTheFrameworkForStepsThatReachTheWall)
         const sf::Vector2f step{distance + extra, 0.f}; // always reaches into the wall
         // ASSERT: the first step length that disagrees is enough (not hundreds like it).
         ASSERT_EQ(level.stepCouldTunnel(bullet, step),
-                  hitbox::canTunnel(bullet.getCollisionBox(), step, level.getWall()))
+                  hitbox::canTunnel(hitbox::toBox(bullet.getCollisionBox()), hitbox::toVec2(step),
+                                    level.getWall()))
             << "step " << step.x << " px (the first step length that disagrees)";
     }
 }

@@ -14,10 +14,10 @@ namespace
 {
 
 // Run `steps` fixed steps with the mouse at `mouse` and nothing else pressed.
-void runWithMouse(RayLevel& level, sf::Vector2f mouse, int steps)
+void runWithMouse(RayLevel& level, hitbox::Vec2 mouse, int steps)
 {
     Input input;
-    input.setMousePosition(mouse);
+    input.setMousePosition(hitbox::toSfml(mouse));
     for (int step = 0; step < steps; ++step)
     {
         level.handleInput(input, hitbox::stepSeconds);
@@ -27,9 +27,9 @@ void runWithMouse(RayLevel& level, sf::Vector2f mouse, int steps)
 }
 
 // A floor of 40-pixel tiles from x = 0 to 1200 at y = 600, stored left to right.
-std::vector<sf::FloatRect> tiledFloor()
+std::vector<hitbox::Box> tiledFloor()
 {
-    std::vector<sf::FloatRect> tiles;
+    std::vector<hitbox::Box> tiles;
     for (float x = 0.f; x < 1200.f; x += 40.f)
         tiles.push_back({x, 600.f, 40.f, 40.f});
     return tiles;
@@ -37,8 +37,8 @@ std::vector<sf::FloatRect> tiledFloor()
 
 bool overlapsAnySolid(const RayLevel& level)
 {
-    for (const sf::FloatRect& solid : level.getSolids())
-        if (hitbox::boxVsBox(level.getPlayer().getCollisionBox(), solid))
+    for (const hitbox::Box& solid : level.getSolids())
+        if (hitbox::boxVsBox(hitbox::toBox(level.getPlayer().getCollisionBox()), solid))
             return true;
     return false;
 }
@@ -55,16 +55,16 @@ TEST(Task1NearestRayHit, StopsAtTheNearestBoxEvenWhenItIsListedLast)
     EXPECT_EQ(ray.boxIndex, 1);
     EXPECT_NEAR(ray.end.x, 400.f, 0.01f);
     EXPECT_NEAR(ray.end.y, 200.f, 0.01f);
-    EXPECT_EQ(ray.normal, sf::Vector2f(-1.f, 0.f));
+    EXPECT_EQ(ray.normal, hitbox::Vec2(-1.f, 0.f));
     EXPECT_NEAR(ray.time, 300.f / 900.f, 1e-4f);
 }
 
 TEST(Task1NearestRayHit, NormalPointsBackTowardsTheRayFromEverySide)
 {
     const RayLevel level({{500.f, 300.f, 100.f, 100.f}}, {1000.f, 600.f});
-    EXPECT_EQ(level.castRay({550.f, 100.f}, {550.f, 500.f}).normal, sf::Vector2f(0.f, -1.f));
-    EXPECT_EQ(level.castRay({550.f, 600.f}, {550.f, 200.f}).normal, sf::Vector2f(0.f, 1.f));
-    EXPECT_EQ(level.castRay({800.f, 350.f}, {300.f, 350.f}).normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(level.castRay({550.f, 100.f}, {550.f, 500.f}).normal, hitbox::Vec2(0.f, -1.f));
+    EXPECT_EQ(level.castRay({550.f, 600.f}, {550.f, 200.f}).normal, hitbox::Vec2(0.f, 1.f));
+    EXPECT_EQ(level.castRay({800.f, 350.f}, {300.f, 350.f}).normal, hitbox::Vec2(1.f, 0.f));
 }
 
 TEST(Task1NearestRayHit, RayThatMissesEverythingReachesTheMouse)
@@ -72,7 +72,7 @@ TEST(Task1NearestRayHit, RayThatMissesEverythingReachesTheMouse)
     const RayLevel level({{500.f, 300.f, 100.f, 100.f}}, {1000.f, 600.f});
     const RayHit ray = level.castRay({100.f, 100.f}, {900.f, 100.f});
     EXPECT_FALSE(ray.hit);
-    EXPECT_EQ(ray.end, sf::Vector2f(900.f, 100.f));
+    EXPECT_EQ(ray.end, hitbox::Vec2(900.f, 100.f));
     EXPECT_EQ(ray.boxIndex, -1);
 }
 
@@ -83,7 +83,7 @@ TEST(Task1NearestRayHit, TheLevelCastsFromThePlayerToTheMouseEveryStep)
     level.setMoveDirection({0.f, 0.f});
     runWithMouse(level, {1000.f, 200.f}, 1);
     ASSERT_TRUE(level.getRay().hit);
-    EXPECT_EQ(level.getRay().start, sf::Vector2f(116.f, 200.f));
+    EXPECT_EQ(level.getRay().start, hitbox::Vec2(116.f, 200.f));
     EXPECT_NEAR(level.getRay().end.x, 400.f, 0.01f);
 }
 
@@ -92,7 +92,7 @@ TEST(Task2MoveAndSlide, StopsTouchingAWallInsteadOfPassingThrough)
     RayLevel level({{500.f, 0.f, 10.f, 675.f}}, {100.f, 300.f});
     level.setMoveDirection({1.f, 0.f});
     runWithMouse(level, {0.f, 0.f}, 240); // 2 s at 300 px/s: far enough to pass the wall
-    const sf::FloatRect box = level.getPlayer().getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(level.getPlayer().getCollisionBox());
     EXPECT_NEAR(box.left + box.width, 500.f, 0.01f);
     EXPECT_FALSE(overlapsAnySolid(level));
 }
@@ -103,7 +103,7 @@ TEST(Task2MoveAndSlide, SlidesAlongAWallItIsPushedInto)
     RayLevel level({{0.f, 600.f, 1200.f, 40.f}}, {100.f, 500.f});
     level.setMoveDirection({1.f, 1.f});
     runWithMouse(level, {0.f, 0.f}, 240);
-    const sf::Vector2f position = level.getPlayer().getPosition();
+    const hitbox::Vec2 position = hitbox::toVec2(level.getPlayer().getPosition());
     EXPECT_NEAR(position.y, 568.f, 0.01f) << "resting on the floor";
     const float sidewaysSpeed = 300.f / std::sqrt(2.f);
     EXPECT_NEAR(position.x, 100.f + sidewaysSpeed * 2.f, 1.f) << "never slowed down";

@@ -14,7 +14,7 @@
 namespace
 {
 
-hitbox::Polygon box(sf::Vector2f center, sf::Vector2f halfSize, float degrees)
+hitbox::Polygon box(hitbox::Vec2 center, hitbox::Vec2 halfSize, float degrees)
 {
     return hitbox::toPolygon(hitbox::OrientedBox{center, halfSize, degrees});
 }
@@ -157,16 +157,16 @@ TEST(Task3WheelTurns, TurningCanMakeShapesOverlap)
 TEST(Task4PushOut, SpaceMovesTheHeldShapeOutAlongTheMtv)
 {
     RotatedLevel level;
-    const sf::Vector2f before = level.getShapes()[0].body.center;
+    const hitbox::Vec2 before = level.getShapes()[0].body.center;
     const PairView* nearest = level.getNearestPair();
     ASSERT_NE(nearest, nullptr);
     ASSERT_TRUE(nearest->overlapping);
-    const sf::Vector2f expectedMove = nearest->axis * -nearest->gap;
+    const hitbox::Vec2 expectedMove = nearest->axis * -nearest->gap;
 
     Input input;
     input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
-    const sf::Vector2f moved = level.getShapes()[0].body.center - before;
+    const hitbox::Vec2 moved = level.getShapes()[0].body.center - before;
     EXPECT_NEAR(moved.x, expectedMove.x, 1e-2f);
     EXPECT_NEAR(moved.y, expectedMove.y, 1e-2f);
     EXPECT_FALSE(level.isOverlapping(0));

@@ -3,7 +3,7 @@
 
 #include "hitbox/app/App.h"
 #include "hitbox/geometry/Overlap.h"
-#include "hitbox/geometry/VectorMath.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 namespace
 {
 
-const sf::FloatRect bigTable{0.f, 0.f, 4000.f, 1000.f};
+const hitbox::Box bigTable{0.f, 0.f, 4000.f, 1000.f};
 const float radius = 14.f;
 
-Ball ballAt(sf::Vector2f center, sf::Vector2f velocity = {0.f, 0.f})
+Ball ballAt(hitbox::Vec2 center, hitbox::Vec2 velocity = {0.f, 0.f})
 {
     return {{center, radius}, velocity, sf::Color::White};
 }
@@ -125,8 +125,8 @@ TEST(Task2ElasticBounce, AFastBallHandsAllItsSpeedToTheBallItHits)
 TEST(Task2ElasticBounce, BallsAlreadyMovingApartAreLeftAlone)
 {
     const auto [first, second] = PoolLevel::bounceBalls({-50.f, 0.f}, {20.f, 0.f}, {-1.f, 0.f});
-    EXPECT_EQ(first, sf::Vector2f(-50.f, 0.f));
-    EXPECT_EQ(second, sf::Vector2f(20.f, 0.f));
+    EXPECT_EQ(first, hitbox::Vec2(-50.f, 0.f));
+    EXPECT_EQ(second, hitbox::Vec2(20.f, 0.f));
 }
 
 TEST(Task2ElasticBounce, MomentumAndEnergyAreKeptThroughTheBreak)
@@ -135,7 +135,7 @@ TEST(Task2ElasticBounce, MomentumAndEnergyAreKeptThroughTheBreak)
     level.setFriction(false);
     auto totals = [&]()
     {
-        sf::Vector2f momentum;
+        hitbox::Vec2 momentum;
         float energy = 0.f;
         for (const Ball& ball : level.getBalls())
         {
@@ -194,10 +194,10 @@ TEST(Task3Cushions, NoBallEverLeavesTheTableDuringTheBreak)
         level.update(hitbox::stepSeconds);
         for (const Ball& ball : level.getBalls())
         {
-            const sf::FloatRect table = level.getTable();
-            const sf::FloatRect inner{table.left + radius - 0.01f, table.top + radius - 0.01f,
-                                      table.width - 2.f * radius + 0.02f,
-                                      table.height - 2.f * radius + 0.02f};
+            const hitbox::Box table = level.getTable();
+            const hitbox::Box inner{table.left + radius - 0.01f, table.top + radius - 0.01f,
+                                    table.width - 2.f * radius + 0.02f,
+                                    table.height - 2.f * radius + 0.02f};
             ASSERT_TRUE(hitbox::pointInBox(ball.shape.center, inner)) << "step " << i;
         }
         ASSERT_FALSE(anyTwoBallsOverlap(level)) << "step " << i;

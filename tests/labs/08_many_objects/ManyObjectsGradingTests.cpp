@@ -43,7 +43,7 @@ referenceOverlaps(const std::vector<BroadphaseItem>& items, bool obeyLayers)
         {
             const bool allowed =
                 (items[i].layer & items[j].mask) && (items[j].layer & items[i].mask);
-            if ((allowed || !obeyLayers) && items[i].box.intersects(items[j].box))
+            if ((allowed || !obeyLayers) && hitbox::boxVsBox(items[i].box, items[j].box))
                 found.emplace_back(i, j);
         }
     return found;
@@ -58,7 +58,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> asPairs(const std::vector<h
     return result;
 }
 
-Ball plainBall(sf::Vector2f position, sf::Vector2f velocity, float radius)
+Ball plainBall(hitbox::Vec2 position, hitbox::Vec2 velocity, float radius)
 {
     Ball ball;
     ball.position = position;
@@ -96,19 +96,19 @@ std::vector<Ball> separatePairsScene(unsigned seed)
     for (int row = 0; row < 18; ++row)
         for (int column = 0; column < 30; ++column)
         {
-            const sf::Vector2f center{15.f + 30.f * column, 15.f + 30.f * row};
+            const hitbox::Vec2 center{15.f + 30.f * column, 15.f + 30.f * row};
             const int kind = what(random);
             if (kind < 4)
                 balls.push_back(plainBall(center, {}, radius));
             else if (kind < 7)
             {
-                balls.push_back(plainBall(center - sf::Vector2f(3.f, 1.f), {}, radius));
-                balls.push_back(plainBall(center + sf::Vector2f(3.f, 1.f), {}, radius));
+                balls.push_back(plainBall(center - hitbox::Vec2(3.f, 1.f), {}, radius));
+                balls.push_back(plainBall(center + hitbox::Vec2(3.f, 1.f), {}, radius));
             }
             else if (kind < 9)
             {
-                balls.push_back(plainBall(center - sf::Vector2f(3.8f, 3.8f), {}, radius));
-                balls.push_back(plainBall(center + sf::Vector2f(3.8f, 3.8f), {}, radius));
+                balls.push_back(plainBall(center - hitbox::Vec2(3.8f, 3.8f), {}, radius));
+                balls.push_back(plainBall(center + hitbox::Vec2(3.8f, 3.8f), {}, radius));
             }
         }
     return balls;

@@ -90,20 +90,20 @@ TEST(Task1Jump, NoSecondJumpAtTheTopOfTheFirst)
 TEST(Task2LeastPenetration, CornerDeepSidewaysShallowDownIsPushedUp)
 {
     const CollisionPoint& rightBottom = PlatformerLevel::collisionPoints[7];
-    const sf::FloatRect tile{64.f, 64.f, 32.f, 32.f};
+    const hitbox::Box tile{64.f, 64.f, 32.f, 32.f};
     const hitbox::Contact push = PlatformerLevel::pushOut(rightBottom, {74.f, 67.f}, tile);
     ASSERT_TRUE(push.hit);
-    EXPECT_EQ(push.normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(push.normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_FLOAT_EQ(push.depth, 3.f);
 }
 
 TEST(Task2LeastPenetration, CornerShallowSidewaysDeepDownIsPushedSideways)
 {
     const CollisionPoint& leftTop = PlatformerLevel::collisionPoints[4];
-    const sf::FloatRect tile{64.f, 64.f, 32.f, 32.f};
+    const hitbox::Box tile{64.f, 64.f, 32.f, 32.f};
     const hitbox::Contact push = PlatformerLevel::pushOut(leftTop, {93.f, 80.f}, tile);
     ASSERT_TRUE(push.hit);
-    EXPECT_EQ(push.normal, sf::Vector2f(1.f, 0.f));
+    EXPECT_EQ(push.normal, hitbox::Vec2(1.f, 0.f));
     EXPECT_FLOAT_EQ(push.depth, 3.f);
 }
 
@@ -140,10 +140,10 @@ TEST(Task3SweptBounds, TheSweptBoundsHoldWhereThePlayerWasAndIs)
 {
     Game game(platformertest::deepShaft(40));
     game.run(0.5f);
-    const sf::FloatRect before = game.level.getPlayer().getBox();
+    const hitbox::Box before = game.level.getPlayer().getBox();
     game.frame();
-    const sf::FloatRect after = game.level.getPlayer().getBox();
-    const sf::FloatRect swept = game.level.getSweptBounds();
+    const hitbox::Box after = game.level.getPlayer().getBox();
+    const hitbox::Box swept = game.level.getSweptBounds();
     EXPECT_LE(swept.top, before.top);
     EXPECT_GE(swept.top + swept.height, after.top + after.height);
     const TileRegion region = game.level.getTestedRegion();
@@ -284,10 +284,10 @@ TEST(Movement, SameKeysGiveTheSameJumpAtAnyFrameRate)
         game.run(0.3f - dt, dt); // the tap was one frame of the 0.3 s
         return game.position();
     };
-    const sf::Vector2f reference = play(120.f);
+    const hitbox::Vec2 reference = play(120.f);
     for (float framesPerSecond : {30.f, 60.f, 240.f})
     {
-        const sf::Vector2f position = play(framesPerSecond);
+        const hitbox::Vec2 position = play(framesPerSecond);
         EXPECT_EQ(position.x, reference.x) << framesPerSecond << " frames a second";
         EXPECT_EQ(position.y, reference.y) << framesPerSecond << " frames a second";
     }
@@ -338,11 +338,11 @@ TEST(CollisionPoints, AreCheckedSidesFirstThenCorners)
 
 TEST(CollisionPoints, SitOnTheEdgesAndCornersOfThePlayersBox)
 {
-    const sf::FloatRect box{100.f, 200.f, Player::width, Player::height};
+    const hitbox::Box box{100.f, 200.f, Player::width, Player::height};
     EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[0]),
-              sf::Vector2f(100.f + Player::width / 2.f, 200.f + Player::height));
+              hitbox::Vec2(100.f + Player::width / 2.f, 200.f + Player::height));
     EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[4]),
-              sf::Vector2f(100.f, 200.f));
+              hitbox::Vec2(100.f, 200.f));
     EXPECT_EQ(PlatformerLevel::pointOn(box, PlatformerLevel::collisionPoints[7]),
-              sf::Vector2f(100.f + Player::width, 200.f + Player::height));
+              hitbox::Vec2(100.f + Player::width, 200.f + Player::height));
 }

@@ -74,8 +74,8 @@ struct Game
         frame(dt);
         input.setKeyUp(key);
     }
-    sf::Vector2f position() const { return level.getPlayer().getPosition(); }
-    sf::Vector2f velocity() const { return level.getPlayer().getVelocity(); }
+    hitbox::Vec2 position() const { return level.getPlayer().getPosition(); }
+    hitbox::Vec2 velocity() const { return level.getPlayer().getVelocity(); }
     float feet() const { return position().y + Player::height; }
 
     PlatformerLevel level;

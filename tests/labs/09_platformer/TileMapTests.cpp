@@ -38,7 +38,7 @@ TEST(LevelFile, ReadsSolidTilesEmptyTilesAndTheStart)
     EXPECT_TRUE(map.isSolid(0, 0));
     EXPECT_FALSE(map.isSolid(1, 1));
     EXPECT_FALSE(map.isSolid(2, 1)) << "the start is an empty tile";
-    EXPECT_EQ(map.getPlayerStart(), sf::Vector2f(96.f, 48.f));
+    EXPECT_EQ(map.getPlayerStart(), hitbox::Vec2(96.f, 48.f));
     EXPECT_FALSE(map.isSolid(-1, 0)) << "outside the map there is nothing";
 }
 

@@ -52,7 +52,7 @@ TEST(Task1PerAxis, WalkingIntoAWallStopsTheFeetFlushAgainstIt)
     game.level.placePlayer({500.f, 350.f});
     game.input.setKeyDown(sf::Keyboard::Key::D);
     game.run(1.f);
-    const sf::FloatRect feet = game.player().hitbox();
+    const hitbox::Box feet = game.player().hitbox();
     EXPECT_FLOAT_EQ(feet.left + feet.width, 600.f);
 }
 
@@ -64,7 +64,7 @@ TEST(Task1PerAxis, WalkingDiagonallyIntoAWallSlidesAlongIt)
     game.input.setKeyDown(sf::Keyboard::Key::W);
     game.input.setKeyDown(sf::Keyboard::Key::D);
     game.run(0.5f);
-    const sf::FloatRect feet = game.player().hitbox();
+    const hitbox::Box feet = game.player().hitbox();
     EXPECT_FLOAT_EQ(feet.top, 240.f) << "stopped by the wall on y";
     // The x part of the diagonal keeps going: 240 / sqrt(2) px/s for half a second.
     EXPECT_NEAR(game.player().feet.x, 400.f + TopDownLevel::playerSpeed / std::sqrt(2.f) * 0.5f,
@@ -78,7 +78,7 @@ TEST(Task1PerAxis, EnemiesAreStoppedByWallsToo)
     game.level.addEnemy({400.f, 300.f});
     game.level.placePlayer({600.f, 300.f}); // behind the wall, inside the notice radius
     game.run(2.f);
-    const sf::FloatRect feet = game.level.getEnemies().at(0).body.hitbox();
+    const hitbox::Box feet = game.level.getEnemies().at(0).body.hitbox();
     EXPECT_LE(feet.left + feet.width, 480.f);
 }
 
@@ -86,7 +86,7 @@ TEST(Task1PerAxis, ATreeTrunkBlocksButTheLeavesDoNot)
 {
     Game game;
     game.level.addTree({600.f, 300.f});
-    const sf::FloatRect trunk = game.level.getTrees().at(0).hitbox();
+    const hitbox::Box trunk = game.level.getTrees().at(0).hitbox();
     // Walk up from below: stopped by the small trunk box, deep inside the tree's picture.
     game.level.placePlayer({600.f, 420.f});
     game.input.setKeyDown(sf::Keyboard::Key::W);
@@ -149,7 +149,7 @@ TEST(Task2Radii, AnEnemyThatHasNotNoticedDoesNotMove)
     game.level.addEnemy({200.f, 300.f});
     game.level.placePlayer({900.f, 300.f});
     game.run(2.f);
-    EXPECT_EQ(game.level.getEnemies().at(0).body.feet, sf::Vector2f(200.f, 300.f));
+    EXPECT_EQ(game.level.getEnemies().at(0).body.feet, hitbox::Vec2(200.f, 300.f));
 }
 
 // ---- Task 3: knockback and invulnerability ---------------------------------------------------
@@ -235,8 +235,8 @@ TEST(Hitbox, TheFeetBoxIsSmallerThanTheSpriteAndAtItsBottom)
 {
     Game game;
     game.level.placePlayer({400.f, 300.f});
-    const sf::FloatRect feet = game.player().hitbox();
-    const sf::FloatRect sprite = game.player().spriteBox();
+    const hitbox::Box feet = game.player().hitbox();
+    const hitbox::Box sprite = game.player().spriteBox();
     EXPECT_LT(feet.width * feet.height, sprite.width * sprite.height / 4.f);
     EXPECT_FLOAT_EQ(feet.top + feet.height, sprite.top + sprite.height);
     EXPECT_GE(feet.left, sprite.left);
