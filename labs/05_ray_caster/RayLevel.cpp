@@ -4,6 +4,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -36,7 +37,7 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
     sf::RectangleShape line({length, thickness});
     line.setOrigin({0.f, thickness / 2.f});
     line.setPosition(from);
-    line.setRotation(std::atan2(along.y, along.x) * 180.f / 3.14159265f);
+    hitbox::setRotationDegrees(line, std::atan2(along.y, along.x) * 180.f / 3.14159265f);
     line.setFillColor(color);
     target.draw(line);
 }
@@ -276,7 +277,7 @@ void RayLevel::render(sf::RenderTarget& target) const
     }
     if (stuck)
     {
-        sf::Text stuckText("stuck!", font, 18);
+        sf::Text stuckText = hitbox::makeText(font, "stuck!", 18);
         stuckText.setFillColor(hitColor);
         stuckText.setPosition(player.getPosition() + sf::Vector2f{-8.f, -30.f});
         target.draw(stuckText);
@@ -284,11 +285,12 @@ void RayLevel::render(sf::RenderTarget& target) const
 
     const std::string order = timeOrder ? "ON  (nearest contact first: slides over the seams)"
                                         : "OFF (list order: snags on a seam)";
-    sf::Text status("Time order " + order, font, 20);
+    sf::Text status = hitbox::makeText(font, "Time order " + order, 20);
     status.setFillColor(timeOrder ? sf::Color(120, 230, 140) : hitColor);
     status.setPosition({60.f, 4.f});
     target.draw(status);
-    sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font, 16);
+    sf::Text rayText = hitbox::makeText(
+        font, ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", 16);
     rayText.setFillColor(rayColor);
     rayText.setPosition({700.f, 8.f});
     target.draw(rayText);

@@ -5,6 +5,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/VectorMath.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/ConvexShape.hpp>
@@ -53,7 +54,7 @@ void drawThickLine(sf::RenderTarget& target, sf::Vector2f from, sf::Vector2f to,
     sf::RectangleShape line({hitbox::lengthOf(along), thickness});
     line.setOrigin({0.f, thickness / 2.f});
     line.setPosition(from);
-    line.setRotation(std::atan2(along.y, along.x) * 180.f / pi);
+    hitbox::setRotationDegrees(line, std::atan2(along.y, along.x) * 180.f / pi);
     line.setFillColor(color);
     target.draw(line);
 }
@@ -351,7 +352,8 @@ void RotatedLevel::render(sf::RenderTarget& target) const
             sf::CircleShape head(7.f, 3);
             head.setOrigin({7.f, 7.f});
             head.setPosition(to);
-            head.setRotation(std::atan2(view.axis.y, view.axis.x) * 180.f / pi + 90.f);
+            hitbox::setRotationDegrees(head,
+                                       std::atan2(view.axis.y, view.axis.x) * 180.f / pi + 90.f);
             head.setFillColor(mtvColor);
             target.draw(head);
         }
@@ -363,13 +365,15 @@ void RotatedLevel::render(sf::RenderTarget& target) const
     else if (nearest)
         status += "apart from its nearest neighbour (gap " +
                   std::to_string(std::lround(nearest->gap)) + " px)";
-    sf::Text text(status, font, 20);
+    sf::Text text = hitbox::makeText(font, status, 20);
     text.setFillColor(sf::Color::White);
     text.setPosition({16.f, 10.f});
     target.draw(text);
-    sf::Text legend("bars: both shadows on the axis SAT chose for the nearest shape (yellow: "
-                    "held)   green line: a separating line where the AABBs overlap",
-                    font, 16);
+    sf::Text legend =
+        hitbox::makeText(font,
+                         "bars: both shadows on the axis SAT chose for the nearest shape (yellow: "
+                         "held)   green line: a separating line where the AABBs overlap",
+                         16);
     legend.setFillColor(sf::Color(190, 190, 200));
     legend.setPosition({16.f, 38.f});
     target.draw(legend);

@@ -4,6 +4,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -315,7 +316,7 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     sf::RectangleShape strip({map.getSizeInPixels().x, hudTextSize + 14.f});
     strip.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(strip);
-    sf::Text text(hud.str(), font, static_cast<unsigned>(hudTextSize));
+    sf::Text text = hitbox::makeText(font, hud.str(), static_cast<unsigned>(hudTextSize));
     text.setPosition({10.f, 5.f});
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);
