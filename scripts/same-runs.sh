@@ -9,7 +9,8 @@ build=$1
 out=$2
 mkdir -p "$out"
 env -u DISPLAY -u WAYLAND_DISPLAY "$build/pong/pong" --headless --seconds 600 --seed 7 >"$out/pong.txt"
-for program in $(find "$build/labs" -mindepth 2 -maxdepth 2 -type f -perm -u+x -name 'lab[0-9][0-9]_*' | sort); do
+# Lab 8 is left out: its readout shows milliseconds measured on the spot.
+for program in $(find "$build/labs" -mindepth 2 -maxdepth 2 -type f -perm -u+x -name 'lab[0-9][0-9]_*' ! -name 'lab08_*' | sort); do
     xvfb-run -a "$program" --frames 120 --debug --screenshot "$out/$(basename "$program").png" >/dev/null 2>&1
 done
 "$build/tests/benchmarks/broadphase_bench" --benchmark_min_time=0.01 --benchmark_filter='/1000$' \

@@ -259,7 +259,7 @@ void RayLevel::render(sf::RenderTarget& target) const
 
     sf::VertexArray path(sf::PrimitiveType::LineStrip);
     for (const sf::Vector2f& point : trail)
-        path.append(sf::Vertex(point, sf::Color(240, 200, 80, 120)));
+        path.append(sf::Vertex{point, sf::Color(240, 200, 80, 120)});
     target.draw(path);
     target.draw(player);
 

@@ -19,6 +19,7 @@
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
 #include <SFML/System/Clock.hpp>
+#include <SFML/System/Time.hpp>
 
 #include <memory>
 #include <random>

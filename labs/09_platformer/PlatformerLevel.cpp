@@ -40,7 +40,7 @@ void addQuad(sf::VertexArray& quads, const sf::FloatRect& box, sf::Color color)
                                      {box.left + box.width, box.top + box.height},
                                      {box.left, box.top + box.height}};
     for (int index : {0, 1, 2, 0, 2, 3})
-        quads.append(sf::Vertex(corners[index], color));
+        quads.append(sf::Vertex{corners[index], color});
 }
 } // namespace
 
