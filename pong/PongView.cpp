@@ -4,6 +4,7 @@
 #include "PongLevel.h"
 
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -24,7 +25,7 @@ const sf::Color highlightColor(255, 214, 90);
 void drawCentered(sf::RenderTarget& target, const sf::Font& font, const std::string& line,
                   unsigned size, float centerX, float top, sf::Color color)
 {
-    sf::Text text(sf::String::fromUtf8(line.begin(), line.end()), font, size);
+    sf::Text text = hitbox::makeText(font, sf::String::fromUtf8(line.begin(), line.end()), size);
     text.setFillColor(color);
     const sf::FloatRect bounds = text.getLocalBounds();
     text.setPosition(

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iterator>
 
@@ -102,8 +103,8 @@ void BallsLevel::render(sf::RenderTarget& target) const
         // Mix towards white just after a hit, so every hit is seen.
         const sf::Color color = ball.getFillColor();
         const float white = ball.getFlash() * 0.7f;
-        const auto mix = [white](sf::Uint8 channel)
-        { return static_cast<sf::Uint8>(channel + (255 - channel) * white); };
+        const auto mix = [white](std::uint8_t channel)
+        { return static_cast<std::uint8_t>(channel + (255 - channel) * white); };
         drawn.setFillColor(sf::Color(mix(color.r), mix(color.g), mix(color.b)));
         target.draw(drawn);
     }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iterator>
 
@@ -120,8 +121,8 @@ void SquaresLevel::render(sf::RenderTarget& target) const
         target.draw(picture);
 
         const float white = square.getFlash() * 0.6f;
-        const auto mix = [white](sf::Uint8 channel)
-        { return static_cast<sf::Uint8>(channel + (255 - channel) * white); };
+        const auto mix = [white](std::uint8_t channel)
+        { return static_cast<std::uint8_t>(channel + (255 - channel) * white); };
         sf::RectangleShape crate({crateSize, crateSize});
         crate.setOrigin({crateSize / 2.f, crateSize / 2.f});
         crate.setPosition(square.getPosition());

@@ -6,6 +6,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -52,7 +53,7 @@ std::string withSpaces(long long number)
 sf::Text makeText(const sf::Font& font, const std::string& words, unsigned size, sf::Color color,
                   sf::Vector2f position)
 {
-    sf::Text text(sf::String::fromUtf8(words.begin(), words.end()), font, size);
+    sf::Text text = hitbox::makeText(font, sf::String::fromUtf8(words.begin(), words.end()), size);
     text.setFillColor(color);
     text.setPosition(position);
     return text;

@@ -5,6 +5,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Resolve.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -239,7 +240,7 @@ void RayLevel::render(sf::RenderTarget& target) const
 
     sf::VertexArray path(sf::PrimitiveType::LineStrip);
     for (const sf::Vector2f& point : trail)
-        path.append(sf::Vertex(point, sf::Color(240, 200, 80, 120)));
+        path.append(sf::Vertex{point, sf::Color(240, 200, 80, 120)});
     target.draw(path);
     target.draw(player);
 
@@ -259,7 +260,7 @@ void RayLevel::render(sf::RenderTarget& target) const
     }
     if (stuck)
     {
-        sf::Text stuckText("stuck!", font.get(), 18);
+        sf::Text stuckText = hitbox::makeText(font.get(), "stuck!", 18);
         stuckText.setFillColor(hitColor);
         stuckText.setPosition(player.getPosition() + sf::Vector2f{-8.f, -30.f});
         target.draw(stuckText);
@@ -267,12 +268,12 @@ void RayLevel::render(sf::RenderTarget& target) const
 
     const std::string order = timeOrder ? "ON  (nearest contact first: slides over the seams)"
                                         : "OFF (list order: snags on a seam)";
-    sf::Text status("Time order " + order, font.get(), 20);
+    sf::Text status = hitbox::makeText(font.get(), "Time order " + order, 20);
     status.setFillColor(timeOrder ? sf::Color(120, 230, 140) : hitColor);
     status.setPosition({60.f, 4.f});
     target.draw(status);
-    sf::Text rayText(ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", font.get(),
-                     16);
+    sf::Text rayText = hitbox::makeText(
+        font.get(), ray.hit ? "ray: nearest hit, normal drawn in red" : "ray: no hit", 16);
     rayText.setFillColor(rayColor);
     rayText.setPosition({700.f, 8.f});
     target.draw(rayText);

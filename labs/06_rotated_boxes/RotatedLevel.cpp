@@ -5,6 +5,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/sfml/Conversions.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/ConvexShape.hpp>
@@ -363,13 +364,15 @@ void RotatedLevel::render(sf::RenderTarget& target) const
     else if (nearest)
         status += "apart from its nearest neighbour (gap " +
                   std::to_string(std::lround(nearest->gap)) + " px)";
-    sf::Text text(status, font.get(), 20);
+    sf::Text text = hitbox::makeText(font.get(), status, 20);
     text.setFillColor(sf::Color::White);
     text.setPosition({16.f, 10.f});
     target.draw(text);
-    sf::Text legend("bars: both shadows on the axis SAT chose for the nearest shape (yellow: "
-                    "held)   green line: a separating line where the AABBs overlap",
-                    font.get(), 16);
+    sf::Text legend =
+        hitbox::makeText(font.get(),
+                         "bars: both shadows on the axis SAT chose for the nearest shape (yellow: "
+                         "held)   green line: a separating line where the AABBs overlap",
+                         16);
     legend.setFillColor(sf::Color(190, 190, 200));
     legend.setPosition({16.f, 38.f});
     target.draw(legend);

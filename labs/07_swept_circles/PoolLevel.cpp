@@ -8,6 +8,7 @@
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/SweptCircle.h"
 #include "hitbox/sfml/Conversions.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -330,7 +331,7 @@ void PoolLevel::render(sf::RenderTarget& target) const
         char when[96];
         std::snprintf(when, sizeof(when), "cue ball stopped where it touched: t = %.2f of its step",
                       cueImpact.stepFraction);
-        sf::Text label(when, font.get(), 16);
+        sf::Text label = hitbox::makeText(font.get(), when, 16);
         label.setFillColor(sf::Color::White);
         label.setOutlineColor(sf::Color::Black);
         label.setOutlineThickness(1.5f);
@@ -344,22 +345,26 @@ void PoolLevel::render(sf::RenderTarget& target) const
     const std::string mode =
         swept ? "TIME OF IMPACT: first collision first, then the rest of the step"
               : "DISCRETE: move, then look for overlaps (press D)";
-    sf::Text title(mode, font.get(), 22);
+    sf::Text title = hitbox::makeText(font.get(), mode, 22);
     title.setFillColor(swept ? sf::Color(140, 240, 160) : sf::Color(255, 110, 90));
     title.setPosition({20.f, 14.f});
     target.draw(title);
     const long perStep = std::lround(fastest * hitbox::stepSeconds);
-    sf::Text speed("fastest ball: " + std::to_string(perStep) + " px per step (a ball is " +
-                       std::to_string(std::lround(2.f * ballRadius)) +
-                       " px wide)   next shot: " + std::to_string(std::lround(shotSpeed)) + " px/s",
-                   font.get(), 16);
+    sf::Text speed = hitbox::makeText(
+        font.get(),
+        "fastest ball: " + std::to_string(perStep) + " px per step (a ball is " +
+            std::to_string(std::lround(2.f * ballRadius)) +
+            " px wide)   next shot: " + std::to_string(std::lround(shotSpeed)) + " px/s",
+        16);
     speed.setFillColor(perStep > 2.f * ballRadius ? sf::Color(255, 170, 60)
                                                   : sf::Color(200, 200, 200));
     speed.setPosition({20.f, 44.f});
     target.draw(speed);
-    sf::Text legend("white dots: the cue ball after each step   yellow rings: balls at the "
-                    "moment of impact",
-                    font.get(), 16);
+    sf::Text legend =
+        hitbox::makeText(font.get(),
+                         "white dots: the cue ball after each step   yellow rings: balls at the "
+                         "moment of impact",
+                         16);
     legend.setFillColor(sf::Color(200, 200, 200));
     legend.setPosition({20.f, 630.f});
     target.draw(legend);

@@ -5,6 +5,7 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -98,7 +99,7 @@ std::string fixed(float value, int decimals)
 
 sf::Text makeText(const std::string& text, const sf::Font& font, unsigned size, sf::Color color)
 {
-    sf::Text label(sf::String::fromUtf8(text.begin(), text.end()), font, size);
+    sf::Text label = hitbox::makeText(font, sf::String::fromUtf8(text.begin(), text.end()), size);
     label.setFillColor(color);
     return label;
 }

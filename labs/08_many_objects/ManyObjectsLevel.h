@@ -18,6 +18,7 @@
 #include "hitbox/broadphase/Broadphase.h"
 
 #include <SFML/System/Clock.hpp>
+#include <SFML/System/Time.hpp>
 
 #include <memory>
 #include <random>

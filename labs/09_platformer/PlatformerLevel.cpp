@@ -4,6 +4,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -39,7 +40,7 @@ void addQuad(sf::VertexArray& quads, const hitbox::Box& box, sf::Color color)
                                      {box.left + box.width, box.top + box.height},
                                      {box.left, box.top + box.height}};
     for (int index : {0, 1, 2, 0, 2, 3})
-        quads.append(sf::Vertex(hitbox::toSfml(corners[index]), color));
+        quads.append(sf::Vertex{hitbox::toSfml(corners[index]), color});
 }
 } // namespace
 
@@ -313,7 +314,7 @@ void PlatformerLevel::render(sf::RenderTarget& target) const
     sf::RectangleShape strip({map.getSizeInPixels().x, hudTextSize + 14.f});
     strip.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(strip);
-    sf::Text text(hud.str(), font.get(), static_cast<unsigned>(hudTextSize));
+    sf::Text text = hitbox::makeText(font.get(), hud.str(), static_cast<unsigned>(hudTextSize));
     text.setPosition({10.f, 5.f});
     text.setFillColor(grounded ? groundedColor : sf::Color::White);
     target.draw(text);

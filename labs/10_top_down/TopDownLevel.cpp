@@ -4,6 +4,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -393,7 +394,7 @@ void TopDownLevel::render(sf::RenderTarget& target) const
     if (player.invulnerable > 0.f)
         hud << "   invulnerable " << std::round(player.invulnerable * 10.f) / 10.f << " s";
     hud << "   enemies " << enemies.size() << "   defeats " << defeats;
-    sf::Text text(hud.str(), font.get(), 18);
+    sf::Text text = hitbox::makeText(font.get(), hud.str(), 18);
     text.setPosition({36.f, 28.f});
     text.setFillColor(sf::Color::White);
     target.draw(text);

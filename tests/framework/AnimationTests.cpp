@@ -38,7 +38,7 @@ TEST(Animation, StartsOnTheFirstFramePlayingAndLooping)
 {
     const Animation walk = threeFrameWalk();
     EXPECT_EQ(walk.getSize(), 3);
-    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect(0, 0, 16, 24))
+    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect({0, 0}, {16, 24}))
         << describe(walk.getCurrentFrame());
     EXPECT_TRUE(walk.getPlaying());
     EXPECT_TRUE(walk.getLooping());
@@ -52,7 +52,7 @@ TEST(Animation, MovesOnWhenAFramesTimeIsUp)
     EXPECT_EQ(walk.getCurrentFrameIndex(), 0);
     walk.animate(0.05f); // 0.25 s in total: the first frame's time is up
     EXPECT_EQ(walk.getCurrentFrameIndex(), 1);
-    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect(16, 0, 16, 24))
+    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect({16, 0}, {16, 24}))
         << describe(walk.getCurrentFrame());
 }
 
@@ -120,10 +120,10 @@ TEST(Animation, FlippedFrameIsMirroredWithANegativeWidth)
     walk.animate(0.25f);
     walk.setFlipped(true);
     // Starts at the frame's right edge (16 + 16) and runs 16 pixels leftwards.
-    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect(32, 0, -16, 24))
+    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect({32, 0}, {-16, 24}))
         << describe(walk.getCurrentFrame());
     walk.setFlipped(false);
-    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect(16, 0, 16, 24))
+    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect({16, 0}, {16, 24}))
         << describe(walk.getCurrentFrame());
 }
 

@@ -149,8 +149,8 @@ TEST(CourseCompat, HelpersAndAnimationUnderTheOldNames)
     EXPECT_EQ(Vector::normalise(sf::Vector2f(0, 5)), sf::Vector2f(0, 1));
     EXPECT_FLOAT_EQ(VectorHelper::magnitude(sf::Vector2f(5, 12)), 13.f);
     Animation walk;
-    walk.addFrame(sf::IntRect(0, 0, 15, 21));
+    walk.addFrame(sf::IntRect({0, 0}, {15, 21}));
     walk.setFrameSpeed(1.f / 10.f);
     walk.animate(0.05f);
-    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect(0, 0, 15, 21));
+    EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect({0, 0}, {15, 21}));
 }

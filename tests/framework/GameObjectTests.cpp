@@ -3,6 +3,7 @@
 #include "support/SfmlPrinters.h"
 
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <gtest/gtest.h>
 
@@ -97,9 +98,9 @@ TEST(GameObject, RotatedBoxIsTheEnclosingAxisAlignedBox)
     object.setSize({20.f, 10.f});
     object.setOrigin({10.f, 5.f});
     object.setPosition({100.f, 100.f});
-    object.setRotation(90.f);
+    hitbox::setRotationDegrees(object, 90.f);
     expectBoxNear(object.getCollisionBox(), {95.f, 90.f, 10.f, 20.f});
-    object.setRotation(45.f);
+    hitbox::setRotationDegrees(object, 45.f);
     const float half = (20.f + 10.f) / 2.f * 0.70710678f; // half the diagonal spread
     expectBoxNear(object.getCollisionBox(), {100.f - half, 100.f - half, 2 * half, 2 * half});
 }
@@ -196,7 +197,7 @@ TEST(GameObject, CircleTurnsWithTheObject)
     object.setOrigin({25.f, 25.f});
     object.setPosition({100.f, 100.f});
     object.setBoundingCircle({10.f, 0.f}, 5.f);
-    object.setRotation(90.f);
+    hitbox::setRotationDegrees(object, 90.f);
     const hitbox::Circle circle = object.getBoundingCircle();
     EXPECT_NEAR(circle.center.x, 100.f, 1e-4f);
     EXPECT_NEAR(circle.center.y, 110.f, 1e-4f);
