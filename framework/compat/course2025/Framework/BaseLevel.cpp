@@ -1,8 +1,6 @@
 #include "Framework/BaseLevel.h"
 
-BaseLevel::BaseLevel(sf::RenderWindow& window, Input& input) : m_window(window), m_input(input)
-{
-}
+BaseLevel::BaseLevel(sf::RenderWindow& window, Input& input) : m_window(window), m_input(input) {}
 
 void BaseLevel::beginDraw()
 {

@@ -1,16 +1,10 @@
 #include "Framework/GameObject.h"
 
-void GameObject::handleInput(float)
-{
-}
+void GameObject::handleInput(float) {}
 
-void GameObject::update(float)
-{
-}
+void GameObject::update(float) {}
 
-void GameObject::collisionResponse(GameObject&)
-{
-}
+void GameObject::collisionResponse(GameObject&) {}
 
 void GameObject::setVelocity(sf::Vector2f velocity)
 {
