@@ -23,7 +23,6 @@ const sf::Color pickupColor{235, 215, 70};
 
 const sf::Color cellUntested{44, 48, 60};
 const sf::Color cellTested{95, 110, 135};
-const sf::Color cellOverlapping = hitbox::DebugRenderer::touchingColor;
 const sf::Color cellWasted{210, 60, 210}; // on or below the diagonal, or tested twice
 
 const sf::FloatRect tableArea{660.f, 60.f, 500.f, 500.f};
@@ -162,7 +161,7 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
             if (!aboveDiagonal || tests > 1)
                 color = cellWasted;
             else if (table.isOverlapping(row, column))
-                color = cellOverlapping;
+                color = hitbox::DebugRenderer::touchingColor; // read here: set in another file
             else if (tests == 1)
                 color = cellTested;
             const sf::FloatRect box{origin.x + column * cell + 1.f, origin.y + row * cell + 1.f,

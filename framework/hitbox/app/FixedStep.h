@@ -1,11 +1,6 @@
-// FixedStep.h - turn uneven frame times into a whole number of equal simulation steps.
-//
-// The accumulator pattern ("Fix your timestep"): frame time is saved up and spent in
-// steps of exactly `stepSeconds`, so the simulation gives the same result at 30 or 300
-// frames per second. After a stall (a dragged window, a breakpoint) at most
-// `maxFrameSeconds` of time is simulated: the game slows down for a moment instead of
-// running hundreds of steps, and no step is ever longer than `stepSeconds`, so nothing
-// jumps through a wall.
+// FixedStep.h - turn uneven frame times into a whole number of equal simulation steps
+// (the accumulator of Glenn Fiedler's "Fix Your Timestep!", Gaffer On Games, and of Nystrom,
+// Game Programming Patterns, "Game Loop"): the same result at 30 or 300 frames a second.
 #pragma once
 
 namespace hitbox
@@ -14,13 +9,16 @@ namespace hitbox
 class FixedStep
 {
 public:
-    // Steps of `stepSeconds` (every program passes hitbox::stepSeconds, App.h).
+    // Steps of `stepSeconds` (every program passes hitbox::stepSeconds, App.h). A frame
+    // counts for at most `maxFrameSeconds` (never less than one step): after a stall the
+    // game slows down for a moment instead of running hundreds of steps at once.
     explicit FixedStep(float stepSeconds, float maxFrameSeconds = 0.25f);
 
-    // Add one frame's time; returns how many steps to simulate now (0 or more).
-    // Negative or NaN frame times count as 0.
+    // Adds one frame's time; returns how many steps to simulate now (0 or more). Negative
+    // or NaN frame times count as 0.
     int advance(float frameSeconds);
 
+    // The step length given to the constructor, in seconds.
     float getStepSeconds() const;
     // Time saved up but not yet simulated, as a fraction of a step (0 to 1).
     float getLeftoverFraction() const;

@@ -29,10 +29,15 @@ public:
     static const sf::Color normalColor;   // contact normals
     static const sf::Color hintColor;     // anything else: rays, swept areas, grids
 
+    // A line 2 pixels wide, in world coordinates (one of zero length shows nothing).
     void line(Vec2 from, Vec2 to, sf::Color color);
+    // A line with an arrowhead at `to`.
     void arrow(Vec2 from, Vec2 to, sf::Color color);
+    // The outline of `box` (a negative size is drawn as the box it spans).
     void box(const Box& box, sf::Color color);
+    // The outline of `circle`.
     void circle(const Circle& circle, sf::Color color);
+    // An x of `size` pixels across, centred on `point`.
     void cross(Vec2 point, float size, sf::Color color);
 
     // An object's world collision box (or bounding circle) and its velocity arrow, which
@@ -44,7 +49,9 @@ public:
 
     // Draw everything collected, in one call, then keep it (call clear() to start again).
     void draw(sf::RenderTarget& target) const;
+    // Forgets everything collected.
     void clear();
+    // Everything collected so far (two triangles a line): tests read it without a window.
     const sf::VertexArray& getVertices() const;
 
 private:

@@ -17,6 +17,7 @@
 class Animation
 {
 public:
+    // Appends a frame: the rectangle of the texture to show, in texture pixels.
     void addFrame(sf::IntRect frame);
     int getSize() const; // the number of frames
 
@@ -38,6 +39,8 @@ public:
     sf::IntRect getCurrentFrame() const;
     int getCurrentFrameIndex() const;
 
+    // Flipped: getCurrentFrame() is mirrored left to right. Looping: after the last frame
+    // comes the first (otherwise it stops on the last). Playing: animate() moves on.
     void setFlipped(bool isFlipped);
     bool getFlipped() const;
     void setLooping(bool isLooping);

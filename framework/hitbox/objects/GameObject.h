@@ -36,6 +36,7 @@ struct OptionalBox : sf::FloatRect
 class GameObject : public sf::RectangleShape
 {
 public:
+    // Alive, a collider, standing still, its collision box the whole shape.
     GameObject();
     ~GameObject() override = default;
 
@@ -48,6 +49,7 @@ public:
     virtual void collisionResponse(GameObject* other);
     // [/slide]
 
+    // In pixels per second. GameObject never moves itself: your update() does.
     void setVelocity(sf::Vector2f newVelocity);
     void setVelocity(float x, float y);
     sf::Vector2f getVelocity() const;

@@ -41,17 +41,22 @@ public:
     // Return false to skip a pair (checked after layers and masks, before the exact test).
     using PairRule = std::function<bool(const GameObject&, const GameObject&)>;
 
+    // An empty world that finds its candidate pairs with `method`.
     explicit World(BroadphaseMethod method = BroadphaseMethod::Grid);
 
     // `layer`: the bits this object is on; `mask`: the layers it collides with. Two objects
     // are tested only if each one's layer is in the other's mask. Adding twice updates them.
     void add(GameObject& object, std::uint32_t layer = 1, std::uint32_t mask = 0xFFFFFFFF,
              Shape shape = Shape::Box);
+    // Takes the object out (nothing happens if it is not in). clear() takes all out.
     void remove(const GameObject& object);
     void clear();
+    // How many objects were added and not removed.
     std::size_t size() const { return entries.size(); }
 
+    // The game rule every pair passes before its exact test (an empty rule allows all).
     void setRule(PairRule rule);
+    // Another broadphase: same pairs found, other speed.
     void setMethod(BroadphaseMethod method);
     BroadphaseMethod getMethod() const { return method; }
 
