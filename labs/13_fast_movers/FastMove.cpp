@@ -78,13 +78,15 @@ MoveResult speculativeStep(const Box& bullet, float velocityX, float dt, const B
     if (level && move > 0.f && bullet.right <= wall.left)
     {
         result.hitWall = move >= wall.left - bullet.right;
-        result.bullet = result.hitWall ? againstWall(bullet, velocityX, wall) : movedBy(bullet, move);
+        result.bullet =
+            result.hitWall ? againstWall(bullet, velocityX, wall) : movedBy(bullet, move);
         return result;
     }
     if (level && move < 0.f && wall.right <= bullet.left)
     {
         result.hitWall = -move >= bullet.left - wall.right;
-        result.bullet = result.hitWall ? againstWall(bullet, velocityX, wall) : movedBy(bullet, move);
+        result.bullet =
+            result.hitWall ? againstWall(bullet, velocityX, wall) : movedBy(bullet, move);
         return result;
     }
     result.bullet = movedBy(bullet, move);

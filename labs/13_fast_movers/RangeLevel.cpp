@@ -70,10 +70,12 @@ void RangeLevel::render(sf::RenderTarget& target) const
     drawBox(target, wall, wallColor);
     for (int lane = 0; lane < laneCount; ++lane)
     {
-        drawBox(target, {0.f, laneY[lane] - 0.5f, getWorldSize().x, laneY[lane] + 0.5f}, sf::Color(60, 64, 80));
+        drawBox(target, {0.f, laneY[lane] - 0.5f, getWorldSize().x, laneY[lane] + 0.5f},
+                sf::Color(60, 64, 80));
         const Box& bullet = bullets[lane];
         // Drawn at least 8 pixels wide, so a bullet against the wall shows.
-        drawBox(target, {bullet.left, bullet.top - 4.f, bullet.right, bullet.bottom + 4.f}, bulletColor);
+        drawBox(target, {bullet.left, bullet.top - 4.f, bullet.right, bullet.bottom + 4.f},
+                bulletColor);
     }
 }
 
@@ -85,9 +87,9 @@ std::string RangeLevel::getHelpText() const
 std::string RangeLevel::describeState() const
 {
     char text[200];
-    std::snprintf(text, sizeof text, "shot %d at %.0f px/s; through the wall: %s %d, %s %d, %s %d", shots,
-                  static_cast<double>(speed), laneNames[0], throughCount[0], laneNames[1], throughCount[1],
-                  laneNames[2], throughCount[2]);
+    std::snprintf(text, sizeof text, "shot %d at %.0f px/s; through the wall: %s %d, %s %d, %s %d",
+                  shots, static_cast<double>(speed), laneNames[0], throughCount[0], laneNames[1],
+                  throughCount[1], laneNames[2], throughCount[2]);
     return text;
 }
 

@@ -31,19 +31,22 @@ void expectStopsAtTheWall(const Step& step, Box start, float velocityX, int step
     {
         const MoveResult result = step(bullet, velocityX);
         bullet = result.bullet;
-        ASSERT_FALSE(overlaps(bullet, wall))
-            << "the bullet overlaps the wall after a step at " << velocityX << " px/s: left " << bullet.left;
+        ASSERT_FALSE(overlaps(bullet, wall)) << "the bullet overlaps the wall after a step at "
+                                             << velocityX << " px/s: left " << bullet.left;
         if (result.hitWall)
         {
             if (velocityX > 0.f)
-                EXPECT_EQ(bullet.right, wall.left) << "stopped, but not against the wall's left side";
+                EXPECT_EQ(bullet.right, wall.left)
+                    << "stopped, but not against the wall's left side";
             else
-                EXPECT_EQ(bullet.left, wall.right) << "stopped, but not against the wall's right side";
+                EXPECT_EQ(bullet.left, wall.right)
+                    << "stopped, but not against the wall's right side";
             return;
         }
         const bool past = velocityX > 0.f ? bullet.left >= wall.right : bullet.right <= wall.left;
-        ASSERT_FALSE(past) << "the bullet went through the wall at " << velocityX << " px/s (started at left "
-                           << start.left << "), now at left " << bullet.left;
+        ASSERT_FALSE(past) << "the bullet went through the wall at " << velocityX
+                           << " px/s (started at left " << start.left << "), now at left "
+                           << bullet.left;
     }
     ADD_FAILURE() << "the bullet never reached the wall at " << velocityX << " px/s";
 }
@@ -56,7 +59,8 @@ Step subStepped()
 
 Step speculative()
 {
-    return [](const Box& bullet, float velocityX) { return speculativeStep(bullet, velocityX, dt, wall); };
+    return [](const Box& bullet, float velocityX)
+    { return speculativeStep(bullet, velocityX, dt, wall); };
 }
 } // namespace
 
@@ -75,7 +79,8 @@ TEST(Task1SubSteps, EachSubStepIsNoLongerThanTheLimit)
     // 100 pixels in one step, no wall in the way: ceil(100 / 8) = 13 sub-steps.
     const MoveResult result = subSteppedStep(bulletAt(0.f, 200.f), 12000.f, dt, wall, maxSubStep);
     EXPECT_FALSE(result.hitWall);
-    EXPECT_NEAR(result.bullet.left, 100.f, 1e-3f) << "a step without a hit still moves the whole way";
+    EXPECT_NEAR(result.bullet.left, 100.f, 1e-3f)
+        << "a step without a hit still moves the whole way";
     EXPECT_EQ(result.overlapTests, 13);
 }
 
