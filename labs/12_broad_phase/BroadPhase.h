@@ -35,7 +35,7 @@ bool operator<(const Pair& a, const Pair& b);
 
 struct PairSearch
 {
-    std::vector<Pair> pairs; // each overlapping pair once, in any order
+    std::vector<Pair> pairs;  // each overlapping pair once, in any order
     long long exactTests = 0; // how many times the exact test ran
 };
 

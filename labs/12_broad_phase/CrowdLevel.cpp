@@ -55,9 +55,15 @@ void CrowdLevel::update(float dt)
     }
     switch (method)
     {
-    case Method::BruteForce: lastSearch = bruteForcePairs(boxes); break;
-    case Method::SortAndSweep: lastSearch = sortAndSweepPairs(boxes); break;
-    case Method::Grid: lastSearch = gridPairs(boxes, cellSize); break;
+    case Method::BruteForce:
+        lastSearch = bruteForcePairs(boxes);
+        break;
+    case Method::SortAndSweep:
+        lastSearch = sortAndSweepPairs(boxes);
+        break;
+    case Method::Grid:
+        lastSearch = gridPairs(boxes, cellSize);
+        break;
     }
 }
 

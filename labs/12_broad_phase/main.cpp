@@ -26,14 +26,15 @@ int boxCountFrom(const hitbox::Options& options)
     catch (const std::exception&)
     {
     }
-    throw std::invalid_argument("--boxes needs a whole number from 0 to 20000, e.g. --boxes 500 (not '" +
-                                text + "')");
+    throw std::invalid_argument(
+        "--boxes needs a whole number from 0 to 20000, e.g. --boxes 500 (not '" + text + "')");
 }
 } // namespace
 
 int main(int argc, char* argv[])
 {
     return hitbox::run(argc, argv, {"Lab 12 - The broad phase by hand", {"--boxes"}},
-                       [](const hitbox::Options& options)
-                       { return std::make_unique<CrowdLevel>(boxCountFrom(options), options.seed); });
+                       [](const hitbox::Options& options) {
+                           return std::make_unique<CrowdLevel>(boxCountFrom(options), options.seed);
+                       });
 }

@@ -62,15 +62,16 @@ std::string text(const std::vector<Pair>& pairs)
 }
 
 // The same pairs as brute force, each once.
-testing::AssertionResult samePairs(const std::vector<Pair>& found, const std::vector<Pair>& expected)
+testing::AssertionResult samePairs(const std::vector<Pair>& found,
+                                   const std::vector<Pair>& expected)
 {
     const std::vector<Pair> actual = sorted(found);
     if (actual == expected)
         return testing::AssertionSuccess();
-    return testing::AssertionFailure() << "found " << actual.size() << " pair(s): " << text(actual)
-                                       << "\nbrute force finds " << expected.size()
-                                       << " (touching boxes are not a pair, and each pair counts once): "
-                                       << text(expected);
+    return testing::AssertionFailure()
+           << "found " << actual.size() << " pair(s): " << text(actual) << "\nbrute force finds "
+           << expected.size()
+           << " (touching boxes are not a pair, and each pair counts once): " << text(expected);
 }
 
 } // namespace
@@ -88,7 +89,8 @@ TEST(Task1SortAndSweep, FindsTheSamePairsAsBruteForce)
 TEST(Task1SortAndSweep, BoxesTouchingOnXAreNotAPair)
 {
     // Each box starts exactly where the one before it ends.
-    const std::vector<Box> chain = {{0.f, 0.f, 10.f, 10.f}, {10.f, 0.f, 20.f, 10.f}, {20.f, 0.f, 30.f, 10.f}};
+    const std::vector<Box> chain = {
+        {0.f, 0.f, 10.f, 10.f}, {10.f, 0.f, 20.f, 10.f}, {20.f, 0.f, 30.f, 10.f}};
     EXPECT_TRUE(samePairs(sortAndSweepPairs(chain).pairs, {}));
     const std::vector<Box> overlapping = {{0.f, 0.f, 10.f, 10.f}, {9.5f, 0.f, 20.f, 10.f}};
     EXPECT_TRUE(samePairs(sortAndSweepPairs(overlapping).pairs, {{0, 1}}));
@@ -155,8 +157,9 @@ TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)
     for (int row = 0; row < 10; ++row)
         for (int column = 0; column < 10; ++column)
             balls.push_back({column * 30.f, row * 30.f, 10.f});
-    balls.push_back({1.f, 1.f, 1.f});    // its bound overlaps ball 0's; the circles overlap
-    balls.push_back({45.f, 15.f, 10.f}); // bounds overlap four balls' at their corners, circles none
+    balls.push_back({1.f, 1.f, 1.f}); // its bound overlaps ball 0's; the circles overlap
+    balls.push_back(
+        {45.f, 15.f, 10.f}); // bounds overlap four balls' at their corners, circles none
     balls.push_back({90.f, 100.f, 5.f}); // bound and circle overlap ball (90, 90)'s
     const PairSearch search = ballPairsBoundFirst(balls);
     long long boundsOverlapping = 0;

@@ -1,0 +1,130 @@
+// Grading tests of lab 13 (fast movers). Each suite is named after the task it checks;
+// README.md lists them. A bullet 8 pixels wide flies at a wall 6 pixels thick, at speeds
+// from 600 to 10 million pixels per second, one fixed step (1/120 s) at a time; every
+// flight ends within a few steps, so no test loops long.
+#include "FastMove.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace
+{
+constexpr float dt = 1.f / 120.f;
+constexpr float maxSubStep = 8.f; // less than wall (6) + bullet (8): no sub-step can jump it
+const Box wall{500.f, 0.f, 506.f, 100.f};
+
+Box bulletAt(float left, float top = 48.f)
+{
+    return {left, top, left + 8.f, top + 4.f};
+}
+
+using Step = std::function<MoveResult(const Box&, float)>;
+
+// Flies the bullet from `start` at `velocityX` for up to `steps` steps; expects it to stop
+// against the wall's near side, never overlapping it after a step and never past it.
+void expectStopsAtTheWall(const Step& step, Box start, float velocityX, int steps)
+{
+    Box bullet = start;
+    for (int index = 0; index < steps; ++index)
+    {
+        const MoveResult result = step(bullet, velocityX);
+        bullet = result.bullet;
+        ASSERT_FALSE(overlaps(bullet, wall)) << "the bullet overlaps the wall after a step at "
+                                             << velocityX << " px/s: left " << bullet.left;
+        if (result.hitWall)
+        {
+            if (velocityX > 0.f)
+                EXPECT_EQ(bullet.right, wall.left)
+                    << "stopped, but not against the wall's left side";
+            else
+                EXPECT_EQ(bullet.left, wall.right)
+                    << "stopped, but not against the wall's right side";
+            return;
+        }
+        const bool past = velocityX > 0.f ? bullet.left >= wall.right : bullet.right <= wall.left;
+        ASSERT_FALSE(past) << "the bullet went through the wall at " << velocityX
+                           << " px/s (started at left " << start.left << "), now at left "
+                           << bullet.left;
+    }
+    ADD_FAILURE() << "the bullet never reached the wall at " << velocityX << " px/s";
+}
+
+Step subStepped()
+{
+    return [](const Box& bullet, float velocityX)
+    { return subSteppedStep(bullet, velocityX, dt, wall, maxSubStep); };
+}
+
+Step speculative()
+{
+    return [](const Box& bullet, float velocityX)
+    { return speculativeStep(bullet, velocityX, dt, wall); };
+}
+} // namespace
+
+TEST(Task1SubSteps, NeverPassesThroughTheWallAtAnySpeed)
+{
+    for (float speed = 600.f; speed < 2e5f; speed *= 1.7f)
+        for (float start = 380.f; start < 420.f; start += 7.f)
+        {
+            expectStopsAtTheWall(subStepped(), bulletAt(start), speed, 40);
+            expectStopsAtTheWall(subStepped(), bulletAt(1000.f - start), -speed, 40);
+        }
+}
+
+TEST(Task1SubSteps, EachSubStepIsNoLongerThanTheLimit)
+{
+    // 100 pixels in one step, no wall in the way: ceil(100 / 8) = 13 sub-steps.
+    const MoveResult result = subSteppedStep(bulletAt(0.f, 200.f), 12000.f, dt, wall, maxSubStep);
+    EXPECT_FALSE(result.hitWall);
+    EXPECT_NEAR(result.bullet.left, 100.f, 1e-3f)
+        << "a step without a hit still moves the whole way";
+    EXPECT_EQ(result.overlapTests, 13);
+}
+
+TEST(Task1SubSteps, TouchingTheWallIsNotAHit)
+{
+    // Against the wall and moving away: free. Against it and moving in: it stays there.
+    const MoveResult away = subSteppedStep(bulletAt(wall.left - 8.f), -600.f, dt, wall, maxSubStep);
+    EXPECT_FALSE(away.hitWall);
+    EXPECT_LT(away.bullet.right, wall.left);
+    const MoveResult into = subSteppedStep(bulletAt(wall.left - 8.f), 600.f, dt, wall, maxSubStep);
+    EXPECT_TRUE(into.hitWall);
+    EXPECT_EQ(into.bullet.right, wall.left);
+}
+
+TEST(Task2SpeculativeContact, NeverOverlapsTheWallAtAnySpeed)
+{
+    for (float speed = 600.f; speed < 1e7f; speed *= 1.7f)
+        for (float start = 300.f; start < 480.f; start += 23.f)
+        {
+            expectStopsAtTheWall(speculative(), bulletAt(start), speed, 40);
+            expectStopsAtTheWall(speculative(), bulletAt(1000.f - start), -speed, 40);
+        }
+}
+
+TEST(Task2SpeculativeContact, OneTestAndTheWholeMoveWhenTheWallIsFar)
+{
+    const MoveResult far = speculativeStep(bulletAt(100.f), 1200.f, dt, wall);
+    EXPECT_FALSE(far.hitWall);
+    EXPECT_NEAR(far.bullet.left, 110.f, 1e-3f);
+    EXPECT_EQ(far.overlapTests, 1);
+    const MoveResult fast = speculativeStep(bulletAt(100.f), 1e7f, dt, wall);
+    EXPECT_TRUE(fast.hitWall);
+    EXPECT_EQ(fast.bullet.right, wall.left) << "a move past the wall ends touching it";
+    EXPECT_EQ(fast.overlapTests, 1);
+}
+
+TEST(Task2SpeculativeContact, OnlyAWallLevelWithTheBulletStopsIt)
+{
+    // Flying below the wall (the bullet's top exactly at the wall's bottom: touching).
+    const MoveResult below = speculativeStep(bulletAt(100.f, wall.bottom), 1e6f, dt, wall);
+    EXPECT_FALSE(below.hitWall);
+    EXPECT_GT(below.bullet.left, wall.right);
+    // Moving away from a wall it touches.
+    const MoveResult away = speculativeStep(bulletAt(wall.right), 600.f, dt, wall);
+    EXPECT_FALSE(away.hitWall);
+    EXPECT_NEAR(away.bullet.left, wall.right + 5.f, 1e-3f);
+}
