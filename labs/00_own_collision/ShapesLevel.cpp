@@ -141,11 +141,11 @@ void ShapesLevel::renderDebug(hitbox::DebugRenderer& debug) const
         if (shape.isCircle)
         {
             const WorldCircle circle = MyCollision::worldCircle(shape.object);
-            debug.circle({circle.center, circle.radius}, color);
+            debug.circle({hitbox::toVec2(circle.center), circle.radius}, color);
         }
         else
         {
-            debug.box(rectangleOf(MyCollision::worldBox(shape.object)), color);
+            debug.box(hitbox::toBox(rectangleOf(MyCollision::worldBox(shape.object))), color);
         }
     };
     for (const Shape& shape : shapes)

@@ -351,8 +351,8 @@ void RotatedLevel::render(sf::RenderTarget& target) const
             sf::CircleShape head(7.f, 3);
             head.setOrigin({7.f, 7.f});
             head.setPosition(hitbox::toSfml(to));
-            hitbox::setRotationDegrees(head,
-                                       std::atan2(view.axis.y, view.axis.x) * 180.f / hitbox::pi + 90.f);
+            hitbox::setRotationDegrees(
+                head, std::atan2(view.axis.y, view.axis.x) * 180.f / hitbox::pi + 90.f);
             head.setFillColor(mtvColor);
             target.draw(head);
         }

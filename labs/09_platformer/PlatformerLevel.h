@@ -103,7 +103,7 @@ private:
     TileMap map;
     Player player;
     sf::VertexArray tileQuads{sf::PrimitiveType::Triangles}; // built once: the tiles never change
-    hitbox::LazyFont font;                    // read by the first render(): tests need no font file
+    hitbox::LazyFont font; // read by the first render(): tests need no font file
 
     // Controls: held keys, and presses kept until the next step uses them.
     bool holdingLeft = false;

@@ -27,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try
     {
         const TileMap map = TileMap::parse(text, "fuzz.txt");
-        const sf::Vector2f start = map.getPlayerStart();
+        const hitbox::Vec2 start = map.getPlayerStart();
         const int column = static_cast<int>(start.x / TileMap::tileSize);
         const int row = static_cast<int>(start.y / TileMap::tileSize);
         if (map.getRows() < 1 || map.getColumns() < 1 || column >= map.getColumns() ||

@@ -154,8 +154,8 @@ TEST(Task2MoveAndSlide, TheHitsAreKeptNearestFirst)
     runWithMouse(level, {0.f, 0.f}, 1);
     const std::vector<hitbox::Hit>& hits = level.getLastHits();
     ASSERT_EQ(hits.size(), 2u);
-    EXPECT_EQ(hits[0].normal, sf::Vector2f(1.f, 0.f)) << "the wall first";
-    EXPECT_EQ(hits[1].normal, sf::Vector2f(0.f, -1.f));
+    EXPECT_EQ(hits[0].normal, hitbox::Vec2(1.f, 0.f)) << "the wall first";
+    EXPECT_EQ(hits[1].normal, hitbox::Vec2(0.f, -1.f));
     EXPECT_LE(hits[0].time, hits[1].time);
     EXPECT_FALSE(overlapsAnySolid(level));
 }

@@ -4,6 +4,7 @@
 
 #include "hitbox/objects/Collision.h"
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Config.hpp>
 #include <SFML/Graphics/Rect.hpp>
@@ -58,7 +59,7 @@ bool MyCollision::checkBoundingBox(GameObject* object, sf::Vector2f point)
 WorldCircle MyCollision::worldCircle(const GameObject& object)
 {
     const hitbox::Circle circle = object.getBoundingCircle();
-    return {circle.center, circle.radius};
+    return {hitbox::toSfml(circle.center), circle.radius};
 }
 
 bool MyCollision::checkBoundingCircle(GameObject* first, GameObject* second)
