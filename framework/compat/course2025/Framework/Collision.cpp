@@ -8,16 +8,16 @@ namespace
 {
 
 // The one place where the course's SFML 3 types meet Hitbox's geometry types.
-sf::FloatRect toGeometryBox(const sf::FloatRect& box)
+hitbox::Box toGeometryBox(const sf::FloatRect& box)
 {
-    return box;
+    return {box.position.x, box.position.y, box.size.x, box.size.y};
 }
 
 hitbox::Circle inscribedCircle(const GameObject& object)
 {
     const sf::FloatRect box = object.getCollisionBox();
     hitbox::Circle circle;
-    circle.center = box.position + box.size / 2.f;
+    circle.center = {box.position.x + box.size.x / 2.f, box.position.y + box.size.y / 2.f};
     circle.radius = std::min(box.size.x, box.size.y) / 2.f;
     return circle;
 }
@@ -32,7 +32,9 @@ bool Collision::checkBoundingBox(const GameObject& first, const GameObject& seco
 
 bool Collision::checkBoundingBox(const GameObject& object, const sf::Vector2i& point)
 {
-    return hitbox::pointInBox(sf::Vector2f(point), toGeometryBox(object.getCollisionBox()));
+    return hitbox::pointInBox(
+        hitbox::Vec2(static_cast<float>(point.x), static_cast<float>(point.y)),
+        toGeometryBox(object.getCollisionBox()));
 }
 
 bool Collision::checkBoundingCircle(const GameObject& first, const GameObject& second)
