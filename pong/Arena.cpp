@@ -30,20 +30,21 @@ float Arena::centerY() const
 
 sf::FloatRect Arena::topWall() const
 {
-    return {-wallReach, playTop() - wallReach, size.x + 2.f * wallReach, wallReach};
+    return sf::FloatRect({-wallReach, playTop() - wallReach},
+                         {size.x + 2.f * wallReach, wallReach});
 }
 
 sf::FloatRect Arena::bottomWall() const
 {
-    return {-wallReach, playBottom(), size.x + 2.f * wallReach, wallReach};
+    return sf::FloatRect({-wallReach, playBottom()}, {size.x + 2.f * wallReach, wallReach});
 }
 
 sf::FloatRect Arena::topWallStrip() const
 {
-    return {0.f, 0.f, size.x, wallThickness};
+    return sf::FloatRect({0.f, 0.f}, {size.x, wallThickness});
 }
 
 sf::FloatRect Arena::bottomWallStrip() const
 {
-    return {0.f, playBottom(), size.x, wallThickness};
+    return sf::FloatRect({0.f, playBottom()}, {size.x, wallThickness});
 }

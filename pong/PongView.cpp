@@ -4,6 +4,7 @@
 #include "PongLevel.h"
 
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -27,13 +28,13 @@ void drawCentered(sf::RenderTarget& target, const sf::Font& font, const std::str
 {
     sf::Text text = hitbox::makeText(font, sf::String::fromUtf8(line.begin(), line.end()), size);
     text.setFillColor(color);
-    const sf::FloatRect bounds = text.getLocalBounds();
+    const hitbox::Box bounds = hitbox::toBox(text.getLocalBounds());
     text.setPosition(
         {std::round(centerX - bounds.left - bounds.width / 2.f), std::round(top - bounds.top)});
     target.draw(text);
 }
 
-void drawPanel(sf::RenderTarget& target, const sf::FloatRect& area)
+void drawPanel(sf::RenderTarget& target, const hitbox::Box& area)
 {
     sf::RectangleShape panel({area.width, area.height});
     panel.setPosition({area.left, area.top});
@@ -65,7 +66,8 @@ void PongLevel::render(sf::RenderTarget& target) const
     const float centerX = arena.centerX();
 
     // The court: walls and the dashed centre line (the "net").
-    for (const sf::FloatRect& strip : {arena.topWallStrip(), arena.bottomWallStrip()})
+    for (const hitbox::Box strip :
+         {hitbox::toBox(arena.topWallStrip()), hitbox::toBox(arena.bottomWallStrip())})
     {
         sf::RectangleShape wall({strip.width, strip.height});
         wall.setPosition({strip.left, strip.top});
@@ -85,7 +87,7 @@ void PongLevel::render(sf::RenderTarget& target) const
     {
         target.draw(leftPaddle);
         target.draw(rightPaddle);
-        const sf::FloatRect panel{centerX - 330.f, 110.f, 660.f, 420.f};
+        const hitbox::Box panel{centerX - 330.f, 110.f, 660.f, 420.f};
         drawPanel(target, panel);
         drawCentered(target, font.get(), "PONG", 96, centerX, 140.f, scoreColor);
         drawCentered(target, font.get(),
@@ -133,7 +135,7 @@ void PongLevel::render(sf::RenderTarget& target) const
     }
 
     // Win screen.
-    const sf::FloatRect panel{centerX - 320.f, 190.f, 640.f, 250.f};
+    const hitbox::Box panel{centerX - 320.f, 190.f, 640.f, 250.f};
     drawPanel(target, panel);
     drawCentered(target, font.get(), winnerLine(mode, score.getWinner()), 56, centerX, 225.f,
                  highlightColor);

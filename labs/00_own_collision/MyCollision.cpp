@@ -2,7 +2,6 @@
 
 #include "hitbox/objects/GameObject.h"
 
-#include <SFML/Config.hpp>
 #include <SFML/Graphics/Rect.hpp>
 
 #include <algorithm>
@@ -15,13 +14,9 @@ namespace
 // reads a FloatRect's fields: SFML 3 renamed them.)
 Sides sidesOf(const sf::FloatRect& box)
 {
-#if SFML_VERSION_MAJOR >= 3
-    const float left = box.position.x, top = box.position.y;
-    const float width = box.size.x, height = box.size.y;
-#else
-    const float left = box.left, top = box.top;
-    const float width = box.width, height = box.height;
-#endif
+    const hitbox::Box plain = hitbox::toBox(box);
+    const float left = plain.left, top = plain.top;
+    const float width = plain.width, height = plain.height;
     return {std::min(left, left + width), std::min(top, top + height), std::max(left, left + width),
             std::max(top, top + height)};
 }

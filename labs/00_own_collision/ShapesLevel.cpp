@@ -4,8 +4,8 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Graphics.h"
 
-#include <SFML/Config.hpp>
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 
@@ -31,11 +31,7 @@ GameObject centred(sf::Vector2f position, sf::Vector2f size)
 // Turns an object by `degrees` clockwise (SFML 3 takes an sf::Angle, SFML 2 a float).
 void turn(GameObject& object, float degrees)
 {
-#if SFML_VERSION_MAJOR >= 3
-    object.rotate(sf::degrees(degrees));
-#else
-    object.rotate(degrees);
-#endif
+    hitbox::setRotationDegrees(object, hitbox::getRotationDegrees(object) + degrees);
 }
 
 sf::FloatRect rectangleOf(const Sides& sides)

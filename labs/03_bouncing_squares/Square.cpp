@@ -36,7 +36,7 @@ void Square::update(float dt)
     // BEGIN TASK 2: bounce the collision box off the window edges
     // Test the collision box, not the picture: the see-through margin may go past the
     // edge, the crate may not. Move the square back by however far the box is out.
-    const sf::FloatRect box = getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(getCollisionBox());
     bool hitWall = false;
     if (box.left < 0.f || box.left + box.width > worldSize.x)
     {

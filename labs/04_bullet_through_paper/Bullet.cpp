@@ -53,14 +53,14 @@ void Bullet::flewAway()
 
 void Bullet::moveBy(sf::Vector2f step)
 {
-    const sf::FloatRect before = getCollisionBox();
+    const hitbox::Box before = hitbox::toBox(getCollisionBox());
     move(step);
-    const sf::FloatRect after = getCollisionBox();
+    const hitbox::Box after = hitbox::toBox(getCollisionBox());
     const float left = std::min(before.left, after.left);
     const float top = std::min(before.top, after.top);
     const float right = std::max(before.left + before.width, after.left + after.width);
     const float bottom = std::max(before.top + before.height, after.top + after.height);
-    lastSweptArea = {left, top, right - left, bottom - top};
+    lastSweptArea = sf::FloatRect({left, top}, {right - left, bottom - top});
     trail.push_back(getPosition());
 }
 

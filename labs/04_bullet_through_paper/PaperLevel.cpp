@@ -169,7 +169,7 @@ void PaperLevel::updateBullet(Bullet& bullet, float dt)
     LaneScore& score = bullet.getLane() == Lane::Discrete ? discreteScore : sweptScore;
     if (bullet.hitTheWall())
         ++score.hits;
-    else if (bullet.getCollisionBox().left > getWorldSize().x)
+    else if (hitbox::toBox(bullet.getCollisionBox()).left > getWorldSize().x)
     {
         bullet.flewAway();
         ++score.misses;
@@ -269,7 +269,8 @@ void PaperLevel::drawJumpOverWall(sf::RenderTarget& target, const Bullet& bullet
         target.draw(jump);
         // render() always has a window, so measuring text is safe here.
         sf::Text label = makeText(font.get(), "passed through unseen", 16, missColor, {0.f, 0.f});
-        label.setPosition({wall.left - 12.f - label.getLocalBounds().width, y + 48.f});
+        label.setPosition(
+            {wall.left - 12.f - hitbox::toBox(label.getLocalBounds()).width, y + 48.f});
         target.draw(label);
         return;
     }

@@ -5,6 +5,7 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -25,7 +26,7 @@ const sf::Color cellUntested{44, 48, 60};
 const sf::Color cellTested{95, 110, 135};
 const sf::Color cellWasted{210, 60, 210}; // on or below the diagonal, or tested twice
 
-const sf::FloatRect tableArea{660.f, 60.f, 500.f, 500.f};
+const hitbox::Box tableArea{660.f, 60.f, 500.f, 500.f};
 
 // Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
 // that size nobody can tell.
@@ -56,7 +57,7 @@ void addTriangle(sf::VertexArray& vertices, sf::Vector2f a, sf::Vector2f b, sf::
     vertices.append({c, color});
 }
 
-void addQuad(sf::VertexArray& vertices, const sf::FloatRect& box, sf::Color color)
+void addQuad(sf::VertexArray& vertices, const hitbox::Box& box, sf::Color color)
 {
     const sf::Vector2f topLeft{box.left, box.top};
     const sf::Vector2f topRight{box.left + box.width, box.top};
@@ -122,7 +123,7 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
     for (const Ball& ball : balls)
     {
         if (ball.radius < squareBelowRadius)
-            addQuad(ballVertices, hitbox::toSfml(ball.box()), colorOf(ball));
+            addQuad(ballVertices, ball.box(), colorOf(ball));
         else
             addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, colorOf(ball));
     }
@@ -137,7 +138,7 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
     for (std::size_t i = 0; i < balls.size(); ++i)
     {
         sf::Text number = makeText(std::to_string(i), labelFont, 20, sf::Color::Black);
-        const sf::FloatRect bounds = number.getLocalBounds();
+        const hitbox::Box bounds = hitbox::toBox(number.getLocalBounds());
         number.setPosition({balls[i].position.x - bounds.width / 2.f - bounds.left,
                             balls[i].position.y - bounds.height / 2.f - bounds.top});
         target.draw(number);
@@ -164,8 +165,8 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
                 color = hitbox::DebugRenderer::touchingColor; // read here: set in another file
             else if (tests == 1)
                 color = cellTested;
-            const sf::FloatRect box{origin.x + column * cell + 1.f, origin.y + row * cell + 1.f,
-                                    cell - 2.f, cell - 2.f};
+            const hitbox::Box box{origin.x + column * cell + 1.f, origin.y + row * cell + 1.f,
+                                  cell - 2.f, cell - 2.f};
             addQuad(cells, box, color);
         }
     target.draw(cells);

@@ -2,6 +2,7 @@
 #include "support/SfmlPrinters.h"
 
 #include "hitbox/objects/Animation.h"
+#include "hitbox/sfml/Graphics.h"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,10 @@ namespace
 std::string describe(const sf::IntRect& frame)
 {
     std::ostringstream text;
-    text << "IntRect{x=" << frame.left << ", y=" << frame.top << ", w=" << frame.width
-         << ", h=" << frame.height << "}";
+    const sf::Vector2i position = hitbox::rectPosition(frame);
+    const sf::Vector2i size = hitbox::rectSize(frame);
+    text << "IntRect{x=" << position.x << ", y=" << position.y << ", w=" << size.x
+         << ", h=" << size.y << "}";
     return text.str();
 }
 
@@ -25,9 +28,9 @@ std::string describe(const sf::IntRect& frame)
 Animation threeFrameWalk()
 {
     Animation walk;
-    walk.addFrame({0, 0, 16, 24});
-    walk.addFrame({16, 0, 16, 24});
-    walk.addFrame({32, 0, 16, 24});
+    walk.addFrame(sf::IntRect({0, 0}, {16, 24}));
+    walk.addFrame(sf::IntRect({16, 0}, {16, 24}));
+    walk.addFrame(sf::IntRect({32, 0}, {16, 24}));
     walk.setFrameSpeed(0.25f);
     return walk;
 }

@@ -72,7 +72,7 @@ TEST(CourseCompat, StudentPaddleBoxCoversTheShapeAroundItsPosition)
 {
     Paddle paddle;
     paddle.setPosition({100, 300});
-    EXPECT_EQ(paddle.getCollisionBox(), sf::FloatRect(90, 250, 20, 100));
+    EXPECT_EQ(paddle.getCollisionBox(), sf::FloatRect({90, 250}, {20, 100}));
 }
 
 TEST(CourseCompat, LevelDrivesObjectsThroughTheProtectedInputPointer)

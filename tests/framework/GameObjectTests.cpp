@@ -10,12 +10,13 @@
 namespace
 {
 
-void expectBoxNear(const sf::FloatRect& actual, const sf::FloatRect& expected)
+void expectBoxNear(const sf::FloatRect& actualRect, const hitbox::Box& expected)
 {
-    EXPECT_NEAR(actual.left, expected.left, 1e-3f) << ::testing::PrintToString(actual);
-    EXPECT_NEAR(actual.top, expected.top, 1e-3f) << ::testing::PrintToString(actual);
-    EXPECT_NEAR(actual.width, expected.width, 1e-3f) << ::testing::PrintToString(actual);
-    EXPECT_NEAR(actual.height, expected.height, 1e-3f) << ::testing::PrintToString(actual);
+    const hitbox::Box actual = hitbox::toBox(actualRect);
+    EXPECT_NEAR(actual.left, expected.left, 1e-3f) << ::testing::PrintToString(actualRect);
+    EXPECT_NEAR(actual.top, expected.top, 1e-3f) << ::testing::PrintToString(actualRect);
+    EXPECT_NEAR(actual.width, expected.width, 1e-3f) << ::testing::PrintToString(actualRect);
+    EXPECT_NEAR(actual.height, expected.height, 1e-3f) << ::testing::PrintToString(actualRect);
 }
 
 } // namespace
@@ -58,15 +59,15 @@ TEST(GameObject, BoxIsMeasuredFromTheOriginPoint)
     object.setCollisionBox(-16.f, -16.f, 32.f, 32.f);
     object.setPosition({200.f, 100.f});
     expectBoxNear(object.getCollisionBox(), {184.f, 84.f, 32.f, 32.f});
-    expectBoxNear(object.getCollisionBox(), object.getGlobalBounds());
+    expectBoxNear(object.getCollisionBox(), hitbox::toBox(object.getGlobalBounds()));
 }
 
 TEST(GameObject, LectureStyleBoxAtTopLeftOrigin)
 {
-    // square1.setCollisionBox(sf::FloatRect(0, 0, 50, 50)) from the lecture.
+    // square1.setCollisionBox(sf::FloatRect({0, 0}, {50, 50})) from the lecture.
     GameObject square;
     square.setSize({50.f, 50.f});
-    square.setCollisionBox(sf::FloatRect(0.f, 0.f, 50.f, 50.f));
+    square.setCollisionBox(sf::FloatRect({0.f, 0.f}, {50.f, 50.f}));
     square.setPosition({0.f, 200.f});
     expectBoxNear(square.getCollisionBox(), {0.f, 200.f, 50.f, 50.f});
 }
@@ -113,7 +114,7 @@ TEST(GameObject, DirectAssignmentOfTheProtectedBoxCountsAsSet)
         OldStyle()
         {
             setSize({50.f, 50.f});
-            collisionBox = sf::FloatRect(10.f, 10.f, 30.f, 30.f);
+            collisionBox = sf::FloatRect({10.f, 10.f}, {30.f, 30.f});
         }
     } object;
     expectBoxNear(object.getCollisionBox(), {10.f, 10.f, 30.f, 30.f});
@@ -132,7 +133,7 @@ TEST(GameObject, AnUnsetProtectedBoxReadsAsEmptyAndSaysSo)
     EXPECT_EQ(static_cast<const sf::FloatRect&>(object.box()), sf::FloatRect());
     object.setCollisionBox(1.f, 2.f, 3.f, 4.f);
     EXPECT_TRUE(object.box().isSet);
-    EXPECT_EQ(object.box().width, 3.f);
+    EXPECT_EQ(hitbox::toBox(object.box()).width, 3.f);
     object.clearCollisionBox();
     EXPECT_FALSE(object.box().isSet);
     expectBoxNear(object.getCollisionBox(), {0.f, 0.f, 50.f, 50.f});
@@ -174,7 +175,7 @@ TEST(GameObject, DefaultCircleUsesTheShorterSideAndTheScale)
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 3.f);
     object.setScale({1.f, 3.f}); // a 60 x 60 box
     EXPECT_FLOAT_EQ(object.getBoundingCircle().radius, 30.f);
-    EXPECT_EQ(object.getCollisionBox(), sf::FloatRect(0.f, 0.f, 60.f, 60.f));
+    EXPECT_EQ(object.getCollisionBox(), sf::FloatRect({0.f, 0.f}, {60.f, 60.f}));
 }
 
 TEST(GameObject, ConfiguredCircleIsMeasuredFromTheOriginPoint)

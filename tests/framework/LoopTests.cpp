@@ -5,6 +5,7 @@
 #include "hitbox/app/App.h"
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <gtest/gtest.h>
 
@@ -98,7 +99,8 @@ TEST(FixedStep, NegativeAndNanFramesCountAsZero)
 
 TEST(Letterbox, WideWindowGetsBarsLeftAndRight)
 {
-    const sf::FloatRect viewport = hitbox::letterboxViewport({2400, 675}, hitbox::defaultWorldSize);
+    const hitbox::Box viewport =
+        hitbox::toBox(hitbox::letterboxViewport({2400, 675}, hitbox::defaultWorldSize));
     EXPECT_FLOAT_EQ(viewport.width, 0.5f);
     EXPECT_FLOAT_EQ(viewport.left, 0.25f);
     EXPECT_FLOAT_EQ(viewport.height, 1.f);
@@ -106,17 +108,18 @@ TEST(Letterbox, WideWindowGetsBarsLeftAndRight)
 
 TEST(Letterbox, TallWindowGetsBarsAboveAndBelow)
 {
-    const sf::FloatRect viewport =
-        hitbox::letterboxViewport({1200, 1350}, hitbox::defaultWorldSize);
+    const hitbox::Box viewport =
+        hitbox::toBox(hitbox::letterboxViewport({1200, 1350}, hitbox::defaultWorldSize));
     EXPECT_FLOAT_EQ(viewport.height, 0.5f);
     EXPECT_FLOAT_EQ(viewport.top, 0.25f);
 }
 
 TEST(Letterbox, SameAspectFillsTheWindowAndZeroSizeIsSafe)
 {
-    EXPECT_EQ(hitbox::letterboxViewport({600, 337}, {1200.f, 674.f}), sf::FloatRect(0, 0, 1, 1));
+    EXPECT_EQ(hitbox::letterboxViewport({600, 337}, {1200.f, 674.f}),
+              sf::FloatRect({0, 0}, {1, 1}));
     EXPECT_EQ(hitbox::letterboxViewport({0, 0}, hitbox::defaultWorldSize),
-              sf::FloatRect(0, 0, 1, 1));
+              sf::FloatRect({0, 0}, {1, 1}));
 }
 
 namespace

@@ -2,7 +2,9 @@
 // no half-written file under the final name, no temporary left behind.
 #include "hitbox/app/Screenshot.h"
 
-#include <SFML/Config.hpp>
+#include "hitbox/sfml/Graphics.h"
+
+#include <SFML/Graphics/Image.hpp>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -10,6 +12,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <vector>
 
 #if defined(__linux__)
 #include <csignal>
@@ -34,27 +37,16 @@ sf::Image noisyImage()
 {
     // Noise does not compress: the PNG is far bigger than the file-size limit used below.
     const unsigned size = 256;
-#if SFML_VERSION_MAJOR >= 3
-    sf::Image image({size, size});
-#else
-    sf::Image image;
-    image.create(size, size);
-#endif
+    std::vector<std::uint8_t> pixels; // red, green, blue, alpha for each pixel, row by row
     unsigned value = 12345;
-    for (unsigned y = 0; y < size; ++y)
-        for (unsigned x = 0; x < size; ++x)
-        {
-            value = value * 1103515245u + 12345u;
-            const sf::Color color(static_cast<std::uint8_t>(value >> 24),
-                                  static_cast<std::uint8_t>(value >> 16),
-                                  static_cast<std::uint8_t>(value >> 8));
-#if SFML_VERSION_MAJOR >= 3
-            image.setPixel({x, y}, color);
-#else
-            image.setPixel(x, y, color);
-#endif
-        }
-    return image;
+    for (unsigned pixel = 0; pixel < size * size; ++pixel)
+    {
+        value = value * 1103515245u + 12345u;
+        pixels.insert(pixels.end(), {static_cast<std::uint8_t>(value >> 24),
+                                     static_cast<std::uint8_t>(value >> 16),
+                                     static_cast<std::uint8_t>(value >> 8), 255});
+    }
+    return hitbox::makeImage(size, size, pixels.data());
 }
 
 std::size_t filesIn(const fs::path& folder)

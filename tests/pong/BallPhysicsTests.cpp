@@ -5,6 +5,8 @@
 #include "support/SfmlPrinters.h"
 
 #include "hitbox/app/App.h"
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <gtest/gtest.h>
 
@@ -72,7 +74,7 @@ TEST(BallWalls, BallGoingUpBouncesOffTheTopWallAndKeepsItsSpeed)
     ASSERT_EQ(events, std::vector<GameEvent>{GameEvent::WallHit});
     EXPECT_FLOAT_EQ(court.ball.getVelocity().y, 600.f); // turned round
     EXPECT_FLOAT_EQ(court.ball.getVelocity().x, 300.f); // sideways unchanged
-    EXPECT_GE(court.ball.getCollisionBox().top, court.arena.playTop());
+    EXPECT_GE(hitbox::toBox(court.ball.getCollisionBox()).top, court.arena.playTop());
 }
 
 TEST(BallWalls, BallGoingDownBouncesOffTheBottomWall)
@@ -117,7 +119,7 @@ TEST(BallPaddle, HitReversesTheHorizontalDirection)
     court.place({300.f, paddleY}, {-600.f, 0.f});
     ASSERT_EQ(court.stepUntilHit(), std::vector<GameEvent>{GameEvent::PaddleHit});
     EXPECT_GT(court.ball.getVelocity().x, 0.f);
-    EXPECT_GE(court.ball.getCollisionBox().left, leftPaddleFaceX(court));
+    EXPECT_GE(hitbox::toBox(court.ball.getCollisionBox()).left, leftPaddleFaceX(court));
 }
 
 TEST(BallPaddle, HitInTheMiddleGoesOutFlat)
@@ -194,7 +196,7 @@ TEST_P(FastBall, At50000PixelsPerSecondTheBallStillBouncesOffAPaddle)
     court.place({700.f, court.left.getPosition().y + 10.f}, {-50000.f, 0.f});
     ASSERT_EQ(court.stepUntilHit(20, dt), std::vector<GameEvent>{GameEvent::PaddleHit});
     EXPECT_GT(court.ball.getVelocity().x, 0.f);
-    EXPECT_GE(court.ball.getCollisionBox().left, leftPaddleFaceX(court));
+    EXPECT_GE(hitbox::toBox(court.ball.getCollisionBox()).left, leftPaddleFaceX(court));
 }
 
 INSTANTIATE_TEST_SUITE_P(AnyStepLength, FastBall,
@@ -206,7 +208,7 @@ TEST(BallPaddle, AFastBallAlsoBouncesOffAPaddleThatIsMovingIntoItsPath)
     // to be is hit, although at the start of the step the way was clear.
     Court court;
     const float dt = hitbox::stepSeconds;
-    const float paddleTop = court.left.getCollisionBox().top;
+    const float paddleTop = hitbox::toBox(court.left.getCollisionBox()).top;
     // The ball passes 4 px above the paddle's top end, 2000 px/s: 17 px per step.
     court.place({leftPaddleFaceX(court) + 20.f, paddleTop - 11.f}, {-2000.f, 0.f});
     bool bounced = false;
@@ -221,7 +223,8 @@ TEST(BallPaddle, AFastBallAlsoBouncesOffAPaddleThatIsMovingIntoItsPath)
     }
     EXPECT_TRUE(bounced);
     EXPECT_GT(court.ball.getVelocity().x, 0.f);
-    EXPECT_FALSE(court.ball.getCollisionBox().intersects(court.left.getCollisionBox()));
+    EXPECT_FALSE(hitbox::boxVsBox(hitbox::toBox(court.ball.getCollisionBox()),
+                                  hitbox::toBox(court.left.getCollisionBox())));
 }
 
 TEST(BallPaddle, APaddleNeverPushesIntoTheBall)
@@ -232,7 +235,8 @@ TEST(BallPaddle, APaddleNeverPushesIntoTheBall)
     court.place({court.left.getPosition().x, paddleBottom + 7.f + 3.f}, {0.f, 0.f});
     court.left.planMove(1.f, court.arena, hitbox::stepSeconds); // 5 px down: into the ball
     court.left.finishMove(court.ball.getCollisionBox());
-    EXPECT_FALSE(court.ball.getCollisionBox().intersects(court.left.getCollisionBox()));
+    EXPECT_FALSE(hitbox::boxVsBox(hitbox::toBox(court.ball.getCollisionBox()),
+                                  hitbox::toBox(court.left.getCollisionBox())));
     EXPECT_NEAR(hitbox::bottomOf(hitbox::toBox(court.left.getCollisionBox())), paddleBottom + 3.f,
                 1e-3f);
 }
@@ -249,5 +253,6 @@ TEST(BallPaddle, ABallGrazingAPaddleCornerBouncesOnceAndGoesOn)
         for (GameEvent event : court.step().events)
             paddleHits += event == GameEvent::PaddleHit ? 1 : 0;
     EXPECT_EQ(paddleHits, 1);
-    EXPECT_GT(court.ball.getCollisionBox().left, court.arena.size.x); // gone past: a point
+    EXPECT_GT(hitbox::toBox(court.ball.getCollisionBox()).left,
+              court.arena.size.x); // gone past: a point
 }

@@ -197,7 +197,8 @@ TEST(PongKeys, PaddlesStopShortOfTheWallsLeavingRoomForTheBall)
     input.setKeyDown(sf::Keyboard::Key::W);
     for (int i = 0; i < stepsFor(2.f); ++i)
         step(pong, input);
-    const float gap = pong.getPaddle(Side::Left).getCollisionBox().top - pong.getArena().playTop();
+    const float gap =
+        hitbox::toBox(pong.getPaddle(Side::Left).getCollisionBox()).top - pong.getArena().playTop();
     EXPECT_GT(gap, pong.getBall().getSettings().size);
 }
 

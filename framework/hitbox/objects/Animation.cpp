@@ -1,5 +1,7 @@
 #include "hitbox/objects/Animation.h"
 
+#include "hitbox/sfml/Graphics.h"
+
 #include <cmath>
 
 void Animation::addFrame(sf::IntRect frame)
@@ -64,14 +66,13 @@ sf::IntRect Animation::getCurrentFrame() const
 {
     if (frames.empty())
         return {};
-    sf::IntRect frame = frames[static_cast<std::size_t>(currentFrame)];
-    if (flipped)
-    {
-        // Start at the right edge and run leftwards: the texture is read mirrored.
-        frame.left += frame.width;
-        frame.width = -frame.width;
-    }
-    return frame;
+    const sf::IntRect frame = frames[static_cast<std::size_t>(currentFrame)];
+    if (!flipped)
+        return frame;
+    // Start at the right edge and run leftwards: the texture is read mirrored.
+    const sf::Vector2i position = hitbox::rectPosition(frame);
+    const sf::Vector2i size = hitbox::rectSize(frame);
+    return sf::IntRect({position.x + size.x, position.y}, {-size.x, size.y});
 }
 
 int Animation::getCurrentFrameIndex() const

@@ -2,8 +2,8 @@
 //
 // Each frame is the rectangle of the texture to show (sf::IntRect, in texture pixels).
 // Typical use, as in the course's labs:
-//     walk.addFrame(sf::IntRect(0, 0, 15, 21));
-//     walk.addFrame(sf::IntRect(15, 0, 15, 21));
+//     walk.addFrame(sf::IntRect({0, 0}, {15, 21}));
+//     walk.addFrame(sf::IntRect({15, 0}, {15, 21}));
 //     walk.setFrameSpeed(1.f / 10.f);          // seconds per frame: 10 frames a second
 //     ...every frame:
 //     walk.animate(dt);

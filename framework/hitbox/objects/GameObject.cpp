@@ -54,7 +54,7 @@ void GameObject::setCollider(bool isColliderNow)
 
 void GameObject::setCollisionBox(float left, float top, float width, float height)
 {
-    collisionBox = sf::FloatRect(left, top, width, height);
+    collisionBox = sf::FloatRect({left, top}, {width, height});
 }
 
 void GameObject::setCollisionBox(const sf::FloatRect& box)
@@ -72,7 +72,7 @@ sf::FloatRect GameObject::getLocalCollisionBox() const
     if (collisionBox.isSet)
         return collisionBox;
     const sf::Vector2f origin = getOrigin();
-    return {-origin.x, -origin.y, getSize().x, getSize().y};
+    return sf::FloatRect({-origin.x, -origin.y}, getSize());
 }
 
 // [slide:collision-box-world]
@@ -80,10 +80,10 @@ sf::FloatRect GameObject::getCollisionBox() const
 {
     // The box is measured from the origin point; the shape's own coordinates start at its
     // top-left corner, so shift by the origin before applying the object's transform.
-    sf::FloatRect box = hitbox::toSfml(hitbox::normalised(hitbox::toBox(getLocalCollisionBox())));
+    hitbox::Box box = hitbox::normalised(hitbox::toBox(getLocalCollisionBox()));
     box.left += getOrigin().x;
     box.top += getOrigin().y;
-    return getTransform().transformRect(box);
+    return getTransform().transformRect(hitbox::toSfml(box));
 }
 // [/slide]
 

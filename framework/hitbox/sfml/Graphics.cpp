@@ -30,6 +30,11 @@ bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height)
     return canvas.resize({width, height});
 }
 
+sf::Image makeImage(unsigned width, unsigned height, const std::uint8_t* pixels)
+{
+    return sf::Image({width, height}, pixels);
+}
+
 sf::Image captureWindow(const sf::RenderWindow& window)
 {
     sf::Texture capture(window.getSize());
@@ -57,6 +62,16 @@ sf::Vector2f rectSize(const sf::FloatRect& rect)
     return rect.size;
 }
 
+sf::Vector2i rectPosition(const sf::IntRect& rect)
+{
+    return rect.position;
+}
+
+sf::Vector2i rectSize(const sf::IntRect& rect)
+{
+    return rect.size;
+}
+
 #else
 
 sf::Text makeText(const sf::Font& font, const sf::String& string, unsigned characterSize)
@@ -77,6 +92,13 @@ sf::VideoMode videoMode(unsigned width, unsigned height)
 bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height)
 {
     return canvas.create(width, height);
+}
+
+sf::Image makeImage(unsigned width, unsigned height, const std::uint8_t* pixels)
+{
+    sf::Image image;
+    image.create(width, height, pixels);
+    return image;
 }
 
 sf::Image captureWindow(const sf::RenderWindow& window)
@@ -104,6 +126,16 @@ sf::Vector2f rectPosition(const sf::FloatRect& rect)
 }
 
 sf::Vector2f rectSize(const sf::FloatRect& rect)
+{
+    return {rect.width, rect.height};
+}
+
+sf::Vector2i rectPosition(const sf::IntRect& rect)
+{
+    return {rect.left, rect.top};
+}
+
+sf::Vector2i rectSize(const sf::IntRect& rect)
 {
     return {rect.width, rect.height};
 }

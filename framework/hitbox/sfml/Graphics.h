@@ -10,6 +10,7 @@
 #include <SFML/Graphics/Transformable.hpp>
 #include <SFML/Window/VideoMode.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace sf
@@ -35,6 +36,9 @@ sf::VideoMode videoMode(unsigned width, unsigned height);
 // Makes `canvas` `width` x `height` pixels; false when the graphics driver cannot.
 bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height);
 
+// A `width` x `height` image from its pixels: red, green, blue and alpha bytes, row by row.
+sf::Image makeImage(unsigned width, unsigned height, const std::uint8_t* pixels);
+
 // What `window` shows now, as an image (for screenshots).
 sf::Image captureWindow(const sf::RenderWindow& window);
 
@@ -45,5 +49,7 @@ float getRotationDegrees(const sf::Transformable& shape);
 // A rectangle's corner and size (SFML 3: position/size, SFML 2: left/top/width/height).
 sf::Vector2f rectPosition(const sf::FloatRect& rect);
 sf::Vector2f rectSize(const sf::FloatRect& rect);
+sf::Vector2i rectPosition(const sf::IntRect& rect);
+sf::Vector2i rectSize(const sf::IntRect& rect);
 
 } // namespace hitbox

@@ -4,8 +4,8 @@
 
 #include "hitbox/objects/Collision.h"
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/sfml/Graphics.h"
 
-#include <SFML/Config.hpp>
 #include <SFML/Graphics/Rect.hpp>
 #include <gtest/gtest.h>
 
@@ -23,31 +23,20 @@ const float notANumber = std::numeric_limits<float>::quiet_NaN();
 // Random cases per check: enough to meet every rule many times, fast in a debug build.
 constexpr int randomCases = 2000;
 
-// SFML 2 and SFML 3 spell rotations and rectangles differently; the pack reads both here.
+// SFML 2 and SFML 3 spell rotations and rectangles differently: the framework's helpers
+// (hitbox/sfml/) read both.
 void turn(GameObject& object, float degrees)
 {
-#if SFML_VERSION_MAJOR >= 3
-    object.setRotation(sf::degrees(degrees));
-#else
-    object.setRotation(degrees);
-#endif
+    hitbox::setRotationDegrees(object, degrees);
 }
 float degreesOf(const GameObject& object)
 {
-#if SFML_VERSION_MAJOR >= 3
-    return object.getRotation().asDegrees();
-#else
-    return object.getRotation();
-#endif
+    return hitbox::getRotationDegrees(object);
 }
-Sides sidesOf(const sf::FloatRect& box)
+Sides sidesOf(const sf::FloatRect& rect)
 {
-#if SFML_VERSION_MAJOR >= 3
-    return {box.position.x, box.position.y, box.position.x + box.size.x,
-            box.position.y + box.size.y};
-#else
+    const hitbox::Box box = hitbox::toBox(rect);
     return {box.left, box.top, box.left + box.width, box.top + box.height};
-#endif
 }
 
 std::string text(sf::Vector2f vector)

@@ -65,7 +65,7 @@ struct Player
 // A point inside box `index`, clear of every box drawn after it (which would cover it).
 sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
 {
-    const sf::FloatRect box = level.getBox(index).getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(level.getBox(index).getCollisionBox());
     for (float fy = 0.1f; fy < 1.f; fy += 0.1f)
         for (float fx = 0.1f; fx < 1.f; fx += 0.1f)
         {
@@ -74,15 +74,16 @@ sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
             for (int later = index + 1; later < level.getBoxCount(); ++later)
             {
                 // A few pixels clear of the covering box, so rounding cannot land on it.
-                sf::FloatRect near = level.getBox(later).getCollisionBox();
-                near = {near.left - 4.f, near.top - 4.f, near.width + 8.f, near.height + 8.f};
+                const hitbox::Box box = hitbox::toBox(level.getBox(later).getCollisionBox());
+                const sf::FloatRect near({box.left - 4.f, box.top - 4.f},
+                                         {box.width + 8.f, box.height + 8.f});
                 covered = covered || near.contains(point);
             }
             if (!covered)
                 return point;
         }
     ADD_FAILURE() << "box " << index << " is covered completely";
-    return labtesting::centerOf(box);
+    return hitbox::toSfml(hitbox::centerOf(box));
 }
 
 // Where the mouse is in world coordinates when it is at `pixel` in a window of
@@ -90,9 +91,9 @@ sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)
 // the letterboxed view (hitbox/app/App.h), worked out here without opening a window.
 sf::Vector2f pixelToWorld(sf::Vector2i pixel, sf::Vector2u windowSize, sf::Vector2f world)
 {
-    sf::View view(sf::FloatRect(0.f, 0.f, world.x, world.y));
+    sf::View view(sf::FloatRect({0.f, 0.f}, world));
     view.setViewport(hitbox::letterboxViewport(windowSize, world));
-    const sf::FloatRect viewport = view.getViewport();
+    const hitbox::Box viewport = hitbox::toBox(view.getViewport());
     const sf::Vector2f size(windowSize);
     const sf::Vector2f normalized{
         -1.f + 2.f * (pixel.x - viewport.left * size.x) / (viewport.width * size.x),
@@ -103,7 +104,7 @@ sf::Vector2f pixelToWorld(sf::Vector2i pixel, sf::Vector2u windowSize, sf::Vecto
 // The pixel of a window of `windowSize` where world point `point` is drawn.
 sf::Vector2i worldToPixel(sf::Vector2f point, sf::Vector2u windowSize, sf::Vector2f world)
 {
-    const sf::FloatRect viewport = hitbox::letterboxViewport(windowSize, world);
+    const hitbox::Box viewport = hitbox::toBox(hitbox::letterboxViewport(windowSize, world));
     const sf::Vector2f size(windowSize);
     return {static_cast<int>(viewport.left * size.x + point.x / world.x * viewport.width * size.x),
             static_cast<int>(viewport.top * size.y + point.y / world.y * viewport.height * size.y)};
@@ -152,12 +153,12 @@ TEST(Task1FindTheBoxUnderTheMouse, NothingIsHoveredOverEmptySpace)
 TEST(Task1FindTheBoxUnderTheMouse, JustInsideTheCornerIsHoveredJustOutsideIsNot)
 {
     Player player;
-    const sf::FloatRect box = player.level.getBox(0).getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(player.level.getBox(0).getCollisionBox());
     player.moveMouseTo({box.left + 1.f, box.top + 1.f});
     EXPECT_EQ(player.level.getHoveredBox(), 0);
     player.moveMouseTo({box.left - 1.f, box.top + 1.f});
     EXPECT_EQ(player.level.getHoveredBox(), PointInBoxLevel::noBox);
-    player.moveMouseTo({labtesting::rightOf(box) + 1.f, labtesting::bottomOf(box) - 1.f});
+    player.moveMouseTo({hitbox::rightOf(box) + 1.f, hitbox::bottomOf(box) - 1.f});
     EXPECT_NE(player.level.getHoveredBox(), 0);
 }
 
@@ -168,14 +169,18 @@ TEST(Task1FindTheBoxUnderTheMouse, WhereBoxesOverlapTheOneDrawnOnTopIsHovered)
     for (int first = 0; first < player.level.getBoxCount(); ++first)
         for (int second = first + 1; second < player.level.getBoxCount(); ++second)
         {
-            sf::FloatRect overlap;
-            if (player.level.getBox(first).getCollisionBox().intersects(
-                    player.level.getBox(second).getCollisionBox(), overlap))
+            const hitbox::Box a = hitbox::toBox(player.level.getBox(first).getCollisionBox());
+            const hitbox::Box b = hitbox::toBox(player.level.getBox(second).getCollisionBox());
+            const float left = std::max(a.left, b.left);
+            const float top = std::max(a.top, b.top);
+            const float right = std::min(hitbox::rightOf(a), hitbox::rightOf(b));
+            const float bottom = std::min(hitbox::bottomOf(a), hitbox::bottomOf(b));
+            if (left < right && top < bottom)
             {
-                player.moveMouseTo(labtesting::centerOf(overlap));
+                player.moveMouseTo({(left + right) / 2.f, (top + bottom) / 2.f});
                 EXPECT_GE(player.level.getHoveredBox(), second)
                     << "boxes " << first << " and " << second << " overlap at "
-                    << labtesting::text(labtesting::centerOf(overlap));
+                    << labtesting::text({(left + right) / 2.f, (top + bottom) / 2.f});
                 return;
             }
         }

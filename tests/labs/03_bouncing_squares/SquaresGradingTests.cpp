@@ -52,7 +52,7 @@ SquaresLevel twoSquaresFlyingAtEachOther()
 }
 
 // How far two boxes overlap along the axis where they overlap least (0 if they do not).
-float overlapOf(const sf::FloatRect& a, const sf::FloatRect& b)
+float overlapOf(const hitbox::Box& a, const hitbox::Box& b)
 {
     const float x = std::min(a.left + a.width, b.left + b.width) - std::max(a.left, b.left);
     const float y = std::min(a.top + a.height, b.top + b.height) - std::max(a.top, b.top);
@@ -76,17 +76,18 @@ TEST(Level, StartsWithTwoSquaresFlyingAtEachOther)
 TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsTheCrateNotTheWholePicture)
 {
     const Square square(middle, {}, sf::Color::Red);
-    const sf::FloatRect box = square.getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
     EXPECT_FLOAT_EQ(box.width, crateSize);
     EXPECT_FLOAT_EQ(box.height, crateSize);
-    EXPECT_LT(box.width, square.getGlobalBounds().width) << "smaller than the sprite";
+    EXPECT_LT(box.width, hitbox::toBox(square.getGlobalBounds()).width)
+        << "smaller than the sprite";
 }
 
 TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsCentredOnThePicture)
 {
     const Square square(middle, {}, sf::Color::Red);
     EXPECT_VEC_NEAR(labtesting::centerOf(square.getCollisionBox()), middle, 0.01f);
-    const sf::FloatRect box = square.getCollisionBox();
+    const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
     EXPECT_NEAR(box.left, middle.x - crateSize / 2.f, 0.01f) << "a margin on the left...";
     EXPECT_NEAR(box.top, middle.y - crateSize / 2.f, 0.01f) << "...and on top";
 }
@@ -99,7 +100,7 @@ TEST(Task2BounceTheBoxOffTheWalls, SquareNeverLeavesTheWindow)
     for (int step = 0; step < 20 * 120; ++step)
     {
         hitbox::simulate(level, 1);
-        const sf::FloatRect box = level.getSquare(0).getCollisionBox();
+        const hitbox::Box box = hitbox::toBox(level.getSquare(0).getCollisionBox());
         ASSERT_TRUE(box.left >= -0.01f && box.top >= -0.01f &&
                     box.left + box.width <= world.x + 0.01f &&
                     box.top + box.height <= world.y + 0.01f)
@@ -123,8 +124,9 @@ TEST(Task2BounceTheBoxOffTheWalls, TheCrateTouchesTheWallWhileTheMarginGoesPastI
     {
         hitbox::simulate(level, 1);
         const Square& square = level.getSquare(0);
-        furthestPicture = std::max(furthestPicture, square.getGlobalBounds().left + spriteSize);
-        const sf::FloatRect box = square.getCollisionBox();
+        furthestPicture =
+            std::max(furthestPicture, hitbox::toBox(square.getGlobalBounds()).left + spriteSize);
+        const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
         furthestBox = std::max(furthestBox, box.left + box.width);
     }
     EXPECT_NEAR(furthestBox, world, 0.01f) << "the crate reaches the right edge";
@@ -159,8 +161,8 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, HeadOnSquaresSwapVelocitiesAndNeverOv
     for (int step = 0; step < 4 * 120 && stepsSinceTheyMet < 30; ++step)
     {
         hitbox::simulate(level, 1);
-        const float overlap =
-            overlapOf(level.getSquare(0).getCollisionBox(), level.getSquare(1).getCollisionBox());
+        const float overlap = overlapOf(hitbox::toBox(level.getSquare(0).getCollisionBox()),
+                                        hitbox::toBox(level.getSquare(1).getCollisionBox()));
         worstOverlap = std::max(worstOverlap, overlap);
         const float apart = level.getSquare(1).getPosition().x - level.getSquare(0).getPosition().x;
         if (stepsSinceTheyMet >= 0 || apart < crateSize + 1.f)
@@ -242,13 +244,14 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, ManySquaresStayInsideAndApart)
         hitbox::simulate(level, 1);
         for (int i = 0; i < level.getSquareCount(); ++i)
         {
-            const sf::FloatRect box = level.getSquare(i).getCollisionBox();
+            const hitbox::Box box = hitbox::toBox(level.getSquare(i).getCollisionBox());
             ASSERT_TRUE(box.left >= -crowdTolerance && box.top >= -crowdTolerance &&
                         box.left + box.width <= world.x + crowdTolerance &&
                         box.top + box.height <= world.y + crowdTolerance)
                 << "square " << i << " left the window at step " << step;
             for (int j = i + 1; j < level.getSquareCount(); ++j)
-                ASSERT_LE(overlapOf(box, level.getSquare(j).getCollisionBox()), crowdTolerance)
+                ASSERT_LE(overlapOf(box, hitbox::toBox(level.getSquare(j).getCollisionBox())),
+                          crowdTolerance)
                     << "squares " << i << " and " << j << " at step " << step;
         }
     }

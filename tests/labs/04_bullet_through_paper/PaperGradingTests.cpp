@@ -4,6 +4,7 @@
 #include "hitbox/app/App.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Tunnelling.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <gtest/gtest.h>
 
@@ -68,7 +69,7 @@ TEST(Task2SweptTest, BulletAtAnySpeedStopsExactlyTouchingTheWall)
         const PaperLevel level = shootOnce(speed);
         const Bullet& bullet = *level.getBullet(Lane::Swept);
         EXPECT_TRUE(bullet.hitTheWall()) << "at " << speed << " px/s";
-        const sf::FloatRect stopped = bullet.getCollisionBox();
+        const hitbox::Box stopped = hitbox::toBox(bullet.getCollisionBox());
         EXPECT_NEAR(stopped.left + stopped.width, level.getWall().left, 0.01f) << "at " << speed;
         EXPECT_EQ(level.getScore(Lane::Swept).misses, 0) << "at " << speed << " px/s";
     }
@@ -130,7 +131,8 @@ TEST(Task3TunnelWarning, AgreesWithTheFrameworkForStepsThatReachTheWall)
     level.setAutoFire(false);
     level.fire(600.f);
     const Bullet& bullet = *level.getBullet(Lane::Discrete);
-    const float distance = level.getWall().left - (bullet.getCollisionBox().left + 12.f);
+    const float distance =
+        level.getWall().left - (hitbox::toBox(bullet.getCollisionBox()).left + 12.f);
     for (float extra = 0.5f; extra < 200.f; extra += 0.5f)
     {
         const sf::Vector2f step{distance + extra, 0.f}; // always reaches into the wall

@@ -163,7 +163,7 @@ TEST(Task4SpeedCap, ADiveFromHighUpLandsOnAFloorOneTileThick)
 {
     Game game(platformertest::deepShaft(shaftRows)); // a 4 800 pixel drop
     game.run(0.2f);
-    game.tap(sf::Keyboard::S);
+    game.tap(sf::Keyboard::Key::S);
     game.run(3.f); // at the capped speed the drop takes under 2.2 s
     EXPECT_EQ(game.level.getFallsOutOfWorld(), 0) << "the player went through the floor";
     EXPECT_NEAR(game.feet(), (shaftRows - 1) * TileMap::tileSize, 0.01f);
@@ -196,7 +196,7 @@ TEST(Task4Tunnelling, WithoutTheCapAFastFallGoesThroughTheFloor)
         Game game(platformertest::deepShaft(rows));
         game.level.setSpeedCap(false);
         game.run(0.05f);
-        game.tap(sf::Keyboard::S);
+        game.tap(sf::Keyboard::Key::S);
         game.run(0.5f); // under 3 500 px at 13 500 px/s: 0.26 s
         throughTheFloor += game.level.getFallsOutOfWorld() > 0 ? 1 : 0;
     }
@@ -210,7 +210,7 @@ TEST(Task4SpeculativeContacts, StopAFastFallOnAThinFloorWithoutTheCap)
     game.level.setSpeedCap(false);
     game.level.setSpeculativeContacts(true);
     game.run(0.2f);
-    game.tap(sf::Keyboard::S);
+    game.tap(sf::Keyboard::Key::S);
     game.run(1.f); // 4 800 px at 13 500 px/s: under half a second
     EXPECT_EQ(game.level.getFallsOutOfWorld(), 0);
     EXPECT_NEAR(game.feet(), (shaftRows - 1) * TileMap::tileSize, 0.01f);

@@ -5,8 +5,8 @@
 #include "MyCollision.h"
 
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/sfml/Graphics.h"
 
-#include <SFML/Config.hpp>
 #include <SFML/Graphics/Rect.hpp>
 
 #include <cmath>
@@ -16,11 +16,7 @@ namespace
 {
 Sides sidesOf(const sf::FloatRect& box)
 {
-#if SFML_VERSION_MAJOR >= 3
-    const sf::Vector2f from = box.position, size = box.size;
-#else
-    const sf::Vector2f from(box.left, box.top), size(box.width, box.height);
-#endif
+    const sf::Vector2f from = hitbox::rectPosition(box), size = hitbox::rectSize(box);
     Sides sides{from.x, from.y, from.x + size.x, from.y + size.y};
     if (sides.right < sides.left)
         std::swap(sides.left, sides.right);

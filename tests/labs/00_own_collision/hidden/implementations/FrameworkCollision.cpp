@@ -6,7 +6,6 @@
 #include "hitbox/objects/GameObject.h"
 #include "hitbox/sfml/Conversions.h"
 
-#include <SFML/Config.hpp>
 #include <SFML/Graphics/Rect.hpp>
 
 #include <algorithm>
@@ -15,12 +14,8 @@ namespace
 {
 Sides sidesOf(const sf::FloatRect& box)
 {
-#if SFML_VERSION_MAJOR >= 3
-    const float left = box.position.x, top = box.position.y, width = box.size.x,
-                height = box.size.y;
-#else
-    const float left = box.left, top = box.top, width = box.width, height = box.height;
-#endif
+    const hitbox::Box plain = hitbox::toBox(box);
+    const float left = plain.left, top = plain.top, width = plain.width, height = plain.height;
     return {std::min(left, left + width), std::min(top, top + height), std::max(left, left + width),
             std::max(top, top + height)};
 }
