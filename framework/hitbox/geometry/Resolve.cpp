@@ -77,7 +77,7 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
     MoveResult result{normalised(box), velocity, {}};
     if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return result;
-    Vec2 stepVelocity = velocity;    // used for this step's move (seed 004's slide)
+    Vec2 stepVelocity = velocity;    // used for this step's move
     float stepLeft = 1.f;            // the fraction of the step not yet moved
     std::vector<Candidate> resolved; // for the rounding clean-up at the end
     for (int round = 0; round < maxRounds; ++round)
@@ -95,7 +95,8 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
         if (candidates.empty())
             break;
         // [slide:resolve-time-order]
-        // 2. Nearest first (seed 004): the floor under the box (t = 0) is resolved before
+        // 2. Nearest first (javidx9's sort by time): the floor under the box (t = 0) is resolved
+        // before
         //    the next tile's corner, so the seam between tiles never stops the box. At the
         //    same time, a face touched along its length goes before a corner just touched.
         if (sortByTime)
