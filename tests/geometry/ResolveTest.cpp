@@ -88,6 +88,20 @@ TEST(MoveBoxAndSlide, AnInsideCornerStopsBothWays)
     EXPECT_EQ(result.velocity, hitbox::Vec2(0.f, 0.f));
 }
 
+// Issue 19's example: after sliding down the first solid's left face, the box only touches
+// the second one's right side, so it must go on falling, not stop in mid-air at (10, 10).
+TEST(MoveBoxAndSlide, TheRestOfTheMoveGoesOnFromWhereTheBoxHit)
+{
+    const std::vector<hitbox::Box> solids{{20.f, 10.f, 10.f, 10.f}, {0.f, 20.f, 10.f, 20.f}};
+    const MoveResult result =
+        hitbox::moveBoxAndSlide({0.f, 0.f, 10.f, 10.f}, {50.f, 50.f}, 1.f, solids);
+    EXPECT_EQ(result.box.left, 10.f);
+    EXPECT_NEAR(result.box.top, 50.f, 1e-4f);
+    EXPECT_EQ(result.velocity, hitbox::Vec2(0.f, 50.f));
+    ASSERT_EQ(result.hits.size(), 1u);
+    EXPECT_EQ(result.hits[0].normal, hitbox::Vec2(-1.f, 0.f));
+}
+
 TEST(MoveBoxAndSlide, AOneMillionPixelsPerSecondBoxStopsAtAOnePixelWall)
 {
     const std::vector<hitbox::Box> paper{{500.f, 0.f, 1.f, 200.f}};

@@ -16,7 +16,7 @@ namespace hitbox
 {
 
 // [slide:layer-mask-filter]
-// Game rules before geometry (seed 002: "no alien-alien collisions"). Each object is on some
+// Game rules before geometry (aliens never test against aliens). Each object is on some
 // layers (bits) and has a mask of the layers it wants to hit. Both must agree, so a pickup
 // whose mask leaves out the pickup layer never pairs with another pickup, and a bullet whose
 // mask leaves out its owner's layer never hits its owner.

@@ -1,8 +1,8 @@
 // Broadphase.h - find every pair of boxes that overlap, without testing every pair.
 //
-// Seed 002 counts the cost of the obvious way: n objects need n(n-1)/2 tests, so 100 objects
+// The cost of the obvious way: n objects need n(n-1)/2 tests, so 100 objects
 // need 4,950 and 10,000 need about 50 million. A broadphase is the cheap first step of the
-// plan in seed 003 ("reduce the checks, quick test, thorough test, resolve"): it looks only at
+// plan "reduce the checks, quick test, thorough test, resolve": it looks only at
 // the axis-aligned boxes and hands the pairs it finds to the exact shape tests.
 //
 // Every method answers exactly the same question, so tests compare them with brute force:

@@ -1,4 +1,4 @@
-// BruteForceBroadphase.h - test every pair: the n(n-1)/2 table from seed 002.
+// BruteForceBroadphase.h - test every pair: all n(n-1)/2 of them.
 //
 // Always right and simple enough to trust, so the tests compare every other method with it.
 // Fine for a few hundred objects; at 10,000 it runs 50 million tests a frame.

@@ -1,5 +1,5 @@
-// GridBroadphase.h - a flat uniform grid (seed 002's spatial partitioning: "only test
-// objects in the same partition").
+// GridBroadphase.h - a flat uniform grid (Ericson, Real-Time Collision Detection, 7.1):
+// only boxes in the same cell are tested.
 //
 // Each frame: work out which cells each box covers, list every cell's boxes (a counting sort,
 // so each list is in item order and needs no allocation once warmed up), then test only the

@@ -1,6 +1,6 @@
 // QuadtreeBroadphase.h - split the world into four, again and again where it is crowded
-// (seed 003: "a quadtree divides the map into regions so an object is only checked
-// against objects in its own region").
+// (Ericson, Real-Time Collision Detection, 7.3.1): a box is only checked against the
+// boxes in its own region.
 //
 // Rebuilt every frame. A box goes down to the quarter that holds its centre, as long as it
 // fits inside that quarter grown by half its size on every side (a "loose" quadtree). Without

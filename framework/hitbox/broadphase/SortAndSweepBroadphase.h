@@ -1,5 +1,5 @@
-// SortAndSweepBroadphase.h - sort the boxes by their left edge, then sweep (seed 002's
-// "sort objects according to their position; only compare objects close in the table").
+// SortAndSweepBroadphase.h - sort the boxes by their left edge, then sweep (Ericson,
+// Real-Time Collision Detection, 7.5: only boxes whose spans meet along x can touch).
 //
 // After sorting by left edge, box i can only overlap the boxes that come after it while their
 // left edge is still left of i's right edge: the sweep stops there. Objects move a little

@@ -123,7 +123,8 @@ struct SegmentTimes
 SegmentTimes closestTimes(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2)
 {
     // Write the points as start1 + s * d1 and start2 + t * d2 and minimise the distance over
-    // s and t in [0, 1] (the usual derivation: set both derivatives to zero, then clamp).
+    // s and t in [0, 1]: set both derivatives to zero, then clamp. The letters a, b, c, e, f
+    // and r are those of Ericson, Real-Time Collision Detection, 5.1.9 (ClosestPtSegmentSegment).
     const Vec2 d1 = end1 - start1;
     const Vec2 d2 = end2 - start2;
     const Vec2 r = start1 - start2;

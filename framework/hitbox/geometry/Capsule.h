@@ -1,4 +1,5 @@
-// Capsule.h - capsules: a segment with a radius (a box with two round ends, seed 003).
+// Capsule.h - capsules: a segment with a radius (Ericson, Real-Time Collision
+// Detection, 4.5: sphere-swept volumes).
 //
 // A capsule is every point within `radius` of the segment from `start` to `end`: a good
 // shape for a character or a sword swing. Every capsule test comes down to one question:

@@ -102,7 +102,7 @@ struct Search
     Vec2 gapAxis;             // unit, from B's side towards A's side
     float leastOverlap = 0.f; // pixels, while not separated
     Vec2 overlapAxis;         // unit, out of B towards A: the contact normal
-    bool overlapAxisFromB = false;
+    bool overlapAxisIsAnEdgeOfB = false;
 };
 
 void tryEdgesOf(const std::vector<Vec2>& owner, bool ownerIsB, const std::vector<Vec2>& a,
@@ -134,7 +134,7 @@ void tryEdgesOf(const std::vector<Vec2>& owner, bool ownerIsB, const std::vector
             // to the axis tried first.
             search.leastOverlap = result.overlap;
             search.overlapAxis = result.towardsA;
-            search.overlapAxisFromB = ownerIsB;
+            search.overlapAxisIsAnEdgeOfB = ownerIsB;
         }
     }
 }
@@ -166,8 +166,8 @@ Vec2 cosSinOfDegrees(float degrees)
     return {static_cast<float>(std::cos(radians)), static_cast<float>(std::sin(radians))};
 }
 
-// Try the axis at right angles to every edge of both shapes (seed 002: "an axis exists
-// perpendicular to each edge"). One axis where the shadows do not overlap is enough.
+// Try the axis at right angles to every edge of both shapes (Ericson, Real-Time
+// Collision Detection, 5.2.1). One axis where the shadows do not overlap is enough.
 Search searchAxes(const std::vector<Vec2>& a, const std::vector<Vec2>& b)
 {
     Search search;
@@ -245,7 +245,7 @@ Contact polygonVsPolygon(const Polygon& first, const Polygon& second)
     contact.depth = search.leastOverlap;
     // The contact point: when the face hit is B's, A's deepest point moved onto that face;
     // when it is A's, B's deepest point (which already lies on B).
-    if (search.overlapAxisFromB)
+    if (search.overlapAxisIsAnEdgeOfB)
         contact.point = supportPoint(a, -contact.normal) + contact.normal * contact.depth;
     else
         contact.point = supportPoint(b, contact.normal);

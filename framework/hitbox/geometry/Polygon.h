@@ -1,8 +1,8 @@
 // Polygon.h - rotated boxes and convex polygons, tested by the separating axis theorem.
 //
 // An axis-aligned test (Overlap.h) is only right while nothing rotates. For a rotated box,
-// or any convex polygon, the separating axis theorem (seed 002's "axes of separation", seed
-// 003's SAT) decides: two convex shapes are apart exactly when some line separates them, and
+// or any convex polygon, the separating axis theorem (Ericson, Real-Time Collision
+// Detection, 5.2.1) decides: two convex shapes are apart exactly when some line separates them, and
 // it is enough to try the lines at right angles to each edge. Project both shapes onto each
 // such axis; if the two shadows do not overlap on one axis, the shapes are apart. If they
 // overlap on every axis, the axis with the smallest overlap gives the minimum translation.

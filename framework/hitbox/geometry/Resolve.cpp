@@ -77,7 +77,8 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
     MoveResult result{normalised(box), velocity, {}};
     if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return result;
-    Vec2 stepVelocity = velocity;    // used for this step's move (seed 004's slide)
+    Vec2 stepVelocity = velocity;    // used for this step's move
+    float stepLeft = 1.f;            // the fraction of the step not yet moved
     std::vector<Candidate> resolved; // for the rounding clean-up at the end
     for (int round = 0; round < maxRounds; ++round)
     {
@@ -85,16 +86,17 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
         std::vector<Candidate> candidates;
         for (std::size_t i = 0; i < solids.size(); ++i)
         {
-            const Hit hit = sweepBoxVsBox(result.box, stepVelocity * dt, solids[i]);
+            const Vec2 move = stepVelocity * (dt * stepLeft);
+            const Hit hit = sweepBoxVsBox(result.box, move, solids[i]);
             if (hit.hit)
                 candidates.push_back(
-                    {i, hit.time,
-                     sharedLengthOf(hit, result.box, stepVelocity * dt, normalised(solids[i]))});
+                    {i, hit.time, sharedLengthOf(hit, result.box, move, normalised(solids[i]))});
         }
         if (candidates.empty())
             break;
         // [slide:resolve-time-order]
-        // 2. Nearest first (seed 004): the floor under the box (t = 0) is resolved before
+        // 2. Nearest first (javidx9's sort by time): the floor under the box (t = 0) is resolved
+        // before
         //    the next tile's corner, so the seam between tiles never stops the box. At the
         //    same time, a face touched along its length goes before a corner just touched.
         if (sortByTime)
@@ -103,23 +105,27 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
                                  return a.time < b.time ||
                                         (a.time == b.time && a.sharedLength > b.sharedLength);
                              });
-        // 3. Resolve in that order, sweeping again with the velocity as changed so far.
+        // 3. Resolve in that order. Each hit moves the box to where it touches that solid
+        //    and spends that part of the step; the rest of the step goes on from there with
+        //    the slid velocity (sweeping the rest from the start again would cut across
+        //    corners the box never reaches).
         for (const Candidate& candidate : candidates)
         {
-            const Hit hit = sweepBoxVsBox(result.box, stepVelocity * dt, solids[candidate.solid]);
+            const Box solid = normalised(solids[candidate.solid]);
+            const Vec2 move = stepVelocity * (dt * stepLeft);
+            const Hit hit = sweepBoxVsBox(result.box, move, solid);
             if (!hit.hit)
                 continue; // an earlier slide already took this one away
-            if (hit.startedInside)
-                result.box =
-                    placedAgainst(result.box, normalised(solids[candidate.solid]), hit.normal);
-            stepVelocity = slideVelocity(stepVelocity, hit);
+            result.box = placedAgainst(movedBy(result.box, move * hit.time), solid, hit.normal);
+            stepLeft *= 1.f - hit.time;
+            stepVelocity = withoutPartInto(stepVelocity, hit.normal);
             result.velocity = withoutPartInto(result.velocity, hit.normal);
             result.hits.push_back(hit);
             resolved.push_back(candidate);
         }
         // [/slide]
     }
-    result.box = movedBy(result.box, stepVelocity * dt);
+    result.box = movedBy(result.box, stepVelocity * (dt * stepLeft));
     // Float rounding can leave the box a hair inside a surface it slid to; put it exactly
     // against that surface, so that touching stays touching (the edge rule).
     for (std::size_t i = 0; i < resolved.size(); ++i)

@@ -1,13 +1,15 @@
 // Resolve.h - move a box through a world of solid boxes for one step, sliding along them.
 //
 // One moving box, many still ones (tiles, walls, platforms). Two ways to do it:
-//   - moveBoxAndSlide (seed 004): sweep the whole move against every solid, then resolve
-//     the hits IN ORDER OF TIME (nearest first), re-sweeping each with the velocity as
-//     changed so far. Resolving in the order the solids happen to be stored instead makes a
-//     box sliding along a floor made of separate tiles catch on the seams between tiles:
-//     the next tile's corner is "hit" from the side before the floor under the box has taken
-//     the downward speed away. Pass sortByTime = false to see that snag.
-//   - moveBoxPerAxis (seed 003): move along x, push out of anything overlapped along x; then
+//   - moveBoxAndSlide (javidx9, "Arbitrary Rectangle Collision Detection & Resolution"):
+//     sweep the whole move against every solid, then resolve the hits IN ORDER OF TIME
+//     (nearest first); each hit moves the box to where it touches and the rest of the move
+//     goes on from there, re-swept with the velocity as changed so far. Resolving in the order the
+//     solids happen to be stored instead makes a box sliding along a floor made of separate tiles
+//     catch on the seams between tiles: the next tile's corner is "hit" from the side before the
+//     floor under the box has taken the downward speed away. Pass sortByTime = false to see that
+//     snag.
+//   - moveBoxPerAxis: move along x, push out of anything overlapped along x; then
 //     the same along y. Simple and seam-free, but it is a discrete test: a step longer than
 //     a wall is thick can pass through it (see Tunnelling.h).
 //
@@ -40,7 +42,7 @@ struct MoveResult
 MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids,
                            bool sortByTime = true);
 
-// Seed 003's per-axis move: x first, then y; after each, push out of every solid overlapped,
+// The per-axis move: x first, then y; after each, push out of every solid overlapped,
 // against the direction of that axis's motion, and zero that axis's velocity. Each Hit has
 // time = the fraction of that axis's move kept, the face normal, the depth pushed out, and
 // the middle of the touching edge as point. A solid overlapped while not moving on that axis

@@ -14,7 +14,7 @@ Vec2 slideVelocity(Vec2 velocity, const Hit& hit)
         return velocity;
     // How fast the mover goes INTO the surface (0 when moving away or along it).
     const float intoSurface = std::fmax(-dot(velocity, hit.normal), 0.f);
-    // Cancel that part for the rest of the step after the impact (seed 004's (1 - t)).
+    // Cancel that part for the rest of the step after the impact (javidx9's (1 - t)).
     // Moving by the result for the whole step ends exactly touching the surface.
     return velocity + hit.normal * intoSurface * (1.f - hit.time);
 }

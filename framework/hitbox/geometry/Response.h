@@ -21,7 +21,7 @@
 namespace hitbox
 {
 
-// Seed 004's slide: the velocity for THIS step, so that moving by velocity * dt stops the
+// javidx9's slide: the velocity for THIS step, so that moving by velocity * dt stops the
 // mover at the surface (time t) and keeps the rest of its motion along the surface:
 //   v + n * |v . n| * (1 - t)
 // Only the part of the velocity going INTO the surface is taken away, and only for the part
@@ -39,7 +39,7 @@ Vec2 pushOutOffset(const Contact& contact);
 
 // Two bodies that bump: new velocities after an elastic collision along `normal` (out of the
 // second towards the first, as a Contact's normal with A = first). Momentum is kept and, with
-// restitution 1, so is kinetic energy (seed 003's elastic response). Only the speeds along
+// restitution 1, so is kinetic energy. Only the speeds along
 // the normal change. Masses in any unit (only their ratio matters): an infinite mass is an
 // immovable wall; a mass <= 0, NaN or too small to invert in float (below about 1e-38), or
 // bodies already moving apart, change nothing.

@@ -66,7 +66,7 @@ struct Contact
 // The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
 // when rounding would make from + size miss `to`. Without it a flipped box's edge could move
 // by a rounding error, and boxes that only touch would overlap.
-inline float sizeReaching(float from, float to)
+inline float exactSizeBetween(float from, float to)
 {
     float size = to - from;
     for (int nudge = 0; nudge < 4 && from + size != to; ++nudge)
@@ -83,12 +83,12 @@ inline Box normalised(const Box& box)
     if (box.width < 0.f)
     {
         result.left = box.left + box.width;
-        result.width = sizeReaching(result.left, box.left);
+        result.width = exactSizeBetween(result.left, box.left);
     }
     if (box.height < 0.f)
     {
         result.top = box.top + box.height;
-        result.height = sizeReaching(result.top, box.top);
+        result.height = exactSizeBetween(result.top, box.top);
     }
     return result;
 }

@@ -23,7 +23,7 @@ struct TimeSpan
 // [slide:slab]
 // One slab of the slab method. The mover's interval [moverMin, moverMax] moves by `move`
 // over the step; the target's interval stays put. Growing the target by the mover's size
-// (the Minkowski sum of seed 004) and casting the mover's centre gives the same times; we
+// (the Minkowski sum, as javidx9 does) and casting the mover's centre gives the same times; we
 // subtract the original edges instead, so that boxes that touch give exactly 0 and no
 // rounding from halving a width can turn "touching" into "overlapping".
 TimeSpan overlapTimes(float moverMin, float moverMax, float targetMin, float targetMax, float move)
@@ -31,7 +31,8 @@ TimeSpan overlapTimes(float moverMin, float moverMax, float targetMin, float tar
     if (move == 0.f)
     {
         // Not moving on this axis: it overlaps for the whole step or never. Dividing would
-        // give 0 / 0 = NaN when an edge lies exactly on the line (seed 004's bug).
+        // give 0 / 0 = NaN when an edge lies exactly on the line (the divide-by-zero case in
+        // javidx9's video).
         const bool overlapping = moverMin < targetMax && targetMin < moverMax;
         return overlapping ? TimeSpan{-infinity, infinity} : TimeSpan{infinity, -infinity};
     }

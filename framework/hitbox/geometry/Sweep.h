@@ -1,7 +1,7 @@
 // Sweep.h - where along a move does something first hit a box? Rays, segments, moving boxes.
 //
 // A discrete test (Overlap.h) only looks at where things ARE at the end of a step, so a fast
-// object can jump over a thin wall between two frames ("bullet through paper", seed 000).
+// object can jump over a thin wall between two frames ("bullet through paper").
 // A sweep looks at the whole straight-line move of one step and answers WHEN, as a fraction
 // `time` of the move, the mover first touches the target.
 //
@@ -26,7 +26,7 @@
 //   - Zero displacement / zero-length segment: no move, so it is the discrete test:
 //     startedInside when already overlapping, otherwise no hit.
 //   - Moving parallel to an axis: that axis never changes, no division by zero happens
-//     (seed 004 divides 0 by 0 here and gets NaN).
+//     (the divide-by-zero case in javidx9's video).
 //   - NaN or infinite input: no hit.
 //   - Zero-size boxes follow Overlap.h: a point or line collides when strictly inside; two
 //     things with no area (a segment against a zero-size box) never hit.
@@ -56,12 +56,12 @@ struct Hit
 // time 0 with `startedInside`, and the contact's push-out as normal, depth and point.
 Hit startedInsideHit(const Contact& overlap);
 
-// The slab method (seed 004): the segment from `start` to `end` against a box. A segment is
+// The slab method (Ericson, 5.3.3): the segment from `start` to `end` against a box. A segment is
 // a point moving from start to end, so it hits when that point passes strictly inside the
 // box. `point` is start + time * (end - start).
 Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box);
 
-// A box moving by `displacement` against a box that stays still. The idea (seed 004): grow
+// A box moving by `displacement` against a box that stays still. The idea (Ericson, 5.5.8): grow
 // the target by the mover's size (the Minkowski sum) and cast the mover's centre through it
 // with the slab method. `point` is the middle of the touching edge (or the corner).
 Hit sweepBoxVsBox(const Box& mover, Vec2 displacement, const Box& target);

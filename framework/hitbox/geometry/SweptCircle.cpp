@@ -21,7 +21,7 @@ bool isUsable(const Circle& circle)
 
 // [slide:swept-circle-toi]
 // When does a point moving from `start` by `move` first get strictly inside the circle
-// (centre, radius)? |start + t * move - centre| = radius is a quadratic in t (seed 003):
+// (centre, radius)? |start + t * move - centre| = radius is a quadratic in t (Ericson 5.3.2):
 //   a t^2 + 2 b t + c = 0,  a = move.move,  b = f.move,  c = f.f - radius^2,  f = start - centre.
 // Returns a time in [0, 1), or a negative number for "no hit". The caller has already
 // handled a start strictly inside (c < 0).

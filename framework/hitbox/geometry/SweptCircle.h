@@ -2,9 +2,10 @@
 //
 // The circle versions of Sweep.h. A moving circle touches a still circle when the distance
 // between the centres equals the sum of the radii; writing the mover's centre as
-// start + t * displacement turns that into a quadratic in t (seed 003), and the smaller root
-// is the time of impact. A circle against a box is a point against the box grown by the
-// radius on every side: the "rounded box" (two slabs plus a circle at each corner).
+// start + t * displacement turns that into a quadratic in t (Ericson, Real-Time Collision
+// Detection, 5.5.5), and the smaller root is the time of impact. A circle against a box is a point
+// against the box grown by the radius on every side: the "rounded box" (two slabs plus a circle at
+// each corner).
 //
 // Units: pixels. `displacement` is the whole move for this step (velocity * dt): time 0 is
 // the start of the step, time 1 its end. The Hit type and its normal convention are those of
@@ -38,10 +39,10 @@ namespace hitbox
 Hit segmentVsCircle(Vec2 start, Vec2 end, const Circle& circle);
 
 // A circle moving by `displacement` against a circle that stays still: the time of impact
-// from the quadratic of seed 003. `point` is where the two rims touch at that time.
+// from that quadratic. `point` is where the two rims touch at that time.
 Hit sweepCircleVsCircle(const Circle& mover, Vec2 displacement, const Circle& target);
 
-// Both circles move during the step. Only the relative move matters (seed 003's B = vp - vq),
+// Both circles move during the step. Only the relative move matters (Ericson, 5.5.5),
 // so this sweeps the mover by (moverDisplacement - targetDisplacement) against a still
 // target. `point` is where they touch in the world at that time.
 Hit sweepCircleVsMovingCircle(const Circle& mover, Vec2 moverDisplacement, const Circle& target,

@@ -99,8 +99,9 @@ Vec2 speculativeVelocity(const Box& mover, Vec2 velocity, float dt, const std::v
 {
     if (!isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return velocity;
-    // Seed 000: rather than resolve an overlap afterwards, shorten the move so it never
-    // happens. The earliest time of impact over all solids decides how much of it to keep.
+    // Speculative contacts (Katy Coe, "2D Platform Games Part 1"): rather than resolve an overlap
+    // afterwards, shorten the move so it never happens. The earliest time of impact over all solids
+    // decides how much of it to keep.
     float earliest = 1.f;
     for (const Box& solid : solids)
     {

@@ -2,10 +2,12 @@
 //
 // A discrete test (Overlap.h) looks at where things are at the end of each step. If a step
 // carries the mover from one side of a target to the other, neither look sees an overlap
-// and the mover passes straight through: "bullet through paper" (seed 000). These functions
+// and the mover passes straight through: "bullet through paper" (Katy Coe,
+// "2D Platform Games Part 1"). These functions
 // say when that can happen, give the swept bounds a broad phase uses to find what a move
-// could touch (seeds 000 and 004), and clamp a move so it stops at the first surface
-// (seed 000's speculative contacts).
+// could touch (javidx9, "Arbitrary Rectangle Collision Detection & Resolution"), and clamp a move
+// so it stops at the first surface (speculative contacts, as in Katy Coe's "2D Platform Games Part
+// 1").
 //
 // Units: pixels, seconds, pixels per second; `displacement` is the whole move of one step.
 // Edge rules: NaN or infinite input never tunnels (false) and never changes a velocity;
@@ -43,7 +45,7 @@ bool discreteTestMisses(const Circle& mover, Vec2 displacement, const Circle& ta
 Box sweptBounds(const Box& box, Vec2 displacement);
 Box sweptBounds(const Circle& circle, Vec2 displacement);
 
-// Speculative contacts (seed 000), simplified: the velocity scaled down so that moving by
+// Speculative contacts, simplified: the velocity scaled down so that moving by
 // velocity * dt ends touching the first solid the box would hit, never inside it (where
 // rounding would put it a hair inside, the move is shortened by a float step or two; the box
 // is then apart by at most that much). The whole velocity is scaled, so there is no slide;
