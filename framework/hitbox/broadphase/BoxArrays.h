@@ -38,12 +38,11 @@ struct BoxArrays
     // False for the NaN / infinite boxes made empty by load().
     bool isUsable(std::size_t i) const { return minX[i] <= maxX[i] && minY[i] <= maxY[i]; }
 
-    // Strict "<" on both axes: touching boxes do not overlap (the framework's edge rule).
-    // Written with `&` instead of `&&` so there is no branch for the CPU to mispredict.
+    // The edge rule (spansOverlap, Shapes.h) on both axes; `&`: no branch to mispredict.
     bool overlap(std::size_t a, std::size_t b) const
     {
-        return (minX[a] < maxX[b]) & (minX[b] < maxX[a]) & (minY[a] < maxY[b]) &
-               (minY[b] < maxY[a]);
+        return spansOverlap(minX[a], maxX[a], minX[b], maxX[b]) &
+               spansOverlap(minY[a], maxY[a], minY[b], maxY[b]);
     }
     bool allowed(std::size_t a, std::size_t b) const
     {

@@ -220,8 +220,8 @@ void GridBroadphase::testCells()
                 // column and first row) reports them, so each pair is reported once.
                 const bool firstSharedCell =
                     ((a.itemAndFirstCell | b.itemAndFirstCell) & ~kItemBits) == ~kItemBits;
-                const bool overlap =
-                    (a.minX < b.maxX) & (b.minX < a.maxX) & (a.minY < b.maxY) & (b.minY < a.maxY);
+                const bool overlap = spansOverlap(a.minX, a.maxX, b.minX, b.maxX) &
+                                     spansOverlap(a.minY, a.maxY, b.minY, b.maxY);
                 // Branch-free: always write the pair, keep it (move on) only on a hit.
                 cellPairs[found] = {first, b.itemAndFirstCell & kItemBits};
                 found += firstSharedCell & overlap;

@@ -44,8 +44,9 @@ bool pointInBox(Vec2 point, const Box& box)
     if (!isFinite(point) || !isFinite(box))
         return false;
     const Box b = normalised(box);
-    // Strict: a point on an edge is outside (the edge rule in Overlap.h).
-    return b.left < point.x && point.x < rightOf(b) && b.top < point.y && point.y < bottomOf(b);
+    // A point is a span of length 0: on an edge it only touches, so it is outside.
+    return spansOverlap(point.x, point.x, b.left, rightOf(b)) &&
+           spansOverlap(point.y, point.y, b.top, bottomOf(b));
 }
 // [/slide]
 
@@ -62,8 +63,9 @@ bool boxVsBox(const Box& first, const Box& second)
     const Box a = normalised(first);
     const Box b = normalised(second);
     // Two boxes overlap when their x ranges overlap AND their y ranges overlap.
-    // Strict "<": boxes that only touch do not collide.
-    return a.left < rightOf(b) && b.left < rightOf(a) && a.top < bottomOf(b) && b.top < bottomOf(a);
+    // spansOverlap carries the edge rule: boxes that only touch do not collide.
+    return spansOverlap(a.left, rightOf(a), b.left, rightOf(b)) &&
+           spansOverlap(a.top, bottomOf(a), b.top, bottomOf(b));
 }
 // [/slide]
 

@@ -33,8 +33,9 @@ struct MoveResult
     std::vector<Hit> hits; // the hits resolved, in the order they were resolved
 };
 
-// Sweeps `box` by velocity * dt against every solid and slides (Response.h's slideVelocity)
-// off each hit in time order; hits at the same time go in order of how much face they touch
+// Sweeps `box` by velocity * dt against every solid and slides off each hit in time order
+// (the box moves to the hit, loses its speed into that face, and goes on for the rest of the
+// step); hits at the same time go in order of how much face they touch
 // (so a box exactly over a seam rests on the tile under it before the next tile's corner). A box
 // that starts overlapping a solid is first pushed out of it (the push-out of boxVsBoxContact). Up
 // to three rounds, so that a slide that turns into another solid (an inside corner) is caught too.

@@ -62,6 +62,14 @@ struct Contact
     explicit operator bool() const { return hit; }
 };
 
+// THE EDGE RULE, in one place: the spans minA..maxA and minB..maxB overlap only when they
+// share some length; spans that only touch (maxA == minB) do not, and NaN never overlaps.
+// `&` instead of `&&`: no branch for the CPU to mispredict in the broadphases' inner loops.
+inline bool spansOverlap(float minA, float maxA, float minB, float maxB)
+{
+    return (minA < maxB) & (minB < maxA);
+}
+
 // Box helpers.
 // The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
 // when rounding would make from + size miss `to`. Without it a flipped box's edge could move

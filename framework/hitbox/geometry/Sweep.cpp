@@ -33,7 +33,7 @@ TimeSpan overlapTimes(float moverMin, float moverMax, float targetMin, float tar
         // Not moving on this axis: it overlaps for the whole step or never. Dividing would
         // give 0 / 0 = NaN when an edge lies exactly on the line (the divide-by-zero case in
         // javidx9's video).
-        const bool overlapping = moverMin < targetMax && targetMin < moverMax;
+        const bool overlapping = spansOverlap(moverMin, moverMax, targetMin, targetMax);
         return overlapping ? TimeSpan{-infinity, infinity} : TimeSpan{infinity, -infinity};
     }
     // Enter when the leading edge reaches the target's near edge; leave when the trailing
