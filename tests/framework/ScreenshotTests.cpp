@@ -18,16 +18,20 @@
 #include <csignal>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #endif
 
 namespace fs = std::filesystem;
 
 namespace
 {
-// A fresh empty folder for one test.
+// A fresh empty folder for one test, named by user and process so that another user's
+// (or another run's) leftovers in the shared temporary folder never get in the way.
 fs::path emptyFolder(const std::string& name)
 {
-    const fs::path folder = fs::temp_directory_path() / ("hitbox-screenshot-" + name);
+    const fs::path folder =
+        fs::temp_directory_path() / ("hitbox-screenshot-" + std::to_string(getuid()) + "-" +
+                                     std::to_string(getpid()) + "-" + name);
     fs::remove_all(folder);
     fs::create_directories(folder);
     return folder;
