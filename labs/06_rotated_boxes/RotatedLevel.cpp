@@ -210,8 +210,15 @@ PairView RotatedLevel::testPair(std::size_t heldIndex, std::size_t otherIndex) c
     return view;
 }
 
-void RotatedLevel::update(float)
+void RotatedLevel::setSpin(float degreesPerSecond)
 {
+    spinDegreesPerSecond = degreesPerSecond;
+}
+
+void RotatedLevel::update(float dt)
+{
+    if (!shapes.empty())
+        shapes[held].body.angleDegrees += spinDegreesPerSecond * dt;
     pairs.clear();
     overlapping.assign(shapes.size(), false);
     for (std::size_t i = 0; i < shapes.size(); ++i)

@@ -45,6 +45,10 @@ public:
     RotatedLevel();
     explicit RotatedLevel(std::vector<Shape> shapes); // shape 0 starts held
 
+    // Turn the held shape by itself, this many degrees a second (0: only the wheel turns
+    // it). The lecture's animation uses it to show the SAT axes turning with the shape.
+    void setSpin(float degreesPerSecond);
+
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
@@ -72,6 +76,7 @@ private:
     std::size_t held = 0;
     bool dragging = false;
     hitbox::Vec2 grabOffset;
+    float spinDegreesPerSecond = 0.f;
     std::vector<PairView> pairs;
     std::vector<bool> overlapping;
     hitbox::LazyFont font; // read by the first render(): tests need no font file

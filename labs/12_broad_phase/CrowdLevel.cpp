@@ -1,10 +1,12 @@
 #include "CrowdLevel.h"
 
 #include "hitbox/app/Input.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 
+#include <cmath>
 #include <cstdio>
 
 namespace
@@ -42,6 +44,7 @@ void CrowdLevel::handleInput(const Input& input, float)
 void CrowdLevel::update(float dt)
 {
     const sf::Vector2f world = getWorldSize();
+    sweepLineX = std::fmod(sweepLineX + sweepLineSpeed * dt, world.x);
     for (std::size_t index = 0; index < boxes.size(); ++index)
     {
         Box& box = boxes[index];
@@ -81,6 +84,34 @@ void CrowdLevel::render(sf::RenderTarget& target) const
         picture.setOutlineThickness(-1.f);
         picture.setOutlineColor(sf::Color(20, 24, 32));
         target.draw(picture);
+    }
+}
+
+void CrowdLevel::renderDebug(hitbox::DebugRenderer& debug) const
+{
+    const sf::Vector2f world = getWorldSize();
+    if (method == Method::Grid)
+    {
+        for (float x = 0.f; x <= world.x; x += cellSize)
+            debug.line({x, 0.f}, {x, world.y}, hitbox::DebugRenderer::hintColor);
+        for (float y = 0.f; y <= world.y; y += cellSize)
+            debug.line({0.f, y}, {world.x, y}, hitbox::DebugRenderer::hintColor);
+    }
+    // The sweep line and the boxes open where it is, in yellow; other boxes red or green.
+    const bool sweeping = method == Method::SortAndSweep;
+    if (sweeping)
+        debug.line({sweepLineX, 0.f}, {sweepLineX, world.y}, hitbox::DebugRenderer::velocityColor);
+    std::vector<bool> overlapping(boxes.size(), false);
+    for (const Pair& pair : lastSearch.pairs)
+        overlapping[pair.first] = overlapping[pair.second] = true;
+    for (std::size_t index = 0; index < boxes.size(); ++index)
+    {
+        const Box& box = boxes[index];
+        sf::Color color = overlapping[index] ? hitbox::DebugRenderer::touchingColor
+                                             : hitbox::DebugRenderer::freeColor;
+        if (sweeping && box.left <= sweepLineX && sweepLineX < box.right)
+            color = hitbox::DebugRenderer::velocityColor;
+        debug.box({box.left, box.top, box.right - box.left, box.bottom - box.top}, color);
     }
 }
 

@@ -24,12 +24,16 @@ public:
     };
     // Cells of the grid, in world pixels: a little more than the largest box.
     static constexpr float cellSize = 48.f;
+    // F1 in sort and sweep: a line crosses the world at this speed, and the boxes open where
+    // it is (left <= x < right) are outlined: the list the sweep keeps at that moment.
+    static constexpr float sweepLineSpeed = 150.f;
 
     CrowdLevel(int boxCount, unsigned seed);
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
+    void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
 
@@ -41,4 +45,5 @@ private:
     std::vector<float> speedY;
     Method method = Method::SortAndSweep;
     PairSearch lastSearch;
+    float sweepLineX = 0.f;
 };
