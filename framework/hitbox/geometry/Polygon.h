@@ -19,7 +19,11 @@
 //     inside the other polygon. Two polygons with no area never collide (nothing to share;
 //     note boxVsBox differs for two crossing zero-size boxes). An empty polygon never
 //     collides.
-//   - NaN or infinite coordinates, or a NaN angle: never collide.
+//   - Range (Range.h): every coordinate and half size within +-exactRange (1e6 px), where
+//     the answers are exact up to float rounding. Outside it, and for NaN, infinity or a NaN
+//     angle: never collide. A hit always has a depth > 0 (penetrates(), Shapes.h), a finite
+//     point and a unit normal.
+//   - Cost: O(n + m) for polygons of n and m corners (walking support points, Polygon.cpp).
 //   - Ties: among axes with the same overlap, the more horizontal axis wins (so the x axis,
 //     as in boxVsBoxContact), then the first tried (A's edges in order, then B's). On one
 //     axis, equal pushes either way go to the negative direction (left, up). So two
@@ -30,6 +34,7 @@
 //     edge-to-edge contact: one point of the touching stretch, not its middle).
 #pragma once
 
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <vector>
@@ -75,19 +80,20 @@ struct AxisReport
 AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
 
 // The separating axis theorem with the minimum translation: moving A by normal * depth
-// leaves the two exactly touching.
+// leaves the two exactly touching. Corners within +-exactRange, else no hit; O(n + m).
 Contact polygonVsPolygon(const Polygon& a, const Polygon& b);
+// polygonVsPolygon on the two boxes' corners (so every corner within +-exactRange).
 Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b);
 
-// A = the polygon, B = the circle: the normal points out of the circle towards the polygon.
-// The circle's centre's closest point on the polygon decides; a centre inside the polygon
-// leaves through the nearest edge. Zero radius: a point, collides when strictly inside.
-// A polygon with no area collides when it reaches strictly inside the circle.
-Contact polygonVsCircle(const Polygon& polygon, const Circle& circle);
-// The same test seen from the circle: A = the circle, so the normal is reversed.
+// A = the circle, B = the polygon: the normal points out of the polygon towards the circle
+// (swap the normal's sign to see it from the polygon). The centre's closest point on the
+// polygon decides; a centre inside leaves through the nearest edge. Zero radius: a point,
+// a hit only when its way out is > 0 (strictly inside). A polygon with no area collides
+// when it reaches strictly inside the circle. Centre, radius, corners within +-exactRange.
 Contact circleVsPolygon(const Circle& circle, const Polygon& polygon);
 
-// True when `point` is strictly inside the convex polygon (on an edge is outside).
+// True when `point` is strictly inside the convex polygon (on an edge is outside). Point
+// and corners within +-exactRange, else false.
 bool pointInPolygon(Vec2 point, const Polygon& polygon);
 
 } // namespace hitbox
