@@ -40,8 +40,9 @@ Polygon regularPolygon(hitbox::Vec2 centre, float radius, int corners)
     for (int k = 0; k < corners; ++k)
     {
         const double angle = 2.0 * 3.14159265358979323846 * k / corners;
-        polygon.points.push_back(centre + hitbox::Vec2(static_cast<float>(radius * std::cos(angle)),
-                                                       static_cast<float>(radius * std::sin(angle))));
+        polygon.points.push_back(centre +
+                                 hitbox::Vec2(static_cast<float>(radius * std::cos(angle)),
+                                              static_cast<float>(radius * std::sin(angle))));
     }
     return polygon;
 }
@@ -84,8 +85,9 @@ TEST(GeometryRange, TheEdgesOfTheRangeAreIn)
 TEST(GeometryRange, ShapesAt1e20NeverCollideInsteadOfANaNDepth)
 {
     // Before: hit, depth NaN.
-    const Contact boxes = hitbox::orientedBoxVsOrientedBox(
-        OrientedBox{{1e20f, 1e20f}, {1e18f, 1e18f}, 30.f}, OrientedBox{{1e20f, 1e20f}, {1e18f, 1e18f}, 0.f});
+    const Contact boxes =
+        hitbox::orientedBoxVsOrientedBox(OrientedBox{{1e20f, 1e20f}, {1e18f, 1e18f}, 30.f},
+                                         OrientedBox{{1e20f, 1e20f}, {1e18f, 1e18f}, 0.f});
     EXPECT_FALSE(boxes);
     const Contact polygons =
         hitbox::polygonVsPolygon(toPolygon(hitbox::Box(1e20f, 1e20f, 1e19f, 1e19f)),
@@ -113,7 +115,8 @@ TEST(GeometryRange, ABoxFarFromAHugeBoxIsNotHitByRounding)
 {
     // A 2 x 2 box 142 px above a box 1e10 px long: outside the range, so no hit.
     const OrientedBox small{{100.f, -143.f}, {1.f, 1.f}, 45.f};
-    EXPECT_FALSE(hitbox::orientedBoxVsOrientedBox(small, OrientedBox{{0.f, 0.f}, {5e9f, 1.f}, 30.f}));
+    EXPECT_FALSE(
+        hitbox::orientedBoxVsOrientedBox(small, OrientedBox{{0.f, 0.f}, {5e9f, 1.f}, 30.f}));
     // A box 8e5 px long, turned the same way, reaching +-3.5e5 px: the range promises answers
     // within 1e-6 of that (0.35 px), so a 0.5 px gap and a 0.5 px overlap are both seen.
     const float angle = 30.f;
@@ -121,8 +124,8 @@ TEST(GeometryRange, ABoxFarFromAHugeBoxIsNotHitByRounding)
     const hitbox::Vec2 across(-std::sin(radians), std::cos(radians));
     const OrientedBox longBox{{0.f, 0.f}, {4e5f, 1.f}, angle};
     const float tolerance = 1e-6f * 3.5e5f;
-    EXPECT_FALSE(hitbox::orientedBoxVsOrientedBox(OrientedBox{across * -2.5f, {1.f, 1.f}, angle},
-                                                  longBox));
+    EXPECT_FALSE(
+        hitbox::orientedBoxVsOrientedBox(OrientedBox{across * -2.5f, {1.f, 1.f}, angle}, longBox));
     const Contact contact =
         hitbox::orientedBoxVsOrientedBox(OrientedBox{across * -1.5f, {1.f, 1.f}, angle}, longBox);
     ASSERT_TRUE(contact);
@@ -146,10 +149,10 @@ TEST(GeometryRange, AZeroRadiusCircleWhoseWayOutRoundsToZeroIsTouching)
 {
     // A point next to a triangle's edge that the inside test puts inside but whose distance
     // to the edge rounds to 0. Before: hit with depth 0. Now: touching, not a hit.
-    const Polygon triangle{{{-66.0339203f, -88.1513596f},
-                            {75.6284943f, 34.1056061f},
-                            {-80.3306351f, 18.6130981f}}};
-    const Contact contact = hitbox::circleVsPolygon(Circle{{-6.37879992f, -36.6680183f}, 0.f}, triangle);
+    const Polygon triangle{
+        {{-66.0339203f, -88.1513596f}, {75.6284943f, 34.1056061f}, {-80.3306351f, 18.6130981f}}};
+    const Contact contact =
+        hitbox::circleVsPolygon(Circle{{-6.37879992f, -36.6680183f}, 0.f}, triangle);
     EXPECT_FALSE(contact) << contact.depth;
     // A point clearly inside still collides, with its way out as the depth.
     const Contact inside = hitbox::circleVsPolygon(Circle{{-20.f, 0.f}, 0.f}, triangle);
@@ -161,12 +164,16 @@ TEST(GeometryRange, OutOfRangeCirclesAndCapsulesNeverCollide)
 {
     const Polygon square = toPolygon(hitbox::Box(0.f, 0.f, 10.f, 10.f));
     EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{5.f, 5.f}, 2e6f}, square));
-    EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{5.f, 5.f}, 2.f}, toPolygon(hitbox::Box(0.f, 0.f, 1e7f, 10.f))));
-    EXPECT_FALSE(hitbox::capsuleVsCircle(Capsule{{-1e20f, 0.f}, {1e20f, 0.f}, 1.f}, Circle{{0.f, 0.f}, 1.f}));
-    EXPECT_FALSE(hitbox::capsuleVsCapsule(Capsule{{0.f, 0.f}, {1.f, 0.f}, 2e6f}, Capsule{{0.f, 0.f}, {1.f, 0.f}, 1.f}));
+    EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{5.f, 5.f}, 2.f},
+                                         toPolygon(hitbox::Box(0.f, 0.f, 1e7f, 10.f))));
+    EXPECT_FALSE(hitbox::capsuleVsCircle(Capsule{{-1e20f, 0.f}, {1e20f, 0.f}, 1.f},
+                                         Circle{{0.f, 0.f}, 1.f}));
+    EXPECT_FALSE(hitbox::capsuleVsCapsule(Capsule{{0.f, 0.f}, {1.f, 0.f}, 2e6f},
+                                          Capsule{{0.f, 0.f}, {1.f, 0.f}, 1.f}));
     EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{0.f, 0.f}, {1e7f, 0.f}, 1.f}, square));
     // The same in range collide.
-    EXPECT_TRUE(hitbox::capsuleVsCircle(Capsule{{-1e6f, 0.f}, {1e6f, 0.f}, 1.f}, Circle{{0.f, 0.f}, 1.f}));
+    EXPECT_TRUE(
+        hitbox::capsuleVsCircle(Capsule{{-1e6f, 0.f}, {1e6f, 0.f}, 1.f}, Circle{{0.f, 0.f}, 1.f}));
     EXPECT_TRUE(hitbox::capsuleVsPolygon(Capsule{{0.f, 0.f}, {1e6f, 0.f}, 1.f}, square));
 }
 
@@ -174,8 +181,16 @@ TEST(GeometryRange, CollinearCornersDoNotChangeTheAnswer)
 {
     // Extra corners along the edges (the walks must step over them).
     const Polygon plain = toPolygon(hitbox::Box(0.f, 0.f, 40.f, 40.f));
-    const Polygon dotted{{{0.f, 0.f}, {0.f, 10.f}, {0.f, 20.f}, {0.f, 40.f}, {20.f, 40.f},
-                          {40.f, 40.f}, {40.f, 30.f}, {40.f, 0.f}, {30.f, 0.f}, {10.f, 0.f}}};
+    const Polygon dotted{{{0.f, 0.f},
+                          {0.f, 10.f},
+                          {0.f, 20.f},
+                          {0.f, 40.f},
+                          {20.f, 40.f},
+                          {40.f, 40.f},
+                          {40.f, 30.f},
+                          {40.f, 0.f},
+                          {30.f, 0.f},
+                          {10.f, 0.f}}};
     const Polygon crate = toPolygon(OrientedBox{{38.f, 20.f}, {5.f, 5.f}, 20.f});
     const Contact expected = hitbox::polygonVsPolygon(crate, plain);
     const Contact actual = hitbox::polygonVsPolygon(crate, dotted);
@@ -184,7 +199,8 @@ TEST(GeometryRange, CollinearCornersDoNotChangeTheAnswer)
     EXPECT_EQ(actual.normal, expected.normal);
     EXPECT_EQ(actual.depth, expected.depth);
     // A segment written with extra points in line, out of order, is still a segment.
-    EXPECT_FALSE(hitbox::polygonVsPolygon(Polygon{{{5.f, 5.f}}}, Polygon{{{0.f, 0.f}, {10.f, 10.f}, {3.f, 3.f}}}));
+    EXPECT_FALSE(hitbox::polygonVsPolygon(Polygon{{{5.f, 5.f}}},
+                                          Polygon{{{0.f, 0.f}, {10.f, 10.f}, {3.f, 3.f}}}));
 }
 
 // ---- many corners: O(n + m) ---------------------------------------------------------------

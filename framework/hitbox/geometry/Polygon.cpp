@@ -35,38 +35,40 @@ double twiceSignedAreaOf(const std::vector<Vec2>& points)
     return sum;
 }
 
-// The polygon as the tests use it: no repeated neighbours and no corner in line with its two
-// neighbours, so every edge has a direction and every corner turns (SupportWalk needs that).
-// A polygon with no area keeps only its two ends. Empty when a point is out of range or NaN.
+// The polygon as the tests use it: the corners of its convex hull, in order, by Andrew's
+// monotone chain (A. M. Andrew, "Another efficient algorithm for convex hulls in two
+// dimensions", 1979). Repeated points, corners in line with their neighbours and dents (a
+// concave polygon, or a convex one made slightly concave by rounding) go, so every corner
+// turns the same way, which SupportWalk needs. A polygon with no area keeps its two ends (or
+// its one point). Empty when a point is out of range or NaN.
 std::vector<Vec2> cleaned(const Polygon& polygon)
 {
-    std::vector<Vec2> points;
-    for (Vec2 point : polygon.points)
-    {
+    std::vector<Vec2> points = polygon.points;
+    for (Vec2 point : points)
         if (!withinExactRange(point))
             return {};
-        if (points.empty() || point != points.back())
-            points.push_back(point);
-    }
-    while (points.size() > 1 && points.front() == points.back())
-        points.pop_back();
+    std::sort(points.begin(), points.end(),
+              [](Vec2 p, Vec2 q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
     if (points.size() < 3)
         return points;
-    if (twiceSignedAreaOf(points) == 0.0)
+    // The lower chain from left to right, then the upper chain back: a corner where the chain
+    // does not turn (in line, or turning the other way) is dropped.
+    std::vector<Vec2> hull;
+    for (int chain = 0; chain < 2; ++chain)
     {
-        // All in line: a segment between the points that come first and last in (x, y) order.
-        const auto byXThenY = [](Vec2 p, Vec2 q) { return p.x < q.x || (p.x == q.x && p.y < q.y); };
-        const auto ends = std::minmax_element(points.begin(), points.end(), byXThenY);
-        return {*ends.first, *ends.second};
+        const std::size_t chainStart = hull.size();
+        for (Vec2 point : points)
+        {
+            while (hull.size() >= chainStart + 2 &&
+                   turn(hull[hull.size() - 2], hull.back(), point) <= 0.0)
+                hull.pop_back();
+            hull.push_back(point);
+        }
+        hull.pop_back(); // the chain's last point is where the other chain starts
+        std::reverse(points.begin(), points.end());
     }
-    std::vector<Vec2> corners;
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        const Vec2 previous = points[(i + points.size() - 1) % points.size()];
-        if (turn(previous, points[i], points[(i + 1) % points.size()]) != 0.0)
-            corners.push_back(points[i]);
-    }
-    return corners;
+    return hull;
 }
 
 // The shadow of a polygon on an axis (not necessarily of unit length).
@@ -79,7 +81,8 @@ struct Shadow
 // THE TRICK "walking support points" (Ericson, Real-Time Collision Detection, 9.5.4 and
 // 9.5.5: hill-climbing for extreme vertices, starting from the last answer). Along a convex
 // polygon the shadow of the corners rises to one peak and falls again, so the furthest corner
-// is found by stepping to a neighbour that reaches further until none does. The separating
+// is found by stepping to a neighbour that reaches further until none does (on a polygon
+// with a dent it could stop at the wrong peak: cleaned() gives the hull). The separating
 // axes come in order round a polygon, so each climb starts next to its answer: a whole test
 // costs O(n + m) steps instead of projecting every corner on every axis, O((n + m)^2).
 struct SupportWalk

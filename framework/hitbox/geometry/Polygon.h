@@ -12,8 +12,9 @@
 // EDGE RULES (the "share area" rule of Overlap.h):
 //   - Shapes collide only when they share area: shadows that only touch (overlap 0) on some
 //     axis mean apart. Touching edges and corners do not collide.
-//   - Either winding (clockwise or anticlockwise) works. The polygon must be convex; for a
-//     concave polygon the answers mean nothing.
+//   - Either winding (clockwise or anticlockwise) works, and the points may come in any
+//     order: every test works on the polygon's convex hull (a concave polygon, or one made
+//     slightly concave by rounding, is tested as its hull).
 //   - Degenerate polygons: repeated points are ignored. A polygon with no area (one point,
 //     or all points on a line) is a point or a segment: it collides when it reaches strictly
 //     inside the other polygon. Two polygons with no area never collide (nothing to share;
@@ -23,10 +24,11 @@
 //     the answers are exact up to float rounding. Outside it, and for NaN, infinity or a NaN
 //     angle: never collide. A hit always has a depth > 0 (penetrates(), Shapes.h), a finite
 //     point and a unit normal.
-//   - Cost: O(n + m) for polygons of n and m corners (walking support points, Polygon.cpp).
+//   - Cost: O(n log n + m log m) for polygons of n and m corners: the hull, then a walk of
+//     O(n + m) steps (walking support points, Polygon.cpp).
 //   - Ties: among axes with the same overlap, the more horizontal axis wins (so the x axis,
-//     as in boxVsBoxContact), then the first tried (A's edges in order, then B's). On one
-//     axis, equal pushes either way go to the negative direction (left, up). So two
+//     as in boxVsBoxContact), then the first tried (A's hull edges from its leftmost corner, then
+//     B's). On one axis, equal pushes either way go to the negative direction (left, up). So two
 //     axis-aligned boxes get boxVsBoxContact's normal, and its depth up to the last bit of
 //     rounding (exactly its depth when the coordinates are whole numbers).
 //   - Contact normal: out of B towards A (Shapes.h), unit length; depth in pixels.
@@ -80,7 +82,7 @@ struct AxisReport
 AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
 
 // The separating axis theorem with the minimum translation: moving A by normal * depth
-// leaves the two exactly touching. Corners within +-exactRange, else no hit; O(n + m).
+// leaves the two exactly touching. Corners within +-exactRange, else no hit.
 Contact polygonVsPolygon(const Polygon& a, const Polygon& b);
 // polygonVsPolygon on the two boxes' corners (so every corner within +-exactRange).
 Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b);
