@@ -364,17 +364,6 @@ TEST(CircleVsPolygon, NegativeRadiusOrNaNNeverCollides)
     EXPECT_FALSE(hitbox::circleVsPolygon(Circle{{50.f, 110.f}, 5.f}, Polygon{}));
 }
 
-TEST(PolygonVsCircle, IsTheSameTestSeenFromThePolygon)
-{
-    const Circle circle{{-3.f, 96.f}, 10.f};
-    const Contact fromCircle = hitbox::circleVsPolygon(circle, ground);
-    const Contact fromPolygon = hitbox::polygonVsCircle(ground, circle);
-    ASSERT_TRUE(fromPolygon);
-    EXPECT_EQ(fromPolygon.normal, -fromCircle.normal);
-    EXPECT_FLOAT_EQ(fromPolygon.depth, fromCircle.depth);
-    expectNear(fromPolygon.point, circle.center + fromPolygon.normal * circle.radius);
-}
-
 TEST(PointInPolygon, StrictlyInsideOnly)
 {
     EXPECT_TRUE(hitbox::pointInPolygon({10.f, 110.f}, ground));

@@ -1,6 +1,6 @@
 #include "hitbox/geometry/Capsule.h"
 
-#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Vec2.h"
 
 #include <algorithm>
@@ -13,8 +13,8 @@ namespace
 
 bool isUsable(const Capsule& capsule)
 {
-    return isFinite(capsule.start) && isFinite(capsule.end) && std::isfinite(capsule.radius) &&
-           capsule.radius >= 0.f;
+    return withinExactRange(capsule.start) && withinExactRange(capsule.end) &&
+           withinExactRange(capsule.radius) && capsule.radius >= 0.f;
 }
 
 double clamp01(double value)
@@ -196,8 +196,9 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
     const bool crossing = segmentsCross(a.start, a.end, b.start, b.end);
     if (crossing || nearlySame(closest.first, closest.second))
     {
-        if (!(length(closest.first - closest.second) < radiusSum) && !(crossing && radiusSum > 0.f))
-            return Contact{}; // two segments with no area, or apart by more than the radii
+        const float depthAtClosest = radiusSum - length(closest.first - closest.second);
+        if (!penetrates(depthAtClosest) && !(crossing && penetrates(radiusSum)))
+            return Contact{}; // two segments with no area, or apart by the radii or more
         return crossingContact(a, b, closest.second);
     }
     // Otherwise it is two circles, one at each closest point. The direction between them is
@@ -207,13 +208,13 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
     pointAt(a.start, a.end, times.s, ax, ay);
     pointAt(b.start, b.end, times.t, bx, by);
     const double distance = std::hypot(ax - bx, ay - by);
-    if (!(distance < double(radiusSum)))
-        return Contact{};
     Contact contact;
+    contact.depth = static_cast<float>(radiusSum - distance);
+    if (!penetrates(contact.depth))
+        return Contact{};
     contact.hit = true;
     contact.normal = {static_cast<float>((ax - bx) / distance),
                       static_cast<float>((ay - by) / distance)};
-    contact.depth = static_cast<float>(radiusSum - distance);
     contact.point =
         Vec2(static_cast<float>(bx), static_cast<float>(by)) + contact.normal * b.radius;
     return contact;
@@ -225,7 +226,7 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
     if (!isUsable(capsule) || polygon.points.empty())
         return contact;
     for (Vec2 point : polygon.points)
-        if (!isFinite(point))
+        if (!withinExactRange(point))
             return contact;
     if (capsule.radius == 0.f && twiceSignedArea(polygon) == 0.f)
         return contact; // a segment against a polygon with no area: nothing to share
@@ -272,7 +273,7 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
         const float pushPositive = polygonMax - capsuleMin;
         const float pushNegative = capsuleMax - polygonMin;
         const float overlap = std::fmin(pushPositive, pushNegative);
-        if (overlap <= 0.f)
+        if (!penetrates(overlap))
             return Contact{}; // a separating axis: apart (touching counts as apart)
         if (!found || overlap < contact.depth)
         {

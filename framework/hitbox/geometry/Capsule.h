@@ -14,7 +14,9 @@
 //   - Zero radius: the capsule is a segment (or a point when start == end); it collides when
 //     it reaches strictly inside the other shape. Two shapes with no area never collide.
 //   - Zero-length capsule (start == end): a circle.
-//   - Negative radius, NaN or infinite input: never collide.
+//   - Range (Range.h): every coordinate and radius within +-exactRange (1e6 px), where the
+//     answers are exact up to float rounding. Outside it, negative radius, NaN or infinity:
+//     never collide. A hit always has a depth > 0 (penetrates(), Shapes.h) and a unit normal.
 //   - When the cores touch or cross (distance 0, or within rounding: a millionth of the
 //     coordinates' size), there is no single closest direction. The
 //     normal is then at right angles to B's segment (to A's segment if B's is a point), on
@@ -55,7 +57,8 @@ Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);
 Contact capsuleVsCapsule(const Capsule& a, const Capsule& b);
 // A = the capsule, B = the convex polygon (Polygon.h's rules for degenerate polygons).
 // Separating axes: the polygon's edge normals, the capsule's own normal, and the directions
-// from each end of the capsule to each corner (the round ends need those).
+// from each end of the capsule to each corner (the round ends need those). Costs O(n^2) in
+// the polygon's corners: meant for a handful of corners, not for a 1000-gon.
 Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon);
 
 } // namespace hitbox

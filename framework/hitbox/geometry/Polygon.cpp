@@ -1,9 +1,10 @@
 #include "hitbox/geometry/Polygon.h"
 
 #include "hitbox/geometry/Capsule.h"
-#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Vec2.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hitbox
@@ -11,48 +12,108 @@ namespace hitbox
 namespace
 {
 
-// The polygon without NaN (then empty) and without repeated neighbouring points, so every
-// edge has a length and a direction.
-std::vector<Vec2> cleaned(const Polygon& polygon)
+// a.x * b.x + a.y * b.y in double. A float times a float is exact in double, so the shadows
+// of whole-number corners are exact (touching is found exactly) and tiny values keep their
+// digits.
+double dotExact(Vec2 a, Vec2 b)
 {
-    std::vector<Vec2> points;
-    for (Vec2 point : polygon.points)
-    {
-        if (!isFinite(point))
-            return {};
-        if (points.empty() || point != points.back())
-            points.push_back(point);
-    }
-    while (points.size() > 1 && points.front() == points.back())
-        points.pop_back();
-    return points;
+    return double(a.x) * b.x + double(a.y) * b.y;
 }
 
-float twiceSignedAreaOf(const std::vector<Vec2>& points)
+// cross(b - a, c - a) in double: > 0 when a, b, c turn clockwise on screen, 0 when in line.
+// Measured from `a`, so far from the origin the big terms do not cancel.
+double turn(Vec2 a, Vec2 b, Vec2 c)
 {
-    float sum = 0.f;
-    for (std::size_t i = 0; i < points.size(); ++i)
-        sum += cross(points[i], points[(i + 1) % points.size()]);
+    return (double(b.x) - a.x) * (double(c.y) - a.y) - (double(b.y) - a.y) * (double(c.x) - a.x);
+}
+
+double twiceSignedAreaOf(const std::vector<Vec2>& points)
+{
+    double sum = 0.0;
+    for (std::size_t i = 1; i + 1 < points.size(); ++i)
+        sum += turn(points[0], points[i], points[i + 1]);
     return sum;
+}
+
+// The polygon as the tests use it: the corners of its convex hull, in order, by Andrew's
+// monotone chain (A. M. Andrew, "Another efficient algorithm for convex hulls in two
+// dimensions", 1979). Repeated points, corners in line with their neighbours and dents (a
+// concave polygon, or a convex one made slightly concave by rounding) go, so every corner
+// turns the same way, which SupportWalk needs. A polygon with no area keeps its two ends (or
+// its one point). Empty when a point is out of range or NaN.
+std::vector<Vec2> cleaned(const Polygon& polygon)
+{
+    std::vector<Vec2> points = polygon.points;
+    for (Vec2 point : points)
+        if (!withinExactRange(point))
+            return {};
+    std::sort(points.begin(), points.end(),
+              [](Vec2 p, Vec2 q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if (points.size() < 3)
+        return points;
+    // The lower chain from left to right, then the upper chain back: a corner where the chain
+    // does not turn (in line, or turning the other way) is dropped.
+    std::vector<Vec2> hull;
+    for (int chain = 0; chain < 2; ++chain)
+    {
+        const std::size_t chainStart = hull.size();
+        for (Vec2 point : points)
+        {
+            while (hull.size() >= chainStart + 2 &&
+                   turn(hull[hull.size() - 2], hull.back(), point) <= 0.0)
+                hull.pop_back();
+            hull.push_back(point);
+        }
+        hull.pop_back(); // the chain's last point is where the other chain starts
+        std::reverse(points.begin(), points.end());
+    }
+    return hull;
 }
 
 // The shadow of a polygon on an axis (not necessarily of unit length).
 struct Shadow
 {
-    float min;
-    float max;
+    double min;
+    double max;
 };
 
-Shadow shadowOn(const std::vector<Vec2>& points, Vec2 axis)
+// THE TRICK "walking support points" (Ericson, Real-Time Collision Detection, 9.5.4 and
+// 9.5.5: hill-climbing for extreme vertices, starting from the last answer). Along a convex
+// polygon the shadow of the corners rises to one peak and falls again, so the furthest corner
+// is found by stepping to a neighbour that reaches further until none does (on a polygon
+// with a dent it could stop at the wrong peak: cleaned() gives the hull). The separating
+// axes come in order round a polygon, so each climb starts next to its answer: a whole test
+// costs O(n + m) steps instead of projecting every corner on every axis, O((n + m)^2).
+struct SupportWalk
 {
-    Shadow shadow{dot(points[0], axis), dot(points[0], axis)};
-    for (Vec2 point : points)
+    const std::vector<Vec2>& points;
+    std::size_t at = 0; // where the last climb ended
+
+    // The largest dotExact(corner, direction) over the polygon's corners.
+    double furthestAlong(Vec2 direction)
     {
-        const float along = dot(point, axis);
-        shadow.min = std::fmin(shadow.min, along);
-        shadow.max = std::fmax(shadow.max, along);
+        const std::size_t count = points.size();
+        double best = dotExact(points[at], direction);
+        for (;;)
+        {
+            const std::size_t next = (at + 1) % count;
+            const std::size_t previous = (at + count - 1) % count;
+            if (dotExact(points[next], direction) > best)
+                at = next;
+            else if (dotExact(points[previous], direction) > best)
+                at = previous;
+            else
+                return best;
+            best = dotExact(points[at], direction);
+        }
     }
-    return shadow;
+};
+
+// A polygon's shadow from two walks: one for its far end, one for its near end.
+Shadow shadowOn(SupportWalk& furthest, SupportWalk& nearest, Vec2 axis)
+{
+    return {-nearest.furthestAlong(-axis), furthest.furthestAlong(axis)};
 }
 
 // One edge's axis, turned to point right (or down when vertical) so that "ties go to the
@@ -67,9 +128,9 @@ Vec2 edgeAxis(Vec2 from, Vec2 to)
 }
 
 // [slide:sat-axis-test]
-// One axis of the separating axis theorem: cast both shadows on the axis. Their overlap is
-// how far A must move along the axis to get clear of B; overlap <= 0 (a gap, or shadows
-// that only touch) means this axis separates the shapes.
+// One axis of the separating axis theorem, given both shadows on it. Their overlap is how
+// far A must move along the axis to get clear of B; an overlap that does not penetrate (a
+// gap, or shadows that only touch) means this axis separates the shapes.
 struct AxisOverlap
 {
     bool apart;
@@ -77,19 +138,19 @@ struct AxisOverlap
     Vec2 towardsA; // unit: the way to move A (from B's side to A's side)
 };
 
-AxisOverlap overlapOnAxis(const std::vector<Vec2>& a, const std::vector<Vec2>& b, Vec2 axis)
+AxisOverlap overlapOnAxis(Shadow shadowA, Shadow shadowB, Vec2 axis)
 {
-    const Shadow shadowA = shadowOn(a, axis);
-    const Shadow shadowB = shadowOn(b, axis);
-    const float pushPositive = shadowB.max - shadowA.min; // move A along +axis to clear B
-    const float pushNegative = shadowA.max - shadowB.min; // or along -axis
+    // How far A must move along +axis, or along -axis, to clear B.
+    const double pushPositive = shadowB.max - shadowA.min;
+    const double pushNegative = shadowA.max - shadowB.min;
     // Equal pushes go the negative way (left or up), as boxVsBoxContact does.
     const bool negative = pushNegative <= pushPositive;
-    const float push = negative ? pushNegative : pushPositive;
-    const Vec2 unit = axis / length(axis);
+    const double push = negative ? pushNegative : pushPositive;
+    const float overlap = static_cast<float>(push / length(axis)); // pixels
+    const Vec2 unit = unitVectorOr(axis, {0.f, 0.f});
     // (+ 0.f turns a -0 into 0, so an axis-aligned normal prints and compares cleanly.)
     const Vec2 towardsA = negative ? Vec2(-unit.x + 0.f, -unit.y + 0.f) : unit;
-    return {push <= 0.f, push / length(axis), towardsA};
+    return {!penetrates(overlap), overlap, towardsA};
 }
 // [/slide]
 
@@ -110,10 +171,13 @@ void tryEdgesOf(const std::vector<Vec2>& owner, bool ownerIsB, const std::vector
 {
     if (owner.size() < 2)
         return; // a point has no edges
+    // The edges' axes turn steadily round the owner: each walk goes on from the last edge's.
+    SupportWalk aFurthest{a}, aNearest{a}, bFurthest{b}, bNearest{b};
     for (std::size_t i = 0; i < owner.size(); ++i)
     {
-        const AxisOverlap result =
-            overlapOnAxis(a, b, edgeAxis(owner[i], owner[(i + 1) % owner.size()]));
+        const Vec2 axis = edgeAxis(owner[i], owner[(i + 1) % owner.size()]);
+        const AxisOverlap result = overlapOnAxis(shadowOn(aFurthest, aNearest, axis),
+                                                 shadowOn(bFurthest, bNearest, axis), axis);
         const bool first = !search.anyAxis;
         search.anyAxis = true;
         if (result.apart)
@@ -179,7 +243,7 @@ Search searchAxes(const std::vector<Vec2>& a, const std::vector<Vec2>& b)
 // Nothing to compare (an empty polygon) or nothing to share (two shapes with no area).
 bool neverCollide(const std::vector<Vec2>& a, const std::vector<Vec2>& b)
 {
-    return a.empty() || b.empty() || (twiceSignedAreaOf(a) == 0.f && twiceSignedAreaOf(b) == 0.f);
+    return a.empty() || b.empty() || (twiceSignedAreaOf(a) == 0.0 && twiceSignedAreaOf(b) == 0.0);
 }
 
 } // namespace
@@ -210,7 +274,7 @@ Polygon toPolygon(const Box& box)
 
 float twiceSignedArea(const Polygon& polygon)
 {
-    return twiceSignedAreaOf(cleaned(polygon));
+    return static_cast<float>(twiceSignedAreaOf(cleaned(polygon)));
 }
 
 AxisReport findSeparatingAxis(const Polygon& first, const Polygon& second)
@@ -260,16 +324,13 @@ Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b)
 bool pointInPolygon(Vec2 point, const Polygon& polygon)
 {
     const std::vector<Vec2> points = cleaned(polygon);
-    const float area = twiceSignedAreaOf(points);
-    if (area == 0.f || !isFinite(point))
+    const double area = twiceSignedAreaOf(points);
+    if (area == 0.0 || !withinExactRange(point))
         return false;
     // Strictly on the inner side of every edge (the inner side depends on the winding).
     for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        const Vec2 edge = points[(i + 1) % points.size()] - points[i];
-        if (!(cross(edge, point - points[i]) * area > 0.f))
+        if (!(turn(points[i], points[(i + 1) % points.size()], point) * area > 0.0))
             return false;
-    }
     return true;
 }
 
@@ -277,9 +338,10 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
 {
     Contact contact;
     const std::vector<Vec2> points = cleaned(polygon);
-    if (points.empty() || !isFinite(circle) || circle.radius < 0.f)
+    if (points.empty() || !withinExactRange(circle.center) || !withinExactRange(circle.radius) ||
+        circle.radius < 0.f)
         return contact;
-    const float area = twiceSignedAreaOf(points);
+    const double area = twiceSignedAreaOf(points);
     const bool inside = pointInPolygon(circle.center, polygon);
 
     // The closest point of the polygon's outline to the centre, and the edge it is on.
@@ -298,12 +360,13 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
 
     if (!inside && distance > 0.f)
     {
-        // Centre outside: like circleVsBoxContact, push along the line from the closest point.
-        if (!(distance < circle.radius))
-            return contact;
-        contact.hit = true;
-        contact.normal = fromPolygon / distance;
+        // Centre outside: like circleVsBoxContact, push along the line from the closest point
+        // (made unit in double: for a centre a denormal away, dividing in float is not unit).
         contact.depth = circle.radius - distance;
+        if (!penetrates(contact.depth))
+            return Contact{};
+        contact.hit = true;
+        contact.normal = unitVectorOr(fromPolygon, {-1.f, 0.f});
         contact.point = closest;
         return contact;
     }
@@ -311,7 +374,7 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
         return contact; // a point on the outline is outside (the edge rule)
 
     contact.hit = true;
-    if (area == 0.f)
+    if (area == 0.0)
     {
         // Centre exactly on a polygon with no area (a point or a segment): push across it.
         const Vec2 along = points.size() > 1 ? points[1] - points[0] : Vec2();
@@ -327,7 +390,7 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
         const Vec2 edge = points[(i + 1) % points.size()] - points[i];
         // Outward normal: the inner side is where cross(edge, p) * area > 0.
         const Vec2 outward =
-            unitVectorOr(area > 0.f ? Vec2(edge.y, -edge.x) : Vec2(-edge.y, edge.x), {-1.f, 0.f});
+            unitVectorOr(area > 0.0 ? Vec2(edge.y, -edge.x) : Vec2(-edge.y, edge.x), {-1.f, 0.f});
         const float toEdge = -dot(circle.center - points[i], outward);
         if (nearest < 0.f || toEdge < nearest)
         {
@@ -336,19 +399,10 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
         }
     }
     contact.depth = circle.radius + nearest;
+    // A point whose way out rounds to 0 is touching, not inside (the edge rule).
+    if (!penetrates(contact.depth))
+        return Contact{};
     contact.point = circle.center + contact.normal * nearest;
-    return contact;
-}
-
-Contact polygonVsCircle(const Polygon& polygon, const Circle& circle)
-{
-    Contact contact = circleVsPolygon(circle, polygon);
-    if (contact.hit)
-    {
-        // Seen from the polygon: out of the circle towards the polygon, point on the circle.
-        contact.normal = -contact.normal;
-        contact.point = circle.center + contact.normal * circle.radius;
-    }
     return contact;
 }
 

@@ -12,17 +12,23 @@
 // EDGE RULES (the "share area" rule of Overlap.h):
 //   - Shapes collide only when they share area: shadows that only touch (overlap 0) on some
 //     axis mean apart. Touching edges and corners do not collide.
-//   - Either winding (clockwise or anticlockwise) works. The polygon must be convex; for a
-//     concave polygon the answers mean nothing.
+//   - Either winding (clockwise or anticlockwise) works, and the points may come in any
+//     order: every test works on the polygon's convex hull (a concave polygon, or one made
+//     slightly concave by rounding, is tested as its hull).
 //   - Degenerate polygons: repeated points are ignored. A polygon with no area (one point,
 //     or all points on a line) is a point or a segment: it collides when it reaches strictly
 //     inside the other polygon. Two polygons with no area never collide (nothing to share;
 //     note boxVsBox differs for two crossing zero-size boxes). An empty polygon never
 //     collides.
-//   - NaN or infinite coordinates, or a NaN angle: never collide.
+//   - Range (Range.h): every coordinate and half size within +-exactRange (1e6 px), where
+//     the answers are exact up to float rounding. Outside it, and for NaN, infinity or a NaN
+//     angle: never collide. A hit always has a depth > 0 (penetrates(), Shapes.h), a finite
+//     point and a unit normal.
+//   - Cost: O(n log n + m log m) for polygons of n and m corners: the hull, then a walk of
+//     O(n + m) steps (walking support points, Polygon.cpp).
 //   - Ties: among axes with the same overlap, the more horizontal axis wins (so the x axis,
-//     as in boxVsBoxContact), then the first tried (A's edges in order, then B's). On one
-//     axis, equal pushes either way go to the negative direction (left, up). So two
+//     as in boxVsBoxContact), then the first tried (A's hull edges from its leftmost corner, then
+//     B's). On one axis, equal pushes either way go to the negative direction (left, up). So two
 //     axis-aligned boxes get boxVsBoxContact's normal, and its depth up to the last bit of
 //     rounding (exactly its depth when the coordinates are whole numbers).
 //   - Contact normal: out of B towards A (Shapes.h), unit length; depth in pixels.
@@ -30,6 +36,7 @@
 //     edge-to-edge contact: one point of the touching stretch, not its middle).
 #pragma once
 
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <vector>
@@ -75,19 +82,20 @@ struct AxisReport
 AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
 
 // The separating axis theorem with the minimum translation: moving A by normal * depth
-// leaves the two exactly touching.
+// leaves the two exactly touching. Corners within +-exactRange, else no hit.
 Contact polygonVsPolygon(const Polygon& a, const Polygon& b);
+// polygonVsPolygon on the two boxes' corners (so every corner within +-exactRange).
 Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b);
 
-// A = the polygon, B = the circle: the normal points out of the circle towards the polygon.
-// The circle's centre's closest point on the polygon decides; a centre inside the polygon
-// leaves through the nearest edge. Zero radius: a point, collides when strictly inside.
-// A polygon with no area collides when it reaches strictly inside the circle.
-Contact polygonVsCircle(const Polygon& polygon, const Circle& circle);
-// The same test seen from the circle: A = the circle, so the normal is reversed.
+// A = the circle, B = the polygon: the normal points out of the polygon towards the circle
+// (swap the normal's sign to see it from the polygon). The centre's closest point on the
+// polygon decides; a centre inside leaves through the nearest edge. Zero radius: a point,
+// a hit only when its way out is > 0 (strictly inside). A polygon with no area collides
+// when it reaches strictly inside the circle. Centre, radius, corners within +-exactRange.
 Contact circleVsPolygon(const Circle& circle, const Polygon& polygon);
 
-// True when `point` is strictly inside the convex polygon (on an edge is outside).
+// True when `point` is strictly inside the convex polygon (on an edge is outside). Point
+// and corners within +-exactRange, else false.
 bool pointInPolygon(Vec2 point, const Polygon& polygon);
 
 } // namespace hitbox

@@ -69,6 +69,12 @@ inline bool spansOverlap(float minA, float maxA, float minB, float maxB)
 {
     return (minA < maxB) & (minB < maxA);
 }
+// The same rule for a penetration depth (the shortest move that separates two shapes): they
+// collide only when it is > 0; 0 (touching) and NaN do not. Every Contact test ends with it.
+inline bool penetrates(float depth)
+{
+    return depth > 0.f;
+}
 
 // Box helpers.
 // The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
