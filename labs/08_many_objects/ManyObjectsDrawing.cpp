@@ -3,6 +3,7 @@
 #include "ManyObjectsLevel.h"
 
 #include "hitbox/app/Assets.h"
+#include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/sfml/Conversions.h"
@@ -204,7 +205,8 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
                         "    method: " + methodLabel(method) + "  (M)";
     if (method == hitbox::BroadphaseMethod::Grid)
         lines += "    grid cell: " + fixed(gridCellSize, 0) +
-                 " px = " + std::to_string(gridCellWidths) + " ball widths  ([ ])";
+                 " px = " + fixed(float(hitbox::kGridCellPerAverageSide) * gridCellScale, 2) +
+                 " ball widths  ([ ])";
     lines += "\n";
     sf::Color color = sf::Color::White;
     if (bruteForceSkipped)

@@ -42,7 +42,9 @@ const float pickupRadius = 11.f;
 const int pickupsPerPile = 10;
 const float pickupDrag = 1.5f; // per second: a knocked pickup slides to a stop
 
-const int maxGridCellWidths = 16;
+// [ and ] halve or double the grid's cell, between these multiples of the framework's rule.
+const float smallestGridCellScale = 0.25f;
+const float largestGridCellScale = 4.f;
 
 hitbox::Vec2 fromAngle(float angle, float length)
 {
@@ -97,15 +99,15 @@ void ManyObjectsLevel::rebuildBroadphase()
         broadphase = hitbox::makeBroadphase(method);
         return;
     }
-    // The grid's cell follows the balls' size, so a cell holds about the same number of
-    // balls at 100 or 100,000 and the cost per ball stays flat. makeBroadphase would pick
-    // one ball width by itself; the lab lets you change it ([ and ]) to see the trade-off:
-    // small cells, many cells to fill; big cells, many pairs per cell.
+    // The grid's cell follows the balls' size (the framework's rule, gridCellSizeFor), so a
+    // cell holds about the same number of balls at 100 or 100,000 and the cost per ball stays
+    // flat. The lab lets you scale it ([ and ]) to see the trade-off: small cells, many cells
+    // to fill; big cells, many pairs per cell.
     float widths = 0.f;
     for (const Ball& ball : balls)
         widths += 2.f * ball.radius;
     const float averageWidth = balls.empty() ? 10.f : widths / static_cast<float>(balls.size());
-    gridCellSize = averageWidth * static_cast<float>(gridCellWidths);
+    gridCellSize = static_cast<float>(hitbox::gridCellSizeFor(averageWidth)) * gridCellScale;
     broadphase = std::make_unique<hitbox::GridBroadphase>(gridCellSize);
 }
 
@@ -197,14 +199,14 @@ void ManyObjectsLevel::handleInput(const Input& input, float)
         startScene(Scene::Layers, 0);
     if (input.isPressed(sf::Keyboard::Key::M))
         setMethod(static_cast<hitbox::BroadphaseMethod>((static_cast<int>(method) + 1) % 4));
-    if (input.isPressed(sf::Keyboard::Key::LBracket) && gridCellWidths > 1)
+    if (input.isPressed(sf::Keyboard::Key::LBracket) && gridCellScale > smallestGridCellScale)
     {
-        gridCellWidths /= 2;
+        gridCellScale /= 2.f;
         rebuildBroadphase();
     }
-    if (input.isPressed(sf::Keyboard::Key::RBracket) && gridCellWidths < maxGridCellWidths)
+    if (input.isPressed(sf::Keyboard::Key::RBracket) && gridCellScale < largestGridCellScale)
     {
-        gridCellWidths *= 2;
+        gridCellScale *= 2.f;
         rebuildBroadphase();
     }
 

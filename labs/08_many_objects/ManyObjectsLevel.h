@@ -132,7 +132,7 @@ private:
     bool stoppedAsTooSlow = false;
     std::size_t ownShipHits = 0;
     std::size_t pickupBumps = 0;
-    int gridCellWidths = 8; // grid cell = this many average ball widths
+    float gridCellScale = 1.f; // grid cell = hitbox::gridCellSizeFor(average ball width) * this
     float gridCellSize = 0.f;
     float fireTimer = 0.f;
     float fireAngle = 0.f;

@@ -195,11 +195,10 @@ TEST(GridBroadphase, PicksACellSizeFromTheBoxesWhenNotGivenOne)
     hitbox::GridBroadphase grid;
     std::vector<Pair> pairs;
     grid.findPairs(items, pairs);
-    EXPECT_GE(grid.getCellSize(), 8.f);
-    EXPECT_LE(grid.getCellSize(), 64.f);
+    EXPECT_FLOAT_EQ(grid.layout().cellSize, float(hitbox::gridCellSizeFor(16.0))); // the rule
     hitbox::GridBroadphase fixedGrid(25.f);
     fixedGrid.findPairs(items, pairs);
-    EXPECT_FLOAT_EQ(fixedGrid.getCellSize(), 25.f);
+    EXPECT_FLOAT_EQ(fixedGrid.layout().cellSize, 25.f);
 }
 
 TEST(Broadphase, DrawsItsStructureForTheDebugView)

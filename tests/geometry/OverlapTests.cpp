@@ -64,20 +64,6 @@ TEST(PointInBox, NanOrInfinityIsNeverInside)
     EXPECT_FALSE(hitbox::pointInBox({5.f, 5.f}, {-infinite, 0.f, infinite, 10.f}));
 }
 
-TEST(PointInBoxContact, PushesOutThroughTheNearestEdge)
-{
-    const Contact contact = hitbox::pointInBoxContact({2.f, 5.f}, {0.f, 0.f, 10.f, 10.f});
-    ASSERT_TRUE(contact.hit);
-    EXPECT_EQ(contact.normal, hitbox::Vec2(-1.f, 0.f));
-    EXPECT_FLOAT_EQ(contact.depth, 2.f);
-    EXPECT_EQ(contact.point, hitbox::Vec2(0.f, 5.f));
-}
-
-TEST(PointInBoxContact, NoContactOnTheEdge)
-{
-    EXPECT_FALSE(hitbox::pointInBoxContact({0.f, 5.f}, {0.f, 0.f, 10.f, 10.f}).hit);
-}
-
 // ---- Point in circle ---------------------------------------------------------------------
 
 TEST(PointInCircle, InsideOutsideAndOnTheRim)
@@ -92,15 +78,6 @@ TEST(PointInCircle, NegativeOrNanRadiusContainsNothing)
 {
     EXPECT_FALSE(hitbox::pointInCircle({0.f, 0.f}, {{0.f, 0.f}, -5.f}));
     EXPECT_FALSE(hitbox::pointInCircle({0.f, 0.f}, {{0.f, 0.f}, notANumber}));
-}
-
-TEST(PointInCircleContact, NormalPointsFromCentreToPoint)
-{
-    const Contact contact = hitbox::pointInCircleContact({0.f, 3.f}, {{0.f, 0.f}, 5.f});
-    ASSERT_TRUE(contact.hit);
-    EXPECT_EQ(contact.normal, hitbox::Vec2(0.f, 1.f));
-    EXPECT_FLOAT_EQ(contact.depth, 2.f);
-    EXPECT_EQ(contact.point, hitbox::Vec2(0.f, 5.f));
 }
 
 // ---- Box vs box --------------------------------------------------------------------------

@@ -13,7 +13,6 @@
 
 using hitbox::Circle;
 using hitbox::Hit;
-using hitbox::segmentVsCircle;
 using hitbox::sweepCircleVsBox;
 using hitbox::sweepCircleVsCircle;
 using hitbox::sweepCircleVsMovingCircle;
@@ -26,6 +25,12 @@ const float notANumber = std::numeric_limits<float>::quiet_NaN();
 const float infinity = std::numeric_limits<float>::infinity();
 const float diagonal = std::sqrt(0.5f);
 
+// A point (a circle of radius 0) moving from `start` to `end`: the ray cast of a circle.
+Hit segmentVsCircle(hitbox::Vec2 start, hitbox::Vec2 end, const Circle& circle)
+{
+    return sweepCircleVsCircle(Circle{start, 0.f}, end - start, circle);
+}
+
 void expectNear(hitbox::Vec2 actual, hitbox::Vec2 expected, float tolerance = 1e-4f)
 {
     EXPECT_NEAR(actual.x, expected.x, tolerance) << ::testing::PrintToString(actual);
@@ -33,7 +38,7 @@ void expectNear(hitbox::Vec2 actual, hitbox::Vec2 expected, float tolerance = 1e
 }
 } // namespace
 
-// ---- segment vs circle -------------------------------------------------------------------
+// ---- a point moving against a circle ----------------------------------------------------
 
 TEST(SegmentVsCircle, HitsTheNearRimFromEachSide)
 {

@@ -197,8 +197,6 @@ inline Tally sweptCircles(long cases, unsigned seed)
         hitbox::Hit hit;
         if (moving)
             hit = hitbox::sweepCircleVsMovingCircle(mover, move, target, targetMove);
-        else if (mover.radius == 0.f)
-            hit = hitbox::segmentVsCircle(mover.center, mover.center + move, target);
         else
             hit = hitbox::sweepCircleVsCircle(mover, move, target);
         // Independent: both centres walk along their own moves.

@@ -81,7 +81,7 @@ public:
     virtual BroadphaseLayout layout() const { return {}; }
 };
 
-// A broadphase with good defaults (the grid picks its cell size from the items' sizes).
+// A broadphase with good defaults (the grid's cell size: gridCellSizeFor, GridBroadphase.h).
 std::unique_ptr<Broadphase> makeBroadphase(BroadphaseMethod method);
 // "BruteForce", "SortAndSweep", "Grid", "Quadtree".
 const char* toString(BroadphaseMethod method);

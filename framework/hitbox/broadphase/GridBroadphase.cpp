@@ -9,14 +9,20 @@ namespace hitbox
 namespace
 {
 
-// Cell size = this times the average box side. Measured in tests/benchmarks (see
-// docs/performance.md): smaller cells list big boxes many times, bigger cells test more pairs.
-constexpr float kCellSizePerAverageSide = 3.0f;
 // Never more than this many cells per item, so empty space (or one far-away object) cannot
 // make the grid huge: the cell size grows instead.
 constexpr double kMaxCellsPerItem = 4.0;
 // Far below anything a game uses, and 1 / this is still a float.
 constexpr double kSmallestCellSize = 1e-30;
+
+// Branch-free select: `oneOrZero ? ifOne : ifZero` with bit masks. Where g++ 12 compiles the
+// `?:` to a jump, the CPU has to guess it, and a wrong guess costs more than these three steps.
+inline std::uint32_t selectWithoutBranch(std::uint32_t oneOrZero, std::uint32_t ifOne,
+                                         std::uint32_t ifZero)
+{
+    const std::uint32_t keep = 0u - oneOrZero; // unsigned wrap-around: 0 - 1 is all ones
+    return (ifOne & keep) | (ifZero & ~keep);
+}
 
 } // namespace
 
@@ -58,7 +64,7 @@ void GridBroadphase::chooseGrid()
     const double width = double(right) - left;
     const double height = double(bottom) - top;
     double cell = fixedCellSize > 0.f ? fixedCellSize
-                  : usable > 0        ? kCellSizePerAverageSide * sideSum / double(usable)
+                  : usable > 0        ? gridCellSizeFor(sideSum / double(usable))
                                       : 1.0;
     if (!(cell > 0.0) || !std::isfinite(cell))
         cell = std::max({width, height, 1.0}); // every box has zero size: one big cell
@@ -109,21 +115,21 @@ void GridBroadphase::assignCells()
     }
 }
 
-// Calls visit(cell, covered, firstCell) for each cell of the range (cell = row * width +
-// column; firstCell = the entry's kFirstColumn / kFirstRow bits).
-// Most boxes cover one cell, two (side by side or one above the other) or 2 x 2. They always
-// get the same four calls, so the caller needs no branch: a call for a column or row the box
-// does not reach names one of the box's own cells again, with covered = 0 (add nothing, take
-// no place). Why: whether the next box crosses a column border (one time in three for an
-// average box) or a row border is unpredictable, and the CPU's wrong guesses cost more than
-// the extra calls (measured: docs/performance.md).
+// Calls visit(cell, covered, flags) for each cell of the range (cell = row * width + column;
+// flags = the entry's kFirstColumnFlag / kFirstRowFlag).
+// Four calls for small boxes: most boxes cover one cell, two (side by side or one above the
+// other) or 2 x 2, and all of them get the same four calls, so the caller needs no branch: a
+// call for a column or row the box does not reach names one of the box's own cells again, with
+// covered = 0 (add nothing, take no place). Why: whether the next box crosses a column border
+// (one time in three for an average box) or a row border is unpredictable, and the CPU's wrong
+// guesses cost more than the extra calls (measured: docs/performance.md).
 // Bigger boxes get one call per cell they cover.
 template <typename Visit>
 void GridBroadphase::forEachCell(const CellRange& range, std::size_t width, Visit visit)
 {
-    // 1 if the box reaches the next column (row), 0 if not. For an empty range (x1 = x0 - 1)
-    // the -1 becomes the largest size_t, so the empty range takes the loops below, which
-    // then run zero times.
+    // 1 if the box reaches the next column (row), 0 if not. Empty-range wrap-around: for an
+    // empty range (x1 = x0 - 1) the unsigned -1 is the largest size_t, so it fails `<= 1` and
+    // takes the loops below, which run zero times: no extra test for empty ranges.
     const std::size_t right = std::size_t(range.x1 - range.x0);
     const std::size_t down = std::size_t(range.y1 - range.y0);
     const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
@@ -131,15 +137,15 @@ void GridBroadphase::forEachCell(const CellRange& range, std::size_t width, Visi
     {
         // The cell below and to the right is covered only if the box reaches both.
         visit(cell + down * width + right, std::uint32_t(right & down), 0u);
-        visit(cell + down * width, std::uint32_t(down), kFirstColumn);
-        visit(cell + right, std::uint32_t(right), kFirstRow);
-        visit(cell, 1u, kFirstColumn | kFirstRow);
+        visit(cell + down * width, std::uint32_t(down), kFirstColumnFlag);
+        visit(cell + right, std::uint32_t(right), kFirstRowFlag);
+        visit(cell, 1u, kBothFlags);
         return;
     }
     for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
         for (int cx = range.x0; cx <= range.x1; ++cx)
             visit(std::size_t(cy) * width + std::size_t(cx), 1u,
-                  (cx == range.x0 ? kFirstColumn : 0u) | (cy == range.y0 ? kFirstRow : 0u));
+                  (cx == range.x0 ? kFirstColumnFlag : 0u) | (cy == range.y0 ? kFirstRowFlag : 0u));
 }
 
 void GridBroadphase::listCells()
@@ -167,7 +173,8 @@ void GridBroadphase::listCells()
     for (std::size_t c = 1; c <= cellCount; ++c)
         start[c] += start[c - 1]; // now start[c] = end of cell c
     // [/slide]
-    // One spare entry at the end, for the calls with covered = 0.
+    // The spare entry: one more at the end, written by the calls with covered = 0, so that
+    // they need no branch either.
     const std::uint32_t spare = cellStart[cellCount];
     entries.resize(std::size_t(spare) + 1);
     Entry* out = entries.data();
@@ -176,19 +183,16 @@ void GridBroadphase::listCells()
     for (std::size_t i = count; i-- > 0;)
     {
         const Entry box = {minX[i], maxX[i], minY[i], maxY[i], std::uint32_t(i)};
-        forEachCell(ranges[i], width,
-                    [start, out, spare, &box](std::size_t cell, std::uint32_t covered,
-                                              std::uint32_t firstCell)
-                    {
-                        const std::uint32_t slot = start[cell] - covered;
-                        start[cell] = slot;
-                        Entry entry = box;
-                        entry.itemAndFirstCell |= firstCell;
-                        // slot if covered, else spare, picked with bit masks: g++ 12 compiles
-                        // `covered ? slot : spare` here to a jump, which is a guess again.
-                        const std::uint32_t keep = 0u - covered; // all ones if covered
-                        out[(slot & keep) | (spare & ~keep)] = entry;
-                    });
+        forEachCell(
+            ranges[i], width,
+            [start, out, spare, &box](std::size_t cell, std::uint32_t covered, std::uint32_t flags)
+            {
+                const std::uint32_t slot = start[cell] - covered;
+                start[cell] = slot;
+                Entry entry = box;
+                entry.itemAndFlags |= flags;
+                out[selectWithoutBranch(covered, slot, spare)] = entry;
+            });
     }
 }
 
@@ -209,22 +213,20 @@ void GridBroadphase::testCells()
         for (std::uint32_t p = begin; p < end; ++p)
         {
             const Entry a = entries[p];
-            const std::uint32_t first = a.itemAndFirstCell & kItemBits;
+            const std::uint32_t first = itemOf(a);
             // Room for every pair this row could find (the loop below writes unchecked).
             if (cellPairs.size() < found + (end - p))
                 cellPairs.resize(std::max(2 * cellPairs.size(), found + (end - p)));
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
                 const Entry& b = entries[q];
-                // Two boxes share several cells? Only the first cell of both (their first
-                // column and first row) reports them, so each pair is reported once.
-                const bool firstSharedCell =
-                    ((a.itemAndFirstCell | b.itemAndFirstCell) & ~kItemBits) == ~kItemBits;
+                // Each pair once: only the top-left cell two boxes share reports them.
+                const bool reportHere = isTopLeftSharedCell(a, b);
                 const bool overlap = spansOverlap(a.minX, a.maxX, b.minX, b.maxX) &
                                      spansOverlap(a.minY, a.maxY, b.minY, b.maxY);
-                // Branch-free: always write the pair, keep it (move on) only on a hit.
-                cellPairs[found] = {first, b.itemAndFirstCell & kItemBits};
-                found += firstSharedCell & overlap;
+                // Branch-free append: always write the pair, move past it only on a hit.
+                cellPairs[found] = {first, itemOf(b)};
+                found += reportHere & overlap;
             }
         }
         // [/slide]
@@ -273,6 +275,7 @@ void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
     // insertion sort over all the pairs fixes the few that are not: a pass over the pairs
     // whose "in order?" test is almost always yes (a sort per box was a loop per box, whose
     // number of rounds the CPU could not guess).
+    // Pair key: (first, second) packed into one 64-bit number, so one comparison orders both.
     auto key = [](const Pair& pair)
     { return std::uint64_t(pair.first) << 32 | std::uint64_t(pair.second); };
     Pair* sorted = pairs.data();

@@ -4,7 +4,7 @@
 // Each frame: work out which cells each box covers, list every cell's boxes (a counting sort,
 // so each list is in item order and needs no allocation once warmed up), then test only the
 // boxes that share a cell. A box bigger than a cell is listed in every cell it covers. Two
-// boxes that share several cells are reported once: only in the lowest cell they share.
+// boxes that share several cells are reported once: only in the top-left cell they share.
 #pragma once
 
 #include "hitbox/broadphase/BoxArrays.h"
@@ -13,20 +13,29 @@
 namespace hitbox
 {
 
+// THE GRID'S CELL RULE, in one place: a cell is this many times the boxes' average side.
+// Smaller cells list each box in more cells, bigger ones test more pairs per cell; 2.5x to 4x
+// measured fastest (docs/performance.md, the cell-size rows).
+constexpr double kGridCellPerAverageSide = 3.0;
+
+// The cell size the rule gives for boxes whose sides average `averageSide` pixels (a ball's
+// side is its diameter). GridBroadphase uses it when given no cell size; lab 8 starts from it.
+constexpr double gridCellSizeFor(double averageSide)
+{
+    return kGridCellPerAverageSide * averageSide;
+}
+
 class GridBroadphase : public Broadphase
 {
 public:
-    // cellSize <= 0: pick it each frame from the items' average size.
+    // cellSize <= 0: gridCellSizeFor(the items' average side), worked out every frame.
     explicit GridBroadphase(float cellSize = 0.f);
 
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
     const char* name() const override { return "Grid"; }
     BroadphaseStats stats() const override { return lastStats; }
-    // The grid and how many boxes each cell holds.
+    // The grid (its cellSize: the one the last findPairs used) and how many boxes each cell holds.
     BroadphaseLayout layout() const override;
-
-    // The cell size used by the last findPairs, in pixels.
-    float getCellSize() const { return usedCellSize; }
 
 private:
     void chooseGrid();
@@ -37,18 +46,31 @@ private:
 
     void dropPairsLayersForbid();
 
-    // One entry per (cell, box): the box's numbers copied next to its cell's other boxes,
-    // so testing a cell reads memory in order. 20 bytes: filling cells in random order costs
-    // a memory write per entry, so smaller entries are faster (layers are checked afterwards,
+    // One entry per (cell, box): the box's edges copied next to its cell's other boxes, so
+    // testing a cell reads memory in order. 20 bytes: filling cells in random order costs a
+    // memory write per entry, so smaller entries are faster (layers are checked afterwards,
     // on the few pairs found, instead of being copied into every entry).
     struct Entry
     {
         float minX, maxX, minY, maxY;
-        std::uint32_t itemAndFirstCell; // the item index | kFirstColumn | kFirstRow
+        // Packed index and flags (one 32-bit word instead of three): the item's index in the
+        // low 30 bits, and two flags in the top two bits saying whether this cell is in the
+        // box's leftmost column (kFirstColumnFlag) and top row (kFirstRowFlag).
+        std::uint32_t itemAndFlags;
     };
-    static constexpr std::uint32_t kItemBits = 0x3FFFFFFF;
-    static constexpr std::uint32_t kFirstColumn = 1u << 30; // the box's leftmost column
-    static constexpr std::uint32_t kFirstRow = 1u << 31;    // the box's top row
+    static constexpr std::uint32_t kFirstColumnFlag = 1u << 30;
+    static constexpr std::uint32_t kFirstRowFlag = 1u << 31;
+    static constexpr std::uint32_t kBothFlags = kFirstColumnFlag | kFirstRowFlag;
+    static constexpr std::uint32_t kItemIndexMask = ~kBothFlags; // the low 30 bits
+
+    // The item an entry belongs to: its packed word without the flags.
+    static std::uint32_t itemOf(const Entry& entry) { return entry.itemAndFlags & kItemIndexMask; }
+    // Report-once rule: boxes sharing several cells are reported only in the top-left cell they
+    // share, the one in the leftmost column of one of them and the top row of one of them.
+    static bool isTopLeftSharedCell(const Entry& a, const Entry& b)
+    {
+        return ((a.itemAndFlags | b.itemAndFlags) & kBothFlags) == kBothFlags;
+    }
 
     float fixedCellSize;
     BoxArrays boxes;
@@ -64,7 +86,7 @@ private:
     {
         int x0, x1, y0, y1;
     };
-    // Calls visit(cell, covered, firstCell) for the cells of a range (see the .cpp).
+    // Calls visit(cell, covered, flags) for the cells of a range (see the .cpp).
     template <typename Visit>
     static void forEachCell(const CellRange& range, std::size_t width, Visit visit);
     std::vector<CellRange> cellRanges;

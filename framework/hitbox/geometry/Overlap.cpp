@@ -94,16 +94,6 @@ bool circleVsBox(const Circle& circle, const Box& box)
 }
 // [/slide]
 
-Contact pointInBoxContact(Vec2 point, const Box& box)
-{
-    return circleVsBoxContact(Circle{point, 0.f}, box);
-}
-
-Contact pointInCircleContact(Vec2 point, const Circle& circle)
-{
-    return circleVsCircleContact(Circle{point, 0.f}, circle);
-}
-
 // [slide:aabb-contact]
 Contact boxVsBoxContact(const Box& first, const Box& second)
 {

@@ -1,22 +1,9 @@
 // Overlap.h - is a shape inside another? Points, boxes and circles that are not moving.
 //
-// THE EDGE RULE (the same in every test in Hitbox):
-//   Two shapes collide only when one reaches strictly inside the other: the penetration
-//   depth (the shortest move that separates them) must be > 0. Touching edges, touching
-//   corners and a point exactly on an edge do NOT collide.
-// Why: a response that pushes two objects apart leaves them exactly touching. If touching
-// counted, they would "collide" again next frame and bounce back and forth (the sticking
-// bug). It also matches sf::Rect::intersects, so SFML code and Hitbox agree.
-//
-// Degenerate input, each with a defined answer (tests in tests/geometry/):
-//   - NaN or infinite coordinates: never collide (`false`, Contact with hit == false).
-//   - Zero-size box: a point or a line; it collides when it lies strictly inside the other
-//     (sf::Rect::intersects differs here: it never reports a zero-size box).
-//   - Negative box size: the box spans from left + width to left, as in SFML.
-//   - Zero radius: a point. Negative radius: not a circle, never collides.
-//
-// Every yes/no test has a Contact version returning the normal and the depth (see
-// Shapes.h for the normal convention). The yes/no tests never take a square root.
+// One edge rule for every test in Hitbox: two shapes collide only when they share area
+// (spansOverlap, Shapes.h). Touching is not colliding, because a response that pushes two
+// objects apart leaves them exactly touching; if that counted they would collide again next
+// frame (the sticking bug). It is also how sf::Rect::intersects reads boxes.
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"
@@ -24,20 +11,29 @@
 namespace hitbox
 {
 
+// True when the point is strictly inside: a point on an edge or a corner is outside.
+// A zero-size box contains nothing; NaN or infinite: false.
 bool pointInBox(Vec2 point, const Box& box);
+// True when the point is strictly inside: a point on the rim is outside. No square root.
+// Negative or NaN radius: false.
 bool pointInCircle(Vec2 point, const Circle& circle);
+// True when the boxes share area: touching edges or corners do not. A zero-size box (a point
+// or a line) collides when it lies strictly inside the other (sf::Rect::intersects never
+// reports one); negative sizes span backwards; NaN or infinite: false.
 bool boxVsBox(const Box& a, const Box& b);
+// True when the centres are closer than the sum of the radii (squared, no square root):
+// touching rims do not. Radius 0 is a point; negative radius or NaN: false.
 bool circleVsCircle(const Circle& a, const Circle& b);
+// True when the box's closest point to the centre (Ericson, Real-Time Collision Detection,
+// 5.1.3) is strictly inside the circle, or the centre is strictly inside the box.
 bool circleVsBox(const Circle& circle, const Box& box);
 
-// A = the point. Normal: out of the nearest edge of the box; depth: distance to that edge.
-Contact pointInBoxContact(Vec2 point, const Box& box);
-// A = the point. Normal: from the circle's centre towards the point.
-Contact pointInCircleContact(Vec2 point, const Circle& circle);
-// Pushes along the axis of least overlap. Equal overlaps: the x axis wins.
+// boxVsBox with the push-out: along the axis of least overlap, ties to the x axis.
+// `normal` points out of b towards a (Contact, Shapes.h).
 Contact boxVsBoxContact(const Box& a, const Box& b);
+// circleVsCircle with the push-out along the centres' line. Same centres: normal (-1, 0).
 Contact circleVsCircleContact(const Circle& a, const Circle& b);
-// A = the circle, B = the box. A centre inside the box is pushed out of the nearest edge.
+// circleVsBox with the push-out; a centre inside the box is pushed out of the nearest edge.
 Contact circleVsBoxContact(const Circle& circle, const Box& box);
 
 } // namespace hitbox

@@ -1,18 +1,9 @@
 // Response.h - what to do once a test has found a hit: slide, bounce, push out, share speed.
 //
 // Detection (Overlap.h, Sweep.h, SweptCircle.h, Polygon.h, Capsule.h) says WHAT happened;
-// these small functions turn that answer into new velocities or positions. They only read
-// the result values, so they work with every test.
-//
-// Units: pixels, seconds, pixels per second. Normals are unit vectors pointing out of the
-// thing that was hit towards the thing that moves (the convention of Shapes.h).
-//
-// EDGE RULES:
-//   - No hit (hit == false): the velocity (or offset) comes back unchanged (or zero).
-//   - Moving away from the surface already (velocity . normal >= 0): nothing to remove,
-//     the velocity comes back unchanged. So a response never pulls an object into a wall.
-//   - A zero, NaN or non-unit normal is used as given; the detection functions always give
-//     a unit normal with a hit.
+// these turn its result into new velocities or positions. Units: pixels, seconds, pixels per
+// second. Normals point out of what was hit towards what moves (Shapes.h) and are used as
+// given (the detection functions always give a unit normal with a hit).
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"
@@ -21,33 +12,31 @@
 namespace hitbox
 {
 
-// javidx9's slide: the velocity for THIS step, so that moving by velocity * dt stops the
-// mover at the surface (time t) and keeps the rest of its motion along the surface:
-//   v + n * |v . n| * (1 - t)
-// Only the part of the velocity going INTO the surface is taken away, and only for the part
-// of the step after the impact (1 - t). Started inside (t = 0): the whole inward part goes.
+// The velocity for THIS step that stops at the surface at hit.time and slides along it for the
+// rest: v + n * |v . n| * (1 - t) (javidx9, "Arbitrary Rectangle Collision Detection &
+// Resolution"). No hit, or already moving away (v . n >= 0): velocity unchanged.
 Vec2 slideVelocity(Vec2 velocity, const Hit& hit);
 
-// Reflect the velocity off a surface: the part into the surface is reversed and scaled by
-// `restitution` (1 = perfectly bouncy, 0 = stops dead against it, like a slide). The part
-// along the surface is kept. Restitution is clamped to [0, 1].
+// The velocity reflected off a surface: the part into it reversed and scaled by `restitution`
+// (1 = perfectly bouncy, 0 = stops dead, like a slide; clamped to [0, 1]), the part along it
+// kept. Already moving away (velocity . normal >= 0): unchanged, never pulled into the wall.
 Vec2 bounceVelocity(Vec2 velocity, Vec2 normal, float restitution);
 
-// How far to move A so that it stops overlapping B: normal * depth (the minimum translation
-// vector). After it they touch, which is not a collision. (0, 0) when there is no hit.
+// How far to move A so it stops overlapping B: normal * depth (the minimum translation
+// vector), after which they touch, which is not a collision. No hit: (0, 0).
 Vec2 pushOutOffset(const Contact& contact);
 
-// Two bodies that bump: new velocities after an elastic collision along `normal` (out of the
-// second towards the first, as a Contact's normal with A = first). Momentum is kept and, with
-// restitution 1, so is kinetic energy. Only the speeds along
-// the normal change. Masses in any unit (only their ratio matters): an infinite mass is an
-// immovable wall; a mass <= 0, NaN or too small to invert in float (below about 1e-38), or
-// bodies already moving apart, change nothing.
+// The two velocities after a collision.
 struct VelocityPair
 {
     Vec2 first;
     Vec2 second;
 };
+// Two bodies that bump along `normal` (out of the second towards the first, a Contact's normal
+// with A = first): only the speeds along the normal change; momentum is kept, and with
+// restitution 1 so is kinetic energy. Masses in any unit (only their ratio matters); an
+// infinite mass is an immovable wall. A mass <= 0, NaN or below about 1e-38 (no float
+// inverse), or bodies already moving apart: velocities unchanged.
 VelocityPair elasticCollision(Vec2 firstVelocity, float firstMass, Vec2 secondVelocity,
                               float secondMass, Vec2 normal, float restitution = 1.f);
 

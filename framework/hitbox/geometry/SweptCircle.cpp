@@ -62,11 +62,6 @@ Hit castAgainstCircle(Vec2 start, Vec2 move, const Circle& circle)
 
 } // namespace
 
-Hit segmentVsCircle(Vec2 start, Vec2 end, const Circle& circle)
-{
-    return sweepCircleVsCircle(Circle{start, 0.f}, end - start, circle);
-}
-
 Hit sweepCircleVsCircle(const Circle& mover, Vec2 displacement, const Circle& target)
 {
     if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
