@@ -38,6 +38,7 @@ fi
 keep() {
     case $1 in
         tests/labs/*/hidden/*) return 1 ;; # hidden grading variants and the packs' own checks
+        tests/course/*/*) return 1 ;;      # course lab folders (scripts/check-course-labs.sh)
         framework/* | assets/* | tests/support/* | tests/geometry/* | tests/labs/*) return 0 ;;
         tests/objects/* | tests/app/* | tests/debug/* | tests/course/*.cpp) return 0 ;;
         CMakeLists.txt | CMakePresets.json | .clang-format | .gitignore | tests/CMakeLists.txt) return 0 ;;
