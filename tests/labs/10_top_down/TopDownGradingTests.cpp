@@ -41,6 +41,15 @@ struct Game
     TopDownLevel level;
     Input input;
 };
+
+// Where `actor` ends up after `seconds` of walking right at `speed` px/s, moved by the level's
+// moveAndSlide alone (no input, no enemy state, no hits), one fixed step at a time.
+Actor afterWalkingRight(const TopDownLevel& level, Actor actor, float speed, float seconds)
+{
+    for (int step = 0; step < static_cast<int>(seconds * hitbox::stepsPerSecond + 0.5f); ++step)
+        level.moveAndSlide(actor, {speed * hitbox::stepSeconds, 0.f});
+    return actor;
+}
 } // namespace
 
 // ---- Task 1: per-axis move-then-resolve ------------------------------------------------------
@@ -73,26 +82,22 @@ TEST(Task1PerAxis, WalkingDiagonallyIntoAWallSlidesAlongIt)
 
 TEST(Task1PerAxis, EnemiesAreStoppedByWallsToo)
 {
-    // The slime is moved by moveAndSlide itself, a frame's step at a time, so this test
-    // does not depend on whether it has noticed anyone (task 2).
     Game game;
     game.level.addWall({480.f, 100.f, 40.f, 400.f});
     game.level.addEnemy({400.f, 300.f});
-    Actor slime = game.level.getEnemies().at(0).body;
-    for (int frame = 0; frame < 120; ++frame)
-        game.level.moveAndSlide(slime, {TopDownLevel::enemySpeed * hitbox::stepSeconds, 0.f});
+    const Actor slime = afterWalkingRight(game.level, game.level.getEnemies().at(0).body,
+                                          TopDownLevel::enemySpeed, 1.f);
     EXPECT_FLOAT_EQ(slime.hitbox().left + slime.hitbox().width, 480.f);
 }
 
 TEST(Task1PerAxis, KnockbackSpeedStopsAtAWallToo)
 {
-    // A knocked-back actor moves 700 px/s, through moveAndSlide like any other move.
+    // A knocked-back actor moves fastest of all, through moveAndSlide like any other move.
     Game game;
     game.level.addWall({560.f, 200.f, 40.f, 200.f});
     game.level.placePlayer({500.f, 300.f});
-    Actor actor = game.level.getPlayer();
-    for (int frame = 0; frame < 30; ++frame)
-        game.level.moveAndSlide(actor, {TopDownLevel::knockbackSpeed * hitbox::stepSeconds, 0.f});
+    const Actor actor =
+        afterWalkingRight(game.level, game.player(), TopDownLevel::knockbackSpeed, 0.25f);
     EXPECT_FLOAT_EQ(actor.hitbox().left + actor.hitbox().width, 560.f);
 }
 
