@@ -38,7 +38,9 @@ fi
 keep() {
     case $1 in
         tests/labs/*/hidden/*) return 1 ;; # hidden grading variants and the packs' own checks
-        framework/* | assets/* | tests/support/* | tests/geometry/* | tests/framework/* | tests/labs/*) return 0 ;;
+        tests/course/*/*) return 1 ;;      # course lab folders (scripts/check-course-labs.sh)
+        framework/* | assets/* | tests/support/* | tests/geometry/* | tests/labs/*) return 0 ;;
+        tests/objects/* | tests/app/* | tests/debug/* | tests/course/*.cpp) return 0 ;;
         CMakeLists.txt | CMakePresets.json | .clang-format | .gitignore | tests/CMakeLists.txt) return 0 ;;
         scripts/grade.sh | scripts/lab-tests.sh | scripts/install-deps.sh) return 0 ;;
         scripts/grading/grader.py | scripts/grading/task-mark.sh) return 0 ;;

@@ -191,15 +191,13 @@ function(hitbox_add_course_lab lab_folder)
 
     if(generation EQUAL 2025)
         file(GLOB compat_sources CONFIGURE_DEPENDS "${compat_folder}/Framework/*.cpp")
-        add_library(hitbox_course2025 STATIC ${compat_sources})
+        # Hitbox's Animation is the course's Animation; nothing else of the object layer is:
+        # the 2019-24 classes of the same names (GameObject, Input, BaseLevel) must not be
+        # linked into the same program, so the course's classes sit on Hitbox's maths only.
+        add_library(hitbox_course2025 STATIC ${compat_sources}
+            "${PROJECT_SOURCE_DIR}/framework/hitbox/objects/Animation.cpp")
         target_include_directories(hitbox_course2025 PUBLIC "${compat_folder}")
-        # The course's classes on Hitbox's maths only: the 2019-24 classes of the same
-        # names (GameObject, Input, BaseLevel) must not be linked into the same program.
-        if(TARGET SFML::Graphics)
-            target_link_libraries(hitbox_course2025 PUBLIC hitbox_geometry SFML::Graphics)
-        else()
-            target_link_libraries(hitbox_course2025 PUBLIC hitbox_geometry sfml-graphics)
-        endif()
+        target_link_libraries(hitbox_course2025 PUBLIC hitbox_sfml hitbox_geometry)
         hitbox_warnings(hitbox_course2025)
         target_link_libraries(course_lab PRIVATE hitbox_course2025)
     else()

@@ -114,3 +114,14 @@ bool Animation::isPlaying() const
 {
     return playing;
 }
+
+void Animation::stop()
+{
+    playing = false;
+    reset();
+}
+
+void Animation::pause()
+{
+    playing = false;
+}

@@ -48,6 +48,8 @@ public:
     void setPlaying(bool isPlaying);
     bool getPlaying() const;
     bool isPlaying() const;
+    void stop();  // stops playing and goes back to the first frame
+    void pause(); // stops playing and keeps the frame: setPlaying(true) carries on from it
 
 private:
     std::vector<sf::IntRect> frames;

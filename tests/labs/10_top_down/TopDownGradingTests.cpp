@@ -41,6 +41,15 @@ struct Game
     TopDownLevel level;
     Input input;
 };
+
+// Where `actor` ends up after `seconds` of walking right at `speed` px/s, moved by the level's
+// moveAndSlide alone (no input, no enemy state, no hits), one fixed step at a time.
+Actor afterWalkingRight(const TopDownLevel& level, Actor actor, float speed, float seconds)
+{
+    for (int step = 0; step < static_cast<int>(seconds * hitbox::stepsPerSecond + 0.5f); ++step)
+        level.moveAndSlide(actor, {speed * hitbox::stepSeconds, 0.f});
+    return actor;
+}
 } // namespace
 
 // ---- Task 1: per-axis move-then-resolve ------------------------------------------------------
@@ -76,10 +85,38 @@ TEST(Task1PerAxis, EnemiesAreStoppedByWallsToo)
     Game game;
     game.level.addWall({480.f, 100.f, 40.f, 400.f});
     game.level.addEnemy({400.f, 300.f});
-    game.level.placePlayer({600.f, 300.f}); // behind the wall, inside the notice radius
-    game.run(2.f);
-    const hitbox::Box feet = game.level.getEnemies().at(0).body.hitbox();
-    EXPECT_LE(feet.left + feet.width, 480.f);
+    const Actor slime = afterWalkingRight(game.level, game.level.getEnemies().at(0).body,
+                                          TopDownLevel::enemySpeed, 1.f);
+    EXPECT_FLOAT_EQ(slime.hitbox().left + slime.hitbox().width, 480.f);
+}
+
+TEST(Task1PerAxis, KnockbackSpeedStopsAtAWallToo)
+{
+    // A knocked-back actor moves fastest of all, through moveAndSlide like any other move.
+    Game game;
+    game.level.addWall({560.f, 200.f, 40.f, 200.f});
+    game.level.placePlayer({500.f, 300.f});
+    const Actor actor =
+        afterWalkingRight(game.level, game.player(), TopDownLevel::knockbackSpeed, 0.25f);
+    EXPECT_FLOAT_EQ(actor.hitbox().left + actor.hitbox().width, 560.f);
+}
+
+TEST(Task1PerAxis, FeetTouchingAWallSlideAlongItFreely)
+{
+    // The edge rule: touching is not overlapping. Feet flush against a wall's side walk
+    // along it without being pushed anywhere, and can walk away from it.
+    Game game;
+    game.level.addWall({600.f, 200.f, 40.f, 300.f});
+    game.level.placePlayer({500.f, 350.f});
+    Actor actor = game.level.getPlayer();
+    actor.feet.x = 600.f - actor.hitboxSize.x / 2.f; // right edge exactly on the wall
+    game.level.moveAndSlide(actor, {0.f, 20.f});
+    EXPECT_FLOAT_EQ(actor.feet.y, 370.f) << "moved along the wall";
+    EXPECT_FLOAT_EQ(actor.hitbox().left + actor.hitbox().width, 600.f) << "still flush";
+    game.level.moveAndSlide(actor, {0.f, -40.f});
+    EXPECT_FLOAT_EQ(actor.feet.y, 330.f) << "and back up";
+    game.level.moveAndSlide(actor, {-10.f, 0.f});
+    EXPECT_FLOAT_EQ(actor.hitbox().left + actor.hitbox().width, 590.f) << "and away from it";
 }
 
 TEST(Task1PerAxis, ATreeTrunkBlocksButTheLeavesDoNot)
@@ -124,23 +161,33 @@ TEST(Task2Radii, ExactlyOnACircleCountsAsOutside)
               EnemyState::Chase);
 }
 
-TEST(Task2Radii, ANoticingEnemyWalksUpToThePlayerAndStrikes)
+TEST(Task2Radii, EveryFrameEachEnemyChoosesByItsDistanceToThePlayer)
+{
+    // One frame: each slime's state is chosen before anything moves or is hurt, so this
+    // checks task 2 alone.
+    Game game;
+    game.level.placePlayer({600.f, 300.f});
+    game.level.addEnemy({600.f - TopDownLevel::attackRadius + 10.f, 300.f}); // attack
+    game.level.addEnemy({600.f + TopDownLevel::noticeRadius - 10.f, 300.f}); // chase
+    game.level.addEnemy({600.f, 300.f + TopDownLevel::noticeRadius + 10.f}); // idle
+    game.frame();
+    const std::vector<Enemy>& enemies = game.level.getEnemies();
+    ASSERT_EQ(enemies.size(), 3u);
+    EXPECT_EQ(enemies[0].state, EnemyState::Attack);
+    EXPECT_EQ(enemies[1].state, EnemyState::Chase);
+    EXPECT_EQ(enemies[2].state, EnemyState::Idle);
+}
+
+TEST(Task2Radii, AChasingEnemyWalksTowardsThePlayer)
 {
     Game game;
     game.level.addEnemy({300.f, 300.f});
     game.level.placePlayer({500.f, 300.f});
-    int frames = 0;
-    while (game.player().health == TopDownLevel::playerHealth && frames < 360)
-    {
-        game.frame();
-        ++frames;
-    }
+    game.run(0.5f); // 65 px at 130 px/s: still outside the attack radius
     const Enemy& enemy = game.level.getEnemies().at(0);
-    EXPECT_EQ(game.player().health, TopDownLevel::playerHealth - 1) << "struck once";
-    EXPECT_EQ(enemy.state, EnemyState::Attack);
-    EXPECT_GT(enemy.body.feet.x, 300.f + 100.f) << "walked towards the player";
-    // (200 - 56) px at 130 px/s: about 1.1 s, and no more.
-    EXPECT_LT(frames, 150);
+    EXPECT_EQ(enemy.state, EnemyState::Chase);
+    EXPECT_NEAR(enemy.body.feet.x, 300.f + TopDownLevel::enemySpeed * 0.5f, 1.f);
+    EXPECT_FLOAT_EQ(enemy.body.feet.y, 300.f);
 }
 
 TEST(Task2Radii, AnEnemyThatHasNotNoticedDoesNotMove)
@@ -174,41 +221,53 @@ TEST(Task3Knockback, ASecondHitWhileInvulnerableDoesNothing)
     EXPECT_EQ(victim.health, 2);
 }
 
-TEST(Task3Knockback, AnEnemyNextToThePlayerTakesOneLifePerSecondAtMost)
+TEST(Task3Knockback, TheHitStartsTheGivenInvulnerableTimeAtFullSpeed)
 {
-    Game game;
-    game.level.addEnemy({500.f, 300.f});
-    game.level.placePlayer({540.f, 300.f}); // inside the attack radius
-    game.run(0.95f);                        // two attack intervals, but one invulnerability time
-    EXPECT_EQ(game.player().health, TopDownLevel::playerHealth - 1);
+    Actor victim;
+    victim.feet = {100.f, 100.f};
+    victim.health = 3;
+    EXPECT_TRUE(TopDownLevel::hurt(victim, {70.f, 60.f}, 0.4f)); // from up and to the left
+    EXPECT_FLOAT_EQ(victim.invulnerable, 0.4f);
+    EXPECT_NEAR(std::hypot(victim.knockback.x, victim.knockback.y), TopDownLevel::knockbackSpeed,
+                0.01f);
+    EXPECT_NEAR(victim.knockback.x / victim.knockback.y, 30.f / 40.f, 1e-4f) << "straight away";
 }
 
-TEST(Task3Knockback, TheHitPlayerIsThrownBackAndBlinks)
+TEST(Task3Knockback, InvulnerableTimeRunOutExactlyLetsTheNextHitCount)
 {
+    // The edge of the rule: "while invulnerable > 0". At exactly 0 the hit counts; a
+    // moment before, it does not.
+    Actor victim;
+    victim.health = 3;
+    victim.invulnerable = 0.001f;
+    EXPECT_FALSE(TopDownLevel::hurt(victim, {0.f, 50.f}, 1.f));
+    EXPECT_EQ(victim.health, 3);
+    victim.invulnerable = 0.f;
+    EXPECT_TRUE(TopDownLevel::hurt(victim, {0.f, 50.f}, 1.f));
+    EXPECT_EQ(victim.health, 2);
+}
+
+TEST(Task3Knockback, ASwordHitThrowsTheSlimeBackAndItBlinks)
+{
+    // The player's sword hurts the slime (no slime has to attack: task 2 is not needed).
     Game game;
-    game.level.addEnemy({500.f, 300.f});
-    game.level.placePlayer({540.f, 300.f});
-    game.frame();
+    game.level.addEnemy({560.f, 300.f});
+    game.level.placePlayer({500.f, 300.f});
+    game.tap(sf::Keyboard::Key::D); // face right
+    game.tap(sf::Keyboard::Key::Space);
     bool blinkedOut = false;
     bool shown = false;
-    for (int frame = 0; frame < 60; ++frame)
+    for (int frame = 0; frame < 23; ++frame) // the knockback's 0.2 s
     {
         game.frame();
-        (TopDownLevel::isBlinkedOut(game.player()) ? blinkedOut : shown) = true;
+        const Actor& slime = game.level.getEnemies().at(0).body;
+        (TopDownLevel::isBlinkedOut(slime) ? blinkedOut : shown) = true;
     }
-    EXPECT_GT(game.player().feet.x, 540.f + 50.f) << "knocked back, away from the enemy";
+    const Actor& slime = game.level.getEnemies().at(0).body;
+    EXPECT_GT(slime.feet.x, 560.f + 50.f) << "knocked back, away from the player";
     EXPECT_TRUE(blinkedOut && shown) << "blinks while invulnerable";
-    EXPECT_GT(game.player().invulnerable, 0.f);
-}
-
-TEST(Task3Knockback, KnockbackDoesNotPushThroughAWall)
-{
-    Game game;
-    game.level.addWall({560.f, 200.f, 40.f, 200.f});
-    game.level.addEnemy({500.f, 300.f});
-    game.level.placePlayer({540.f, 300.f});
-    game.run(0.5f);
-    EXPECT_LE(game.player().hitbox().left + game.player().hitbox().width, 560.f);
+    EXPECT_GT(slime.invulnerable, 0.f);
+    EXPECT_EQ(slime.health, TopDownLevel::enemyHealth - 1);
 }
 
 // ---- Ready-made: the sword, the hitbox, drawing order ----------------------------------------

@@ -117,6 +117,27 @@ TEST(Animation, PausedHoldsTheFrameAndResetGoesBackToTheStart)
     EXPECT_EQ(walk.getCurrentFrameIndex(), 0);
 }
 
+// The 2025-26 course's stop() and pause(): both stop playing; only stop() rewinds.
+TEST(Animation, PauseKeepsTheFrameAndItsTimeStopRewinds)
+{
+    Animation walk = threeFrameWalk();
+    walk.animate(0.375f); // frame 1, 0.125 s into it
+    walk.pause();
+    EXPECT_FALSE(walk.isPlaying());
+    walk.animate(1.f);
+    EXPECT_EQ(walk.getCurrentFrameIndex(), 1);
+    walk.setPlaying(true);
+    walk.animate(0.125f); // the 0.125 s before pause() still count: frame 1's time is up
+    EXPECT_EQ(walk.getCurrentFrameIndex(), 2);
+
+    walk.stop();
+    EXPECT_FALSE(walk.isPlaying());
+    EXPECT_EQ(walk.getCurrentFrameIndex(), 0);
+    walk.setPlaying(true);
+    walk.animate(0.2f); // no time carried over from before stop()
+    EXPECT_EQ(walk.getCurrentFrameIndex(), 0);
+}
+
 TEST(Animation, FlippedFrameIsMirroredWithANegativeWidth)
 {
     Animation walk = threeFrameWalk();
