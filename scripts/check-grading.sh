@@ -148,4 +148,5 @@ EOF
 fair_labs=(lab02_bouncing_balls lab04_bullet_through_paper)
 fair_labs+=(lab01_point_in_box)
 fair_labs+=(lab03_bouncing_squares)
+fair_labs+=(lab05_ray_caster)
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"
