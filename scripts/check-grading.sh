@@ -149,4 +149,5 @@ fair_labs=(lab02_bouncing_balls lab04_bullet_through_paper)
 fair_labs+=(lab01_point_in_box)
 fair_labs+=(lab03_bouncing_squares)
 fair_labs+=(lab05_ray_caster)
+fair_labs+=(lab06_rotated_boxes)
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"
