@@ -150,4 +150,5 @@ fair_labs+=(lab01_point_in_box)
 fair_labs+=(lab03_bouncing_squares)
 fair_labs+=(lab05_ray_caster)
 fair_labs+=(lab06_rotated_boxes)
+fair_labs+=(lab12_broad_phase)
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"
