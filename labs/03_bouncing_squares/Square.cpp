@@ -1,5 +1,8 @@
 #include "Square.h"
 
+#include "hitbox/course/Vector.h"
+#include "hitbox/objects/Collision.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -77,3 +80,32 @@ float Square::getFlash() const
 {
     return flash;
 }
+
+// [slide:lab03-aabb-response]
+void bounceApart(Square& first, Square& second)
+{
+    // BEGIN TASK 3: bounce squares off each other, box against box
+    if (!Collision::checkBoundingBox(&first, &second))
+        return;
+    first.collisionResponse(&second);
+    second.collisionResponse(&first);
+    // For boxes the normal is an axis, (+-1, 0) or (0, +-1): the way out that is
+    // shortest. Each square moves half the overlap, so afterwards they just touch.
+    const hitbox::Contact contact = Collision::getBoundingBoxContact(&first, &second);
+    const sf::Vector2f normal = hitbox::toSfml(contact.normal);
+    first.move(normal * (contact.depth / 2.f));
+    second.move(-normal * (contact.depth / 2.f));
+    // Equal crates swap their velocities along the normal; along the other axis
+    // nothing changes. Squares already moving apart are left alone.
+    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
+    if (closing < 0.f)
+    {
+        first.setVelocity(first.getVelocity() - normal * closing);
+        second.setVelocity(second.getVelocity() + normal * closing);
+    }
+    // STARTER TASK 3
+    // (void)first;
+    // (void)second;
+    // END TASK 3
+}
+// [/slide]

@@ -34,3 +34,7 @@ private:
     int hitCount = 0;
     float flash = 0.f;
 };
+
+// If the two squares' collision boxes overlap (touching is not overlapping), tells both,
+// moves them apart until they just touch and swaps their velocities along the normal.
+void bounceApart(Square& first, Square& second);

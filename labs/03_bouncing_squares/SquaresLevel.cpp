@@ -1,9 +1,7 @@
 #include "SquaresLevel.h"
 
 #include "hitbox/app/Input.h"
-#include "hitbox/course/Vector.h"
 #include "hitbox/debug/DebugRenderer.h"
-#include "hitbox/objects/Collision.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -73,35 +71,8 @@ void SquaresLevel::update(float dt)
 
     // Every pair once: square i against every square after it.
     for (std::size_t i = 0; i < squares.size(); ++i)
-    {
         for (std::size_t j = i + 1; j < squares.size(); ++j)
-        {
-            // [slide:lab03-aabb-response]
-            // BEGIN TASK 3: bounce squares off each other, box against box
-            Square& first = squares[i];
-            Square& second = squares[j];
-            if (!Collision::checkBoundingBox(&first, &second))
-                continue;
-            first.collisionResponse(&second);
-            second.collisionResponse(&first);
-            // For boxes the normal is an axis, (+-1, 0) or (0, +-1): the way out that is
-            // shortest. Each square moves half the overlap, so afterwards they just touch.
-            const hitbox::Contact contact = Collision::getBoundingBoxContact(&first, &second);
-            const sf::Vector2f normal = hitbox::toSfml(contact.normal);
-            first.move(normal * (contact.depth / 2.f));
-            second.move(-normal * (contact.depth / 2.f));
-            // Equal crates swap their velocities along the normal; along the other axis
-            // nothing changes. Squares already moving apart are left alone.
-            const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
-            if (closing < 0.f)
-            {
-                first.setVelocity(first.getVelocity() - normal * closing);
-                second.setVelocity(second.getVelocity() + normal * closing);
-            }
-            // END TASK 3
-            // [/slide]
-        }
-    }
+            bounceApart(squares[i], squares[j]);
 }
 
 void SquaresLevel::render(sf::RenderTarget& target) const

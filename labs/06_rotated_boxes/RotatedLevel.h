@@ -67,14 +67,20 @@ public:
     bool isOverlapping(std::size_t i) const;
     // The pair drawn with its shadows: the nearest other shape.
     const PairView* getNearestPair() const;
+    // Box pairs tested by the framework's hitbox::findSeparatingAxis instead of your Sat.cpp
+    // (key F: compare the two; the tests of tasks 3 and 4 use it, so they need no task 1 or 2).
+    void setFrameworkSat(bool on);
+    bool usesFrameworkSat() const;
 
 private:
     PairView testPair(std::size_t held, std::size_t other) const;
+    void turnHeld(float notches);
     void pushHeldOut();
 
     std::vector<Shape> shapes;
     std::size_t held = 0;
     bool dragging = false;
+    bool frameworkSat = false;
     hitbox::Vec2 grabOffset;
     float spinDegreesPerSecond = 0.f;
     std::vector<PairView> pairs;

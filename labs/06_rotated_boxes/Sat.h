@@ -11,6 +11,8 @@
 
 #include "hitbox/geometry/Polygon.h"
 
+#include <vector>
+
 // A polygon's shadow on an axis: the smallest and largest of dot(point, axis).
 struct Shadow
 {
@@ -30,9 +32,22 @@ struct SatResult
     float depth() const { return separated ? 0.f : -gap; }
 };
 
+// One axis to try, with both polygons' shadows on it.
+struct AxisShadows
+{
+    hitbox::Vec2 axis; // unit length
+    Shadow a;          // A's shadow on it
+    Shadow b;          // B's shadow on it
+};
+
 // Task 1: the shadow of `polygon` on the unit vector `axis`.
 Shadow projectOnto(const hitbox::Polygon& polygon, hitbox::Vec2 axis);
 
-// Task 2: the separating axis test for two convex polygons (A = first, B = second).
-// Shadows that only touch (gap 0) count as separated: touching is not a collision.
+// Task 2: the answer of the separating axis test, from the shadows of A and B on every axis
+// to try (never empty). Shadows that only touch (gap 0) count as separated: touching is not
+// a collision.
+SatResult chooseAxis(const std::vector<AxisShadows>& axes);
+
+// The separating axis test for two convex polygons (A = first, B = second): casts both
+// shadows (task 1) on the normal of every edge of both, and lets chooseAxis (task 2) decide.
 SatResult separatingAxisTest(const hitbox::Polygon& a, const hitbox::Polygon& b);

@@ -1,5 +1,7 @@
 // Grading tests of lab 3 (bouncing squares). Each suite is named after the task it checks;
-// README.md lists them. The level runs with no window, one fixed step at a time.
+// README.md lists them. No window, one fixed step at a time. Each task's tests run only that
+// task's code (the constructor's box, Square::update, bounceApart), with whatever else they
+// need set up by the test, so one mistake costs one task.
 #include "labs/LabTesting.h"
 
 #include "Square.h"
@@ -11,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 // The tests do not depend on the numbers at the top of Square.h (students are invited to
 // change them): each test sets up its own squares at its own speed and places them by
@@ -29,26 +32,66 @@ constexpr float stepDistance = testSpeed * hitbox::stepSeconds;
 // The see-through margin on each side of the crate.
 constexpr float margin = (spriteSize - crateSize) / 2.f;
 
-void run(SquaresLevel& level, float seconds)
+// A square with the crate's collision box, set here as task 1 sets it: the tests of tasks 2
+// and 3 need no task 1 (one mistake costs one task).
+Square crate(sf::Vector2f center, sf::Vector2f velocity)
 {
-    hitbox::simulate(level, static_cast<long long>(seconds * hitbox::stepsPerSecond));
+    Square square(center, velocity, sf::Color::White);
+    square.setCollisionBox(-crateSize / 2.f, -crateSize / 2.f, crateSize, crateSize);
+    return square;
 }
 
-SquaresLevel emptyLevel()
+// Task 2's tests: one square alone, moved by its own update (task 2's code), step by step.
+void run(Square& square, int steps)
 {
-    SquaresLevel level;
-    level.removeAllSquares();
-    return level;
+    for (int step = 0; step < steps; ++step)
+        square.update(hitbox::stepSeconds);
+}
+
+int stepsFor(float seconds)
+{
+    return static_cast<int>(seconds * hitbox::stepsPerSecond);
+}
+
+// Task 3's tests: every step the test moves the squares itself (no task 2), keeps them in
+// `world` if it has one (a crowd needs walls to stay a crowd), then calls bounceApart on
+// every pair, the way SquaresLevel::update does.
+void stepApart(std::vector<Square>& squares, int steps, sf::Vector2f world = {})
+{
+    for (int step = 0; step < steps; ++step)
+    {
+        for (Square& square : squares)
+        {
+            square.move(square.getVelocity() * hitbox::stepSeconds);
+            if (world.x <= 0.f)
+                continue;
+            const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
+            sf::Vector2f velocity = square.getVelocity();
+            if (box.left < 0.f || box.left + box.width > world.x)
+            {
+                square.move({box.left < 0.f ? -box.left : world.x - (box.left + box.width), 0.f});
+                velocity.x = box.left < 0.f ? std::abs(velocity.x) : -std::abs(velocity.x);
+            }
+            if (box.top < 0.f || box.top + box.height > world.y)
+            {
+                square.move({0.f, box.top < 0.f ? -box.top : world.y - (box.top + box.height)});
+                velocity.y = box.top < 0.f ? std::abs(velocity.y) : -std::abs(velocity.y);
+            }
+            square.setVelocity(velocity);
+        }
+        for (std::size_t i = 0; i < squares.size(); ++i)
+            for (std::size_t j = i + 1; j < squares.size(); ++j)
+                bounceApart(squares[i], squares[j]);
+    }
 }
 
 // The lecture's example: two squares on one line, flying at each other at testSpeed.
-SquaresLevel twoSquaresFlyingAtEachOther()
+std::vector<Square> twoSquaresFlyingAtEachOther()
 {
-    SquaresLevel level = emptyLevel();
-    const sf::Vector2f world = level.getWorldSize();
-    level.addSquare({world.x * 0.25f, world.y / 2.f}, {testSpeed, 0.f});
-    level.addSquare({world.x * 0.75f, world.y / 2.f}, {-testSpeed, 0.f});
-    return level;
+    return {crate({hitbox::defaultWorldSize.x * 0.25f, hitbox::defaultWorldSize.y / 2.f},
+                  {testSpeed, 0.f}),
+            crate({hitbox::defaultWorldSize.x * 0.75f, hitbox::defaultWorldSize.y / 2.f},
+                  {-testSpeed, 0.f})};
 }
 
 // How far two boxes overlap along the axis where they overlap least (0 if they do not).
@@ -94,13 +137,12 @@ TEST(Task1FitTheCollisionBoxToTheCrate, TheBoxIsCentredOnThePicture)
 
 TEST(Task2BounceTheBoxOffTheWalls, SquareNeverLeavesTheWindow)
 {
-    SquaresLevel level = emptyLevel();
-    level.addSquare(middle, {testSpeed * 1.2f, testSpeed * 0.8f});
-    const sf::Vector2f world = level.getWorldSize();
+    Square square = crate(middle, {testSpeed * 1.2f, testSpeed * 0.8f});
+    const sf::Vector2f world = hitbox::defaultWorldSize;
     for (int step = 0; step < 20 * 120; ++step)
     {
-        hitbox::simulate(level, 1);
-        const hitbox::Box box = hitbox::toBox(level.getSquare(0).getCollisionBox());
+        run(square, 1);
+        const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
         ASSERT_TRUE(box.left >= -0.01f && box.top >= -0.01f &&
                     box.left + box.width <= world.x + 0.01f &&
                     box.top + box.height <= world.y + 0.01f)
@@ -113,17 +155,15 @@ TEST(Task2BounceTheBoxOffTheWalls, TheCrateTouchesTheWallWhileTheMarginGoesPastI
 {
     // Bounce on the box, not the sprite: at the turn the crate reaches the wall and the
     // see-through margin hangs over it.
-    SquaresLevel level = emptyLevel();
-    level.addSquare(middle, {testSpeed, 0.f});
-    const float world = level.getWorldSize().x;
+    Square square = crate(middle, {testSpeed, 0.f});
+    const float world = hitbox::defaultWorldSize.x;
     // Long enough to reach the right wall, not the left one.
     const float seconds = (world / 2.f - crateSize / 2.f) / testSpeed + 0.5f;
     float furthestPicture = 0.f;
     float furthestBox = 0.f;
-    for (int step = 0; step < static_cast<int>(seconds * hitbox::stepsPerSecond); ++step)
+    for (int step = 0; step < stepsFor(seconds); ++step)
     {
-        hitbox::simulate(level, 1);
-        const Square& square = level.getSquare(0);
+        run(square, 1);
         furthestPicture =
             std::max(furthestPicture, hitbox::toBox(square.getGlobalBounds()).left + spriteSize);
         const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
@@ -132,7 +172,8 @@ TEST(Task2BounceTheBoxOffTheWalls, TheCrateTouchesTheWallWhileTheMarginGoesPastI
     EXPECT_NEAR(furthestBox, world, 0.01f) << "the crate reaches the right edge";
     EXPECT_NEAR(furthestPicture, world + margin, 0.01f)
         << "the picture's margin goes past the edge by " << margin << " pixels";
-    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -testSpeed) << "and it came back";
+    EXPECT_FLOAT_EQ(square.getVelocity().x, -testSpeed) << "and it came back";
+    EXPECT_EQ(square.getHitCount(), 1) << "the wall is one hit";
 }
 
 TEST(Task2BounceTheBoxOffTheWalls, SquareComesBackFromEachWallAtTheSameSpeed)
@@ -140,56 +181,71 @@ TEST(Task2BounceTheBoxOffTheWalls, SquareComesBackFromEachWallAtTheSameSpeed)
     const sf::Vector2f directions[] = {{1.f, 0.f}, {-1.f, 0.f}, {0.f, 1.f}, {0.f, -1.f}};
     for (sf::Vector2f direction : directions)
     {
-        SquaresLevel level = emptyLevel();
-        level.addSquare(middle, direction * testSpeed);
+        Square square = crate(middle, direction * testSpeed);
         // Long enough to reach the wall it flies at, not the one across from it.
         const sf::Vector2f toWall =
-            level.getWorldSize() / 2.f - sf::Vector2f(crateSize, crateSize) / 2.f;
-        run(level, std::abs(toWall.x * direction.x + toWall.y * direction.y) / testSpeed + 0.3f);
-        EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), -direction * testSpeed, 0.01f)
+            hitbox::defaultWorldSize / 2.f - sf::Vector2f(crateSize, crateSize) / 2.f;
+        run(square,
+            stepsFor(std::abs(toWall.x * direction.x + toWall.y * direction.y) / testSpeed + 0.3f));
+        EXPECT_VEC_NEAR(square.getVelocity(), -direction * testSpeed, 0.01f)
             << "a square sent towards " << labtesting::text(direction);
+    }
+}
+
+TEST(Task2BounceTheBoxOffTheWalls, SquareSlidingAlongAWallIsNotHittingIt)
+{
+    // The edge rule: touching is not colliding. A crate exactly touching the top wall (and
+    // one touching the left wall), moving along it, never hits it: with <= instead of < it
+    // would "hit" every step and flash all the time.
+    const sf::Vector2f starts[] = {{middle.x, crateSize / 2.f}, {crateSize / 2.f, middle.y}};
+    const sf::Vector2f velocities[] = {{testSpeed, 0.f}, {0.f, testSpeed}};
+    for (int i = 0; i < 2; ++i)
+    {
+        Square square = crate(starts[i], velocities[i]);
+        run(square, stepsFor(0.5f));
+        EXPECT_EQ(square.getHitCount(), 0)
+            << "a crate touching a wall at " << labtesting::text(starts[i])
+            << " and sliding along it is not hitting it (touching is not colliding)";
+        EXPECT_VEC_NEAR(square.getVelocity(), velocities[i], 0.001f);
     }
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, HeadOnSquaresSwapVelocitiesAndNeverOverlap)
 {
-    SquaresLevel level = twoSquaresFlyingAtEachOther();
+    std::vector<Square> squares = twoSquaresFlyingAtEachOther();
     float worstOverlap = 0.f;
     int stepsSinceTheyMet = -1;
-    // Until a quarter of a second after their crates meet: long enough to bounce, too
-    // short to reach a wall.
+    // Until a quarter of a second after their crates meet: long enough to bounce.
     for (int step = 0; step < 4 * 120 && stepsSinceTheyMet < 30; ++step)
     {
-        hitbox::simulate(level, 1);
-        const float overlap = overlapOf(hitbox::toBox(level.getSquare(0).getCollisionBox()),
-                                        hitbox::toBox(level.getSquare(1).getCollisionBox()));
+        stepApart(squares, 1);
+        const float overlap = overlapOf(hitbox::toBox(squares[0].getCollisionBox()),
+                                        hitbox::toBox(squares[1].getCollisionBox()));
         worstOverlap = std::max(worstOverlap, overlap);
-        const float apart = level.getSquare(1).getPosition().x - level.getSquare(0).getPosition().x;
+        const float apart = squares[1].getPosition().x - squares[0].getPosition().x;
         if (stepsSinceTheyMet >= 0 || apart < crateSize + 1.f)
             ++stepsSinceTheyMet;
     }
     ASSERT_GE(stepsSinceTheyMet, 0) << "the squares should meet within four seconds";
     EXPECT_LE(worstOverlap, overlapTolerance) << "after a step the crates may not overlap";
-    EXPECT_FLOAT_EQ(level.getSquare(0).getVelocity().x, -testSpeed)
-        << "the left square goes back left";
-    EXPECT_FLOAT_EQ(level.getSquare(1).getVelocity().x, testSpeed)
-        << "the right square goes back right";
+    EXPECT_FLOAT_EQ(squares[0].getVelocity().x, -testSpeed) << "the left square goes back left";
+    EXPECT_FLOAT_EQ(squares[1].getVelocity().x, testSpeed) << "the right square goes back right";
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, SquaresBounceOnTheirCratesNotTheirPictures)
 {
     // At the closest approach the crates touch: the centres are one crate apart, and the
     // see-through margins overlap.
-    SquaresLevel level = twoSquaresFlyingAtEachOther();
-    const float world = level.getWorldSize().x;
-    // Long enough to meet and part, not to reach a wall.
+    std::vector<Square> squares = twoSquaresFlyingAtEachOther();
+    const float world = hitbox::defaultWorldSize.x;
+    // Long enough to meet and part.
     const float seconds = (world / 2.f - crateSize) / (2.f * testSpeed) + 0.3f;
     float closest = 10000.f;
-    for (int step = 0; step < static_cast<int>(seconds * hitbox::stepsPerSecond); ++step)
+    for (int step = 0; step < stepsFor(seconds); ++step)
     {
-        hitbox::simulate(level, 1);
-        closest = std::min(closest, std::abs(level.getSquare(1).getPosition().x -
-                                             level.getSquare(0).getPosition().x));
+        stepApart(squares, 1);
+        closest =
+            std::min(closest, std::abs(squares[1].getPosition().x - squares[0].getPosition().x));
     }
     EXPECT_NEAR(closest, crateSize, overlapTolerance)
         << "centres " << crateSize << " apart: crate touching crate (" << spriteSize
@@ -198,12 +254,23 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, SquaresBounceOnTheirCratesNotTheirPic
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, BothSquaresAreToldAboutTheHit)
 {
-    SquaresLevel level = emptyLevel();
-    level.addSquare(middle, {});
-    level.addSquare(middle + sf::Vector2f{0.8f, 0.1f} * crateSize, {}); // crates overlapping
-    hitbox::simulate(level, 1);
-    EXPECT_EQ(level.getSquare(0).getHitCount(), 1);
-    EXPECT_EQ(level.getSquare(1).getHitCount(), 1);
+    Square first = crate(middle, {});
+    Square second = crate(middle + sf::Vector2f{0.8f, 0.1f} * crateSize, {}); // overlapping
+    bounceApart(first, second);
+    EXPECT_EQ(first.getHitCount(), 1);
+    EXPECT_EQ(second.getHitCount(), 1);
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, CratesOnlyTouchingAreLeftAlone)
+{
+    // The edge rule: centres exactly one crate apart, closing in: touching is not colliding.
+    Square first = crate(middle, {testSpeed, 0.f});
+    Square second = crate(middle + sf::Vector2f{crateSize, 0.f}, {-testSpeed, 0.f});
+    bounceApart(first, second);
+    EXPECT_EQ(first.getHitCount(), 0);
+    EXPECT_EQ(second.getHitCount(), 0);
+    EXPECT_FLOAT_EQ(first.getVelocity().x, testSpeed);
+    EXPECT_FLOAT_EQ(second.getVelocity().x, -testSpeed);
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, LandingOnTopChangesOnlyTheUpDownVelocity)
@@ -212,45 +279,46 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, LandingOnTopChangesOnlyTheUpDownVeloc
     // the sideways velocity is kept and the downward one is passed on.
     const float gap = 40.f; // between the crates
     const sf::Vector2f falling{0.1f * testSpeed, testSpeed};
-    SquaresLevel level = emptyLevel();
-    level.addSquare(middle - sf::Vector2f{0.2f * crateSize, crateSize + gap}, falling);
-    level.addSquare(middle, {});
-    run(level, gap / testSpeed + 0.3f);
-    EXPECT_VEC_NEAR(level.getSquare(0).getVelocity(), sf::Vector2f(falling.x, 0.f), 0.01f)
+    std::vector<Square> squares{
+        crate(middle - sf::Vector2f{0.2f * crateSize, crateSize + gap}, falling),
+        crate(middle, {})};
+    stepApart(squares, stepsFor(gap / testSpeed + 0.3f));
+    EXPECT_VEC_NEAR(squares[0].getVelocity(), sf::Vector2f(falling.x, 0.f), 0.01f)
         << "the falling square keeps its sideways speed and stops falling";
-    EXPECT_VEC_NEAR(level.getSquare(1).getVelocity(), sf::Vector2f(0.f, falling.y), 0.01f)
+    EXPECT_VEC_NEAR(squares[1].getVelocity(), sf::Vector2f(0.f, falling.y), 0.01f)
         << "the square at rest moves down at the falling square's speed, not sideways";
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, ManySquaresStayInsideAndApart)
 {
     // Up to twelve squares spread over the window in a grid (4 x 3, fewer when the
-    // pictures are too big for that), flying in as many directions.
-    SquaresLevel level = emptyLevel();
-    const sf::Vector2f world = level.getWorldSize();
+    // pictures are too big for that), flying in as many directions; the test's own walls
+    // keep them in (task 2's answer, written out in stepApart).
+    const sf::Vector2f world = hitbox::defaultWorldSize;
     const int columns = std::clamp(static_cast<int>(world.x / (1.5f * spriteSize)), 2, 4);
     const int rows = std::clamp(static_cast<int>(world.y / (1.5f * spriteSize)), 1, 3);
+    std::vector<Square> squares;
     for (int i = 0; i < columns * rows; ++i)
     {
         const labtesting::CrowdStart start =
             labtesting::crowdStart(i, columns, rows, world, testSpeed);
-        level.addSquare(start.position, start.velocity);
+        squares.push_back(crate(start.position, start.velocity));
     }
     // In a crowd a square pushed out of one can be pushed into another (or past a wall) in
     // the same step; allow what two squares close in one step.
     const float crowdTolerance = 2.f * stepDistance + overlapTolerance;
     for (int step = 0; step < 10 * 120; ++step)
     {
-        hitbox::simulate(level, 1);
-        for (int i = 0; i < level.getSquareCount(); ++i)
+        stepApart(squares, 1, world);
+        for (std::size_t i = 0; i < squares.size(); ++i)
         {
-            const hitbox::Box box = hitbox::toBox(level.getSquare(i).getCollisionBox());
+            const hitbox::Box box = hitbox::toBox(squares[i].getCollisionBox());
             ASSERT_TRUE(box.left >= -crowdTolerance && box.top >= -crowdTolerance &&
                         box.left + box.width <= world.x + crowdTolerance &&
                         box.top + box.height <= world.y + crowdTolerance)
                 << "square " << i << " left the window at step " << step;
-            for (int j = i + 1; j < level.getSquareCount(); ++j)
-                ASSERT_LE(overlapOf(box, hitbox::toBox(level.getSquare(j).getCollisionBox())),
+            for (std::size_t j = i + 1; j < squares.size(); ++j)
+                ASSERT_LE(overlapOf(box, hitbox::toBox(squares[j].getCollisionBox())),
                           crowdTolerance)
                     << "squares " << i << " and " << j << " at step " << step;
         }

@@ -141,7 +141,8 @@ TEST(Task2MoveAndSlide, SlidesOverTheSeamsOfATiledFloor)
     EXPECT_NEAR(level.getPlayer().getPosition().x, 1000.f - sidewaysSpeed * 2.f, 1.f)
         << "crossed " << int(sidewaysSpeed * 2.f / 40.f) << " seams without slowing down";
     EXPECT_NEAR(level.getPlayer().getPosition().y, 568.f, 0.01f);
-    EXPECT_FALSE(level.isStuck());
+    // (Whether the level calls that stuck is task 3's isSnagged: Task3Stuck tests it, so a
+    // mistake there costs task 3 only.)
 }
 
 TEST(Task2MoveAndSlide, TheHitsAreKeptNearestFirst)
@@ -188,4 +189,12 @@ TEST(Task3Stuck, SlidingIsNotStuck)
 TEST(Task3Stuck, NotWantingToMoveIsNeverStuck)
 {
     EXPECT_FALSE(isSnagged({0.f, 0.f}, {0.f, 0.f}));
+}
+
+TEST(Task3Stuck, ExactlyATenthOfTheWayIsNotStuckJustUnderIs)
+{
+    // The edge of the rule: "less than a tenth" is stuck, a tenth itself is not.
+    EXPECT_FALSE(isSnagged({4.f, 0.f}, {0.4f, 0.f}));
+    EXPECT_FALSE(isSnagged({0.f, -4.f}, {0.f, -0.4f}));
+    EXPECT_TRUE(isSnagged({4.f, 0.f}, {0.39f, 0.f}));
 }

@@ -119,6 +119,17 @@ TEST(Task2UniformGrid, FindsTheSamePairsAsBruteForceForEveryCellSize)
     }
 }
 
+TEST(Task2UniformGrid, BoxesTouchingOnACellBorderAreNotAPair)
+{
+    // The edge rule where it meets the grid: two boxes that touch exactly on a cell border
+    // share that border's cells, yet touching is not overlapping.
+    const std::vector<Box> touching = {
+        {0.f, 0.f, 8.f, 8.f}, {8.f, 0.f, 16.f, 8.f}, {0.f, 8.f, 8.f, 16.f}};
+    EXPECT_TRUE(samePairs(gridPairs(touching, 8.f).pairs, {}));
+    const std::vector<Box> overlapping = {{0.f, 0.f, 8.5f, 8.f}, {8.f, 0.f, 16.f, 8.f}};
+    EXPECT_TRUE(samePairs(gridPairs(overlapping, 8.f).pairs, {{0, 1}}));
+}
+
 TEST(Task2UniformGrid, TestsFewerPairsThanBruteForce)
 {
     const std::vector<Box> boxes = chain(200);
