@@ -51,6 +51,9 @@ TAMPERING = re.compile(
 # Seconds one test may run. Every grading test is bounded by step counts and takes well
 # under a second on the solution and on the starter; this is only the last resort.
 TEST_TIMEOUT = float(os.environ.get("LAB_TEST_TIMEOUT", "10"))
+# A submission's test program is linked by lld or gold when there is one: a few times faster
+# than the default linker on a test program with debug information.
+FAST_LINKER = next(([f"-fuse-ld={name}"] for name in ("lld", "gold") if shutil.which(f"ld.{name}")), [])
 SKIPPED_FOLDERS = {".git", "build", ".vs", ".vscode", "out", "cmake-build-debug", "__MACOSX"}
 
 
@@ -301,6 +304,11 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     for entry in lab.compile:
         # (-Werror dropped: a student's unused variable warns, it does not fail the lab.)
         arguments = [a.replace(instructor_lab, str(lab_copy)) for a in shlex.split(entry["command"]) if a != "-Werror"]
+        # (and no dependency files, which Ninja asks for at paths relative to its own folder)
+        for flag in ("-MT", "-MF", "-MQ"):
+            while flag in arguments:
+                del arguments[arguments.index(flag):arguments.index(flag) + 2]
+        arguments = [a for a in arguments if a not in ("-MD", "-MMD")]
         output_index = arguments.index("-o") + 1
         original_output = arguments[output_index]
         source = arguments[arguments.index("-c") + 1]
@@ -308,7 +316,12 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
             output = work / "objects" / original_output
             output.parent.mkdir(parents=True, exist_ok=True)
             arguments[output_index] = str(output)
-            compiled = subprocess.run(launcher + arguments, cwd=entry["directory"], capture_output=True, text=True)
+            # Compiled from inside the student's lab folder, which lies as deep as every
+            # other student's: with CCACHE_BASEDIR every path in the command becomes the same
+            # relative path for all of them, so ccache finds a file another submission
+            # already had (an untouched starter file, or code that differs only in comments).
+            compiled = subprocess.run(launcher + arguments, cwd=lab_copy, capture_output=True, text=True,
+                                      env=dict(os.environ, CCACHE_NOHASHDIR="1"))
             log.append(compiled.stdout + compiled.stderr)
             ok = compiled.returncode == 0
         elif unchanged_headers:
@@ -325,7 +338,7 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     seconds = {"compile": time.monotonic() - phase_started}
     phase_started = time.monotonic()
     if not failed:
-        linked = [shlex.split(lab.link)[0], *test_objects]
+        linked = [shlex.split(lab.link)[0], *FAST_LINKER, *test_objects]
         arguments = shlex.split(lab.link)[1:]
         for index, argument in enumerate(arguments):
             if argument.endswith(lab.level_archive):
