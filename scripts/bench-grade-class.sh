@@ -5,7 +5,9 @@
 #   1. from a cold start: a new instructor build folder (ccache, if installed, still warm:
 #      CCACHE_DISABLE=1 in the environment measures without it), then
 #   2. again with the instructor's build in place: the time per additional submission.
-# Prints the machine's load before and after: the figures depend on what else runs.
+# Prints the machine's load before and after: the wall-clock figures depend on what else
+# runs. The CPU seconds (user + system of the grader and every compiler, linker and test it
+# ran) hardly do: on an idle machine the wall time is about CPU seconds / cores.
 # Usage: scripts/bench-grade-class.sh [--lab NAME] [--count N] [WORK_DIR]
 #        (default lab02_bouncing_balls, 30, build/bench-grade-class)
 set -euo pipefail
@@ -42,14 +44,18 @@ done
 
 echo "bench: load before: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
 start=$(date +%s.%N)
-./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-cold" --build "$work/instructor"
+/usr/bin/time -f '%U %S' -o "$work/cold.cpu" \
+    ./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-cold" --build "$work/instructor"
 cold=$(echo "$(date +%s.%N) - $start" | bc)
+cold_cpu=$(awk 'END { print $1 + $2 }' "$work/cold.cpu")
 echo "bench: load after the cold run: $(cut -d' ' -f1-3 /proc/loadavg)"
 start=$(date +%s.%N)
-./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-warm" --build "$work/instructor"
+/usr/bin/time -f '%U %S' -o "$work/warm.cpu" \
+    ./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-warm" --build "$work/instructor"
 warm=$(echo "$(date +%s.%N) - $start" | bc)
+warm_cpu=$(awk 'END { print $1 + $2 }' "$work/warm.cpu")
 echo "bench: load after the warm run: $(cut -d' ' -f1-3 /proc/loadavg)"
 cmp -s "$work/grades-cold/grades.csv" "$work/grades-warm/grades.csv" ||
     { echo "bench: the two runs gave different grades" >&2; exit 1; }
-printf 'bench: %d submissions of %s: cold start %.0f s; with the instructor build in place %.0f s (%.1f s per submission)\n' \
-    "$count" "$lab" "$cold" "$warm" "$(echo "$warm / $count" | bc -l)"
+printf 'bench: %d submissions of %s: cold start %.0f s (%.0f CPU s); with the instructor build in place %.0f s (%.1f s per submission; %.1f CPU s per submission)\n' \
+    "$count" "$lab" "$cold" "$cold_cpu" "$warm" "$(echo "$warm / $count" | bc -l)" "$(echo "$warm_cpu / $count" | bc -l)"

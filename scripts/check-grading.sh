@@ -152,7 +152,11 @@ fair_labs=(
     lab04_bullet_through_paper
     lab05_ray_caster
     lab06_rotated_boxes
+    lab07_swept_circles
+    lab08_many_objects
+    lab09_platformer
     lab10_top_down
     lab12_broad_phase
+    lab13_fast_movers
 )
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"

@@ -121,38 +121,46 @@ write_empty_junit() {
 }
 
 # add_junit_failure XML_FILE SUITE.NAME MESSAGE [DETAILS]: adds a failed test to a JUnit
-# file GoogleTest (or write_empty_junit) wrote, in a <testsuite> of its own, and counts it
-# in the file's totals, so tools that read the file see it like any other failed test.
+# file GoogleTest (or write_empty_junit) wrote: into the <testsuite> of that name when the
+# file has one (the suite's other tests ran without it), else in a <testsuite> of its own.
+# The totals of the suite and of the file count it, so tools that read the file see it
+# like any other failed test, once.
 add_junit_failure() {
     local xml=$1 name=$2 message=$3 details=${4:-}
     local suite=${name%%.*} test=${name#*.}
     local escaped_details=${details//]]>/]] >}
-    local case_xml
+    local case_xml suite_open
     case_xml=$(
-        echo "  <testsuite name=\"$(xml_escape "$suite")\" tests=\"1\" failures=\"1\" disabled=\"0\" skipped=\"0\" errors=\"0\" time=\"0\">"
         echo "    <testcase name=\"$(xml_escape "$test")\" status=\"run\" result=\"completed\" time=\"0\" classname=\"$(xml_escape "$suite")\">"
         echo "      <failure message=\"$(xml_escape "$message")\" type=\"\"><![CDATA[$message"
         [[ -z $escaped_details ]] || printf '%s\n' "$escaped_details"
         echo "]]></failure>"
         echo "    </testcase>"
-        echo "  </testsuite>"
     )
+    suite_open="<testsuite name=\"$(xml_escape "$suite")\""
     local updated
     updated=$(mktemp)
-    CASE_XML=$case_xml awk '
-        # The totals: one more test, one more failure.
-        /<testsuites / && !done_totals {
-            if (match($0, / tests="[0-9]+"/)) {
-                n = substr($0, RSTART + 8, RLENGTH - 9) + 1
-                $0 = substr($0, 1, RSTART - 1) " tests=\"" n "\"" substr($0, RSTART + RLENGTH)
+    CASE_XML=$case_xml SUITE_OPEN=$suite_open awk '
+        # One more test and one more failure in the first tests= and failures= of a line.
+        function count_one(line,    n) {
+            if (match(line, / tests="[0-9]+"/)) {
+                n = substr(line, RSTART + 8, RLENGTH - 9) + 1
+                line = substr(line, 1, RSTART - 1) " tests=\"" n "\"" substr(line, RSTART + RLENGTH)
             }
-            if (match($0, / failures="[0-9]+"/)) {
-                n = substr($0, RSTART + 11, RLENGTH - 12) + 1
-                $0 = substr($0, 1, RSTART - 1) " failures=\"" n "\"" substr($0, RSTART + RLENGTH)
+            if (match(line, / failures="[0-9]+"/)) {
+                n = substr(line, RSTART + 11, RLENGTH - 12) + 1
+                line = substr(line, 1, RSTART - 1) " failures=\"" n "\"" substr(line, RSTART + RLENGTH)
             }
-            done_totals = 1
+            return line
         }
-        /^<\/testsuites>/ { print ENVIRON["CASE_XML"] }
+        /<testsuites / && !done_totals { $0 = count_one($0); done_totals = 1 }
+        !added && index($0, ENVIRON["SUITE_OPEN"] " ") { $0 = count_one($0); inside = 1 }
+        inside && /<\/testsuite>/ { print ENVIRON["CASE_XML"]; inside = 0; added = 1 }
+        /^<\/testsuites>/ && !added {
+            print "  " ENVIRON["SUITE_OPEN"] " tests=\"1\" failures=\"1\" disabled=\"0\" skipped=\"0\" errors=\"0\" time=\"0\">"
+            print ENVIRON["CASE_XML"]
+            print "  </testsuite>"
+        }
         { print }' "$xml" >"$updated"
     mv "$updated" "$xml"
 }

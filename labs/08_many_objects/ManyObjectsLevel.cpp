@@ -329,7 +329,7 @@ void ManyObjectsLevel::update(float dt)
     }
     contacts = 0;
     if (scene == Scene::PairTable)
-        testEveryPair(items, table);
+        testEveryPair(items, table, layersMayCollide);
 
     bruteForceSkipped = method == hitbox::BroadphaseMethod::BruteForce &&
                         balls.size() > static_cast<std::size_t>(bruteForceBallLimit);

@@ -37,7 +37,12 @@ private:
     std::vector<hitbox::Pair> overlaps;
 };
 
-// The brute-force loop: test every pair of items once, skipping pairs the game rules rule
-// out (layersMayCollide), and record each test in `table`. Boxes overlap by hitbox::boxVsBox
-// (sharing area; touching edges do not count).
-void testEveryPair(const std::vector<hitbox::BroadphaseItem>& items, PairTable& table);
+// A game rule: true when the two items may ever collide (the lab's: layersMayCollide).
+using PairRule = bool (*)(const hitbox::BroadphaseItem& a, const hitbox::BroadphaseItem& b);
+
+// The brute-force loop: test every pair of items once, skipping pairs the game rule
+// `mayCollide` rules out, and record each test in `table`. Boxes overlap by hitbox::boxVsBox
+// (sharing area; touching edges do not count). The rule is a parameter so the loop can be
+// checked with any rule, whatever state task 3's rules are in.
+void testEveryPair(const std::vector<hitbox::BroadphaseItem>& items, PairTable& table,
+                   PairRule mayCollide);

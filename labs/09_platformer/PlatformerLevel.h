@@ -69,6 +69,8 @@ public:
     // Put the player somewhere (top-left corner of its box), standing still. For tests and
     // for restarting; the next step starts from there.
     void placePlayer(hitbox::Vec2 topLeft);
+    // Set the player's velocity (pixels per second) for the next step. For tests.
+    void setPlayerVelocity(hitbox::Vec2 velocity) { player.setVelocity(velocity); }
 
     const Player& getPlayer() const { return player; }
     const TileMap& getMap() const { return map; }

@@ -51,6 +51,9 @@ TAMPERING = re.compile(
 # Seconds one test may run. Every grading test is bounded by step counts and takes well
 # under a second on the solution and on the starter; this is only the last resort.
 TEST_TIMEOUT = float(os.environ.get("LAB_TEST_TIMEOUT", "10"))
+# A submission's test program is linked by lld or gold when there is one: a few times faster
+# than the default linker on a test program with debug information.
+FAST_LINKER = next(([f"-fuse-ld={name}"] for name in ("lld", "gold") if shutil.which(f"ld.{name}")), [])
 SKIPPED_FOLDERS = {".git", "build", ".vs", ".vscode", "out", "cmake-build-debug", "__MACOSX"}
 
 
@@ -297,9 +300,15 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
     own_sources = {str(lab_copy / r) for r in lab.student_files if r.endswith(".cpp")}
     level_objects, test_objects, log = [], [], []
     failed = False
+    phase_started = time.monotonic()
     for entry in lab.compile:
         # (-Werror dropped: a student's unused variable warns, it does not fail the lab.)
         arguments = [a.replace(instructor_lab, str(lab_copy)) for a in shlex.split(entry["command"]) if a != "-Werror"]
+        # (and no dependency files, which Ninja asks for at paths relative to its own folder)
+        for flag in ("-MT", "-MF", "-MQ"):
+            while flag in arguments:
+                del arguments[arguments.index(flag):arguments.index(flag) + 2]
+        arguments = [a for a in arguments if a not in ("-MD", "-MMD")]
         output_index = arguments.index("-o") + 1
         original_output = arguments[output_index]
         source = arguments[arguments.index("-c") + 1]
@@ -307,7 +316,12 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
             output = work / "objects" / original_output
             output.parent.mkdir(parents=True, exist_ok=True)
             arguments[output_index] = str(output)
-            compiled = subprocess.run(launcher + arguments, cwd=entry["directory"], capture_output=True, text=True)
+            # Compiled from inside the student's lab folder, which lies as deep as every
+            # other student's: with CCACHE_BASEDIR every path in the command becomes the same
+            # relative path for all of them, so ccache finds a file another submission
+            # already had (an untouched starter file, or code that differs only in comments).
+            compiled = subprocess.run(launcher + arguments, cwd=lab_copy, capture_output=True, text=True,
+                                      env=dict(os.environ, CCACHE_NOHASHDIR="1"))
             log.append(compiled.stdout + compiled.stderr)
             ok = compiled.returncode == 0
         elif unchanged_headers:
@@ -321,8 +335,10 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
             break
         (level_objects if f"{lab.name}_level.dir" in original_output else test_objects).append(str(output))
     program = work / f"{lab.name}_tests"
+    seconds = {"compile": time.monotonic() - phase_started}
+    phase_started = time.monotonic()
     if not failed:
-        linked = [shlex.split(lab.link)[0], *test_objects]
+        linked = [shlex.split(lab.link)[0], *FAST_LINKER, *test_objects]
         arguments = shlex.split(lab.link)[1:]
         for index, argument in enumerate(arguments):
             if argument.endswith(lab.level_archive):
@@ -336,20 +352,23 @@ def grade_lab(lab, submission, files, used, launcher, shared_dir):
         done = subprocess.run(linked, cwd=lab.link_dir, capture_output=True, text=True)
         log.append(done.stdout + done.stderr)
         failed = done.returncode != 0
+    seconds["link"] = time.monotonic() - phase_started
     (work / "build.log").write_text("\n".join(log))
     if failed:
         errors = [line for line in "\n".join(log).splitlines()
                   if re.search(r"error|undefined reference|multiple definition|cannot find", line)][:20]
         notes.append("did not build: no test of this lab ran")
         message = "did not build:\n" + "\n".join(errors).replace(str(lab_copy) + "/", "")
-        return {"results": [TestResult(t, False, message) for t in lab.tests], "notes": notes}
+        return {"results": [TestResult(t, False, message) for t in lab.tests], "notes": notes, "seconds": seconds}
     results = []
+    phase_started = time.monotonic()
     for test in lab.tests:
         started = time.monotonic()
         result = run_one_test(program, test, work)
         result.seconds = time.monotonic() - started
         results.append(result)
-    return {"results": results, "notes": notes}
+    seconds["tests"] = time.monotonic() - phase_started
+    return {"results": results, "notes": notes, "seconds": seconds}
 
 
 def run_one_test(program, test, work):
@@ -540,8 +559,15 @@ def main():
                 possible = sum(1 for r in rows if r[5] != "")
                 slowest = max((r for g in report["labs"].values() for r in g["results"]),
                               key=lambda r: r.seconds, default=None)
+                # Where the time went (the labs together): compile, link, run the tests.
+                phases = {}
+                for graded in report["labs"].values():
+                    for phase, seconds in graded.get("seconds", {}).items():
+                        phases[phase] = phases.get(phase, 0.0) + seconds
                 print(f"[{done}/{len(sources)}] {report['student']}: {marks}/{possible} tasks "
-                      f"({report['seconds']:.1f} s{f'; slowest test {slowest.seconds:.1f} s' if slowest else ''})"
+                      f"({report['seconds']:.1f} s{': ' if phases else ''}"
+                      f"{', '.join(f'{phase} {seconds:.1f} s' for phase, seconds in phases.items())}"
+                      f"{f'; slowest test {slowest.seconds:.1f} s' if slowest else ''})"
                       f"{' - ' + report['error'] if report['error'] else ''}", flush=True)
             if options.gradescope:
                 Path(options.gradescope).parent.mkdir(parents=True, exist_ok=True)

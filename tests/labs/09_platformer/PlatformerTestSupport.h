@@ -67,6 +67,21 @@ struct Game
         for (int index = 0; index < frames; ++index)
             frame(dt);
     }
+    // Fall straight down at `speed` pixels per second for `seconds`, whatever task 1's
+    // gravity and task 4's speed cap do: the velocity is set before every frame. (Gravity
+    // adds one step's worth on top, still under the cap.) Landing stops the fall as a floor
+    // stops gravity, so the player stands on it.
+    void fall(float seconds, float speed = fallSpeed)
+    {
+        const int frames = static_cast<int>(seconds / hitbox::stepSeconds + 0.5f);
+        for (int index = 0; index < frames; ++index)
+        {
+            level.setPlayerVelocity({velocity().x, speed});
+            frame();
+        }
+    }
+    // 15 pixels a step: under a tile, and under the speed cap with one step of gravity.
+    static constexpr float fallSpeed = 1800.f;
     // Press a key for exactly one frame.
     void tap(sf::Keyboard::Key key, float dt = hitbox::stepSeconds)
     {
