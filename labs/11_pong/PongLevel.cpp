@@ -49,7 +49,8 @@ void PongLevel::handleInput(const Input& input, float)
 void PongLevel::update(float dt)
 {
     // 1. Where each paddle goes this step (task 1); the computer steers the right one (6).
-    const float rightWish = computerPlaysRight ? computerDirection(ball, right, dt) : rightDirection;
+    const float rightWish =
+        computerPlaysRight ? computerDirection(ball, right, dt) : rightDirection;
     left.setPlannedMove(left.moveWithinCourt(leftDirection, dt));
     right.setPlannedMove(right.moveWithinCourt(rightWish, dt));
     // 2. The ball swept against the moving paddles (task 5), which return it (task 3).
@@ -131,8 +132,8 @@ std::string PongLevel::getHelpText() const
 std::string PongLevel::describeState() const
 {
     char text[120];
-    std::snprintf(text, sizeof text, "score %d : %d, ball at (%.0f, %.0f)", leftScore,
-                  rightScore, static_cast<double>(ball.getPosition().x),
+    std::snprintf(text, sizeof text, "score %d : %d, ball at (%.0f, %.0f)", leftScore, rightScore,
+                  static_cast<double>(ball.getPosition().x),
                   static_cast<double>(ball.getPosition().y));
     return text;
 }

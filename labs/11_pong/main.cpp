@@ -14,6 +14,7 @@
 
 int main(int argc, char* argv[])
 {
-    return hitbox::run(argc, argv, {"Lab 11 - Pong"}, [](const hitbox::Options& options)
+    return hitbox::run(argc, argv, {"Lab 11 - Pong"},
+                       [](const hitbox::Options& options)
                        { return std::make_unique<PongLevel>(options.seed); });
 }
