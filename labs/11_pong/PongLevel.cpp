@@ -33,7 +33,8 @@ void drawStrip(sf::RenderTarget& target, sf::Vector2f topLeft, sf::Vector2f size
 }
 } // namespace
 
-PongLevel::PongLevel(unsigned seed) : random(seed)
+PongLevel::PongLevel(unsigned seed, int players)
+    : computerPlaysLeft(players == 0), computerPlaysRight(players < 2), random(seed)
 {
     serveTowards(std::bernoulli_distribution(0.5)(random) ? 1 : -1);
 }
@@ -48,10 +49,11 @@ void PongLevel::handleInput(const Input& input, float)
 
 void PongLevel::update(float dt)
 {
-    // 1. Where each paddle goes this step (task 1); the computer steers the right one (6).
+    // 1. Where each paddle goes this step (task 1), steered by keys or the computer (6).
+    const float leftWish = computerPlaysLeft ? computerDirection(ball, left, dt) : leftDirection;
     const float rightWish =
         computerPlaysRight ? computerDirection(ball, right, dt) : rightDirection;
-    left.setPlannedMove(left.moveWithinCourt(leftDirection, dt));
+    left.setPlannedMove(left.moveWithinCourt(leftWish, dt));
     right.setPlannedMove(right.moveWithinCourt(rightWish, dt));
     // 2. The ball swept against the moving paddles (task 5), which return it (task 3).
     moveBall(ball, left, right, dt);
@@ -125,8 +127,8 @@ void PongLevel::renderDebug(hitbox::DebugRenderer& debug) const
 
 std::string PongLevel::getHelpText() const
 {
-    return computerPlaysRight ? "W/S left paddle   C two players"
-                              : "W/S left paddle   Up/Down right paddle   C computer";
+    const std::string leftKeys = computerPlaysLeft ? "" : "W/S left paddle   ";
+    return leftKeys + (computerPlaysRight ? "C two players" : "Up/Down right paddle   C computer");
 }
 
 std::string PongLevel::describeState() const

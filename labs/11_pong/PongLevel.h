@@ -19,7 +19,9 @@ class PongLevel : public hitbox::Level
 {
 public:
     // The first serve goes to a random side; `seed` makes every serve's angle repeatable.
-    explicit PongLevel(unsigned seed = 1);
+    // `players`: 1, you (left) against the computer; 2, two people; 0, the computer plays
+    // both sides (a demonstration, and what --headless shows).
+    explicit PongLevel(unsigned seed = 1, int players = 1);
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
@@ -50,6 +52,7 @@ private:
     Paddle right{court.right - paddleInset - paddleWidth / 2.f};
     float leftDirection = 0.f;  // from the keys: -1 up, +1 down
     float rightDirection = 0.f; // the same, when a second player has the right paddle
+    bool computerPlaysLeft = false;
     bool computerPlaysRight = true;
     int leftScore = 0;
     int rightScore = 0;

@@ -456,9 +456,10 @@ TEST(Task5SweepTheBallAgainstThePaddles, ABallThatMissesFliesOnTheWholeStep)
 
 TEST(Task5SweepTheBallAgainstThePaddles, InAMatchOfVeryFastBallsNoneCrossesAPaddle)
 {
-    // Two players, scripted keys, fixed seed. Every half second the test shoots a very fast
-    // ball from the middle towards one of the paddles. After each step, a ball whose move met
-    // a paddle's front face (the framework's sweep says so) must still be in front of it.
+    // Two players, scripted keys, fixed seed. Every half second the test puts the paddles
+    // anywhere in the court and shoots a very fast ball from the middle at one of them. After each
+    // step, a ball whose move met a paddle's front face (the framework's sweep says so) must still
+    // be in front of it.
     PongLevel level(9);
     level.setComputerPlaysRight(false);
     Input input;
@@ -474,6 +475,11 @@ TEST(Task5SweepTheBallAgainstThePaddles, InAMatchOfVeryFastBallsNoneCrossesAPadd
             input.setKeyUp(sf::Keyboard::Key::Down);
             input.setKeyDown(random() % 2 ? sf::Keyboard::Key::W : sf::Keyboard::Key::S);
             input.setKeyDown(random() % 2 ? sf::Keyboard::Key::Up : sf::Keyboard::Key::Down);
+            // Each paddle put somewhere in the court, and the ball shot at one of them.
+            std::uniform_real_distribution<float> paddleY(court.top + paddleHeight / 2.f,
+                                                          court.bottom - paddleHeight / 2.f);
+            for (Paddle* paddle : {&level.getLeftPaddle(), &level.getRightPaddle()})
+                paddle->setPosition({paddle->getPosition().x, paddleY(random)});
             const Paddle& target = random() % 2 ? level.getLeftPaddle() : level.getRightPaddle();
             const sf::Vector2f from{courtMiddleX, courtMiddleY};
             const sf::Vector2f aim = target.getPosition() - from;
