@@ -4,6 +4,8 @@
 #include "hitbox/course/Vector.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/objects/Collision.h"
+// Your own class from lab 0: README.md, "Using your own Collision class from lab 0".
+#include "MyCollision.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
