@@ -158,5 +158,6 @@ fair_labs=(
     lab10_top_down
     lab12_broad_phase
     lab13_fast_movers
+    lab14_resting_stack
 )
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"

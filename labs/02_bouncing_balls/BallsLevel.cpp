@@ -3,6 +3,8 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/objects/Collision.h"
+// Your own class from lab 0: README.md, "Using your own Collision class from lab 0".
+#include "MyCollision.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>

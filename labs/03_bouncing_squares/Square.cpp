@@ -2,6 +2,8 @@
 
 #include "hitbox/course/Vector.h"
 #include "hitbox/objects/Collision.h"
+// Your own class from lab 0: README.md, "Using your own Collision class from lab 0".
+#include "MyCollision.h"
 
 #include <algorithm>
 #include <cmath>
