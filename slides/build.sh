@@ -82,6 +82,11 @@ else
     "$here/make-figures.sh" "$build_dir"
 fi
 
+# Interactive figures: the geometry as WebAssembly (wasm/build.sh), and each figure's still.
+"$here/wasm/build.sh"
+node "$here/tools/interactive-stills.mjs" --wasm "$here/build/wasm/hitbox-geometry.js" \
+    --figures "$here/interactive/figures.js" --out "$here/figures/generated"
+
 # --- 4. Code regions into the decks ------------------------------------------------------------
 decks="$here/build/decks"
 rm -rf "$decks" "$here/dist"
@@ -95,7 +100,10 @@ for folder in "$decks" "$here/dist" "$here/build/notes"; do
     mkdir -p "$folder/figures/generated"
     cp "$here"/figures/*.svg "$folder/figures/"
     cp "$here"/figures/generated/*.png "$here"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
+    cp "$here"/figures/generated/interactive-*.svg "$folder/figures/generated/"
 done
+mkdir -p "$here/dist/interactive"
+cp "$here/build/wasm/hitbox-geometry.js" "$here/interactive/figures.js" "$here/dist/interactive/"
 echo "== navigation (deck-extras.mjs)"
 extras=(node "$here/tools/deck-extras.mjs" --decks "$decks" --notes "$here/build/notes" --dist "$here/dist")
 "${extras[@]}"
