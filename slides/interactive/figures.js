@@ -44,7 +44,7 @@
     return `<circle cx="${x}" cy="${y}" r="${r}" ${style}/>`;
   }
   function label(x, y, text, style = '') {
-    return `<text x="${x}" y="${y}" ${style}>${text}</text>`;
+    return `<text x="${x}" y="${y}" ${style}>${text.replace(/</g, '&lt;')}</text>`; // stills are XML
   }
   function polygon(points, style) {
     const list = [];
@@ -59,7 +59,7 @@
   const tick = (yes) => (yes ? '\u2713' : '\u2717');
   // The answer panel: one line of large text a row.
   function panel(lines) {
-    return lines
+    return rect(panelX - 20, 1, width - panelX + 19, height - 2, 'fill="#fff"') + lines
       .map(([text, colour], row) => label(panelX, 60 + row * 52, text, `class="answer" fill="${colour || colours.ink}"`))
       .join('');
   }
@@ -70,13 +70,16 @@
   // --- The figures ---------------------------------------------------------------------------
   // Each figure: `start` (its first state: points and numbers), `question(state)` (the C
   // function and the numbers it is asked with), `draw(state, answer)` (SVG text), and
-  // optionally `drag(state, handle, to)` when a handle does more than move its point.
+  // optionally `drag(state, handle, to)` when a handle does more than move its point, and
+  // `reach(state, handle)`: how far the dragged shape reaches around its point [left, right,
+  // up, down], so that it stays whole in the drawing.
   const figures = {};
 
   // 1. Two boxes: the four comparisons, and the push-out when all four hold.
   figures.boxes = {
     start: { a: { x: 120, y: 120 }, b: { x: 300, y: 220 }, aSize: [220, 160], bSize: [240, 200] },
     question: (s) => ['boxesAnswer', [s.a.x, s.a.y, ...s.aSize, s.b.x, s.b.y, ...s.bSize]],
+    reach: (s, handle) => [0, s[handle + 'Size'][0], 0, s[handle + 'Size'][1]],
     draw(s, answer) {
       const [aw, ah] = s.aSize;
       const [bw, bh] = s.bSize;
@@ -130,11 +133,15 @@
   figures.circles = {
     start: { a: { x: 200, y: 220 }, b: { x: 430, y: 320 }, radii: [90, 120] },
     question: (s) => ['circlesAnswer', [s.a.x, s.a.y, s.radii[0], s.b.x, s.b.y, s.radii[1]]],
+    reach: (s, handle) => {
+      const radius = s.radii[handle === 'a' ? 0 : 1];
+      return [-radius, radius, -radius, radius];
+    },
     draw(s, answer) {
       const [ra, rb] = s.radii;
       const hit = answer[2] === 1;
       const lines = [
-        [`dx = ${s.a.x - s.b.x},  dy = ${s.a.y - s.b.y}`],
+        [`dx = ${format(s.a.x - s.b.x)},  dy = ${format(s.a.y - s.b.y)}`],
         [`d\u00b2 = dx\u00b2 + dy\u00b2 = ${format(answer[0])}`],
         [`(rA + rB)\u00b2 = ${ra + rb}\u00b2 = ${format(answer[1])}`],
         verdict(hit, 'd\u00b2 < (rA + rB)\u00b2: hit', 'd\u00b2 \u2265 (rA + rB)\u00b2: apart'),
@@ -155,9 +162,13 @@
   // gap when apart, the least overlap when they collide). Drag a box; drag its dot to turn it.
   const turnArm = 40; // the turning dot sits this far beyond the box's right edge
   figures.orientedBoxes = {
-    start: { a: { x: 210, y: 190 }, b: { x: 430, y: 250 }, aHalf: [110, 55], bHalf: [80, 80], aAngle: 30, bAngle: -15 },
+    start: { a: { x: 200, y: 170 }, b: { x: 450, y: 230 }, aHalf: [110, 55], bHalf: [80, 80], aAngle: 30, bAngle: -15 },
     question: (s) => ['orientedBoxesAnswer',
       [s.a.x, s.a.y, ...s.aHalf, s.aAngle, s.b.x, s.b.y, ...s.bHalf, s.bAngle]],
+    reach: (s, handle) => {
+      const corner = Math.hypot(...s[handle + 'Half']);
+      return [-corner, corner, -corner, corner];
+    },
     drag(s, handle, to) {
       if (handle !== 'aTurn' && handle !== 'bTurn') return false;
       const centre = handle === 'aTurn' ? s.a : s.b;
@@ -180,7 +191,9 @@
         ['drag a dot to turn'],
       ];
       // The axis drawn as a line beside both boxes: a shadow point s lies at axis * s + side * offset.
-      const side = [-axis[1], axis[0]];
+      // The line lies beyond both boxes, below them (or left of them when the axis is upright).
+      let side = [-axis[1], axis[0]];
+      if (Math.abs(side[1]) > 0.3 ? side[1] < 0 : side[0] > 0) side = [-side[0], -side[1]];
       let offset = -Infinity;
       const all = cornersA.concat(cornersB);
       for (let i = 0; i < all.length; i += 2) offset = Math.max(offset, all[i] * side[0] + all[i + 1] * side[1]);
@@ -255,9 +268,10 @@
 
   // 6. A box swept against a wall: where along its move it first touches (time of impact).
   figures.sweptBox = {
-    start: { from: { x: 60, y: 200 }, to: { x: 620, y: 120 }, size: [90, 90], wall: [460, 30, 40, 480] },
+    start: { from: { x: 60, y: 220 }, to: { x: 560, y: 140 }, size: [90, 90], wall: [460, 30, 40, 480] },
     question: (s) => ['sweptBoxAnswer',
       [s.from.x, s.from.y, ...s.size, s.to.x - s.from.x, s.to.y - s.from.y, ...s.wall]],
+    reach: (s) => [0, s.size[0], 0, s.size[1]],
     draw(s, answer) {
       const [w, h] = s.size;
       const hit = answer[0] === 1;
@@ -289,7 +303,9 @@
   const defs = ['#c62828', '#1f6fd1'].map((colour) =>
     `<marker id="arrow-${colour.slice(1)}" viewBox="0 0 10 10" refX="8" refY="5" markerWidth="4" markerHeight="4" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="${colour}"/></marker>`).join('');
   const style = '<style>text{font-family:sans-serif}.answer{font-size:30px}.name{font-size:34px;font-weight:bold}' +
-    '.name.small{font-size:26px}.handle,.handle-body{cursor:grab}</style>';
+    '.name.small{font-size:26px}.handle,.handle-body{cursor:grab}' +
+    // Only shapes with a handle take the pointer: labels and lines on top must not catch it.
+    '*{pointer-events:none}[data-handle]{pointer-events:all}</style>';
   function render(name, state) {
     const figure = figures[name];
     const [functionName, numbers] = figure.question(state);
@@ -333,8 +349,10 @@
         const point = state[dragging.handle];
         const dx = Math.round((to.x - dragging.last.x) / snap) * snap;
         const dy = Math.round((to.y - dragging.last.y) / snap) * snap;
-        point.x += dx;
-        point.y += dy;
+        // The shape stays whole inside the drawing, left of the answer text.
+        const [left, right, up, down] = figures[name].reach ? figures[name].reach(state, dragging.handle) : [0, 0, 0, 0];
+        point.x = Math.min(Math.max(point.x + dx, 20 - left), panelX - 40 - right);
+        point.y = Math.min(Math.max(point.y + dy, 20 - up), height - 20 - down);
         dragging.last = { x: dragging.last.x + dx, y: dragging.last.y + dy };
       }
       update();
