@@ -7,7 +7,9 @@
 # 2. builds the programs that draw figures, and only those, into build/slides (a release
 #    build without the tests and benchmarks), unless BUILD_DIR already holds them;
 # 3. draws the figures with those programs (make-figures.sh, list in figures.txt) and checks
-#    that each is the same on every run and shows what it claims;
+#    that each is the same on every run and shows what it claims; compiles Hitbox's geometry
+#    to WebAssembly for the interactive figures (wasm/build.sh, installs emscripten) and draws
+#    each one's still for the PDF (tools/interactive-stills.mjs);
 # 4. copies the named code regions into the decks (tools/include-regions.mjs), formatted to
 #    fit the slide, and adds the navigation (tools/deck-extras.mjs: previous/next lecture
 #    slide, notes decks, dist/index.html with every lecture's outline);
