@@ -7,7 +7,9 @@
 # 2. builds the programs that draw figures, and only those, into build/slides (a release
 #    build without the tests and benchmarks), unless BUILD_DIR already holds them;
 # 3. draws the figures with those programs (make-figures.sh, list in figures.txt) and checks
-#    that each is the same on every run and shows what it claims;
+#    that each is the same on every run and shows what it claims; compiles Hitbox's geometry
+#    to WebAssembly for the interactive figures (wasm/build.sh, installs emscripten) and draws
+#    each one's still for the PDF (tools/interactive-stills.mjs);
 # 4. copies the named code regions into the decks (tools/include-regions.mjs), formatted to
 #    fit the slide, and adds the navigation (tools/deck-extras.mjs: previous/next lecture
 #    slide, notes decks, dist/index.html with every lecture's outline);
@@ -82,6 +84,11 @@ else
     "$here/make-figures.sh" "$build_dir"
 fi
 
+# Interactive figures: the geometry as WebAssembly (wasm/build.sh), and each figure's still.
+"$here/wasm/build.sh"
+node "$here/tools/interactive-stills.mjs" --wasm "$here/build/wasm/hitbox-geometry.js" \
+    --figures "$here/interactive/figures.js" --out "$here/figures/generated"
+
 # --- 4. Code regions into the decks ------------------------------------------------------------
 decks="$here/build/decks"
 rm -rf "$decks" "$here/dist"
@@ -95,7 +102,10 @@ for folder in "$decks" "$here/dist" "$here/build/notes"; do
     mkdir -p "$folder/figures/generated"
     cp "$here"/figures/*.svg "$folder/figures/"
     cp "$here"/figures/generated/*.png "$here"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
+    cp "$here"/figures/generated/interactive-*.svg "$folder/figures/generated/"
 done
+mkdir -p "$here/dist/interactive"
+cp "$here/build/wasm/hitbox-geometry.js" "$here/interactive/figures.js" "$here/dist/interactive/"
 echo "== navigation (deck-extras.mjs)"
 extras=(node "$here/tools/deck-extras.mjs" --decks "$decks" --notes "$here/build/notes" --dist "$here/dist")
 "${extras[@]}"
