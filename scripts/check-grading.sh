@@ -156,6 +156,7 @@ fair_labs=(
     lab08_many_objects
     lab09_platformer
     lab10_top_down
+    lab11_pong
     lab12_broad_phase
     lab13_fast_movers
     lab14_resting_stack

@@ -63,7 +63,7 @@ void Ball::collisionResponse(GameObject* other)
     const float speed = std::hypot(velocity.x, velocity.y);
     velocity = {away * speed * std::cos(angle), speed * std::sin(angle)};
     // STARTER TASK 3
-    // // not turned yet: the ball keeps pressing into the paddle
+    // // not turned yet: the ball carries on into the paddle
     // END TASK 3
 }
 
