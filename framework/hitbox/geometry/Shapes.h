@@ -76,7 +76,6 @@ inline bool penetrates(float depth)
     return depth > 0.f;
 }
 
-// Box helpers.
 // The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
 // when rounding would make from + size miss `to`. Without it a flipped box's edge could move
 // by a rounding error, and boxes that only touch would overlap.
@@ -106,8 +105,11 @@ inline Box normalised(const Box& box)
     }
     return result;
 }
+// The middle of the box (the same point for a negative size).
 Vec2 centerOf(const Box& box);
+// left + width: the right edge (for a negative width, the left one; normalised() first).
 float rightOf(const Box& box);
+// top + height: the bottom edge (for a negative height, the top one; normalised() first).
 float bottomOf(const Box& box);
 
 // True when every coordinate is a finite number (no NaN, no infinity).
