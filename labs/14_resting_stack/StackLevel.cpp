@@ -7,6 +7,7 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 
 namespace
@@ -34,8 +35,8 @@ void StackLevel::restack()
             // Each crate exactly on the one below, a few pixels to the side so it looks piled.
             const float sideways = static_cast<float>((index * 7) % 5) - 2.f;
             stacks[stack].push_back({stackLeft[stack] + sideways,
-                                     floorY - crateSize * static_cast<float>(index + 1),
-                                     crateSize, 0.f});
+                                     floorY - crateSize * static_cast<float>(index + 1), crateSize,
+                                     0.f});
         }
         largestMoveNow[stack] = 0.f;
         largestMoveShown[stack] = 0.f;
@@ -124,7 +125,8 @@ void StackLevel::renderDebug(hitbox::DebugRenderer& debug) const
 std::string StackLevel::getHelpText() const
 {
     char text[120];
-    std::snprintf(text, sizeof text, "Up/Down passes   R restack  |  a step moves %.2f px (%d), %.2f px (%d)",
+    std::snprintf(text, sizeof text,
+                  "Up/Down passes   R restack  |  a step moves %.2f px (%d), %.2f px (%d)",
                   static_cast<double>(largestMoveShown[0]), passes[0],
                   static_cast<double>(largestMoveShown[1]), passes[1]);
     return text;

@@ -17,12 +17,12 @@
 class StackLevel : public hitbox::Level
 {
 public:
-    static constexpr int crateCount = 10;     // crates in each stack
-    static constexpr float crateSize = 50.f;  // pixels
-    static constexpr float floorY = 640.f;    // the floor line, pixels from the top
-    static constexpr int shakyPasses = 1;     // the left stack's passes a step
-    static constexpr int startPasses = 8;     // the right stack's, at the start
-    static constexpr int maxPasses = 30;      // Up stops here
+    static constexpr int crateCount = 10;       // crates in each stack
+    static constexpr float crateSize = 50.f;    // pixels
+    static constexpr float floorY = 640.f;      // the floor line, pixels from the top
+    static constexpr int shakyPasses = 1;       // the left stack's passes a step
+    static constexpr int startPasses = 8;       // the right stack's, at the start
+    static constexpr int maxPasses = 30;        // Up stops here
     static constexpr int stepsPerReadout = 120; // the readout's window: one second
 
     StackLevel();

@@ -19,8 +19,8 @@ std::vector<Crate> stackOf(int count, float size = 40.f)
 {
     std::vector<Crate> crates;
     for (int index = 0; index < count; ++index)
-        crates.push_back({100.f + static_cast<float>(index % 3), floorY - size * (index + 1.f),
-                          size, 0.f});
+        crates.push_back(
+            {100.f + static_cast<float>(index % 3), floorY - size * (index + 1.f), size, 0.f});
     return crates;
 }
 
@@ -113,7 +113,8 @@ TEST(Task1PushApart, EveryContactIsPushedByItsMeasuredDepth)
 {
     // Crate 0 is 2 pixels into the floor and crate 1 is 6 pixels into crate 0. Both pushes
     // use the depths measured before either: crate 0 goes up 2 and down 3.
-    std::vector<Crate> crates = {{100.f, floorY - 38.f, 40.f, 0.f}, {100.f, floorY - 72.f, 40.f, 0.f}};
+    std::vector<Crate> crates = {{100.f, floorY - 38.f, 40.f, 0.f},
+                                 {100.f, floorY - 72.f, 40.f, 0.f}};
     pushApart(crates, {{0, floorIndex, 2.f}, {1, 0, 6.f}});
     EXPECT_FLOAT_EQ(crates[0].top, floorY - 37.f);
     EXPECT_FLOAT_EQ(crates[1].top, floorY - 75.f);
