@@ -7,6 +7,7 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 
 namespace
