@@ -1,5 +1,6 @@
 // The application loop's pieces that need no window: the fixed step, letterboxing, the
 // command line, headless simulation.
+#include "support/CommandLine.h"
 #include "support/SfmlPrinters.h"
 
 #include "hitbox/app/App.h"
@@ -122,36 +123,26 @@ TEST(Letterbox, SameAspectFillsTheWindowAndZeroSizeIsSafe)
               sf::FloatRect({0, 0}, {1, 1}));
 }
 
-namespace
-{
-hitbox::Options parse(std::vector<const char*> arguments,
-                      const std::vector<std::string>& extraOptions = {})
-{
-    arguments.insert(arguments.begin(), "program");
-    return hitbox::parseOptions(static_cast<int>(arguments.size()), arguments.data(),
-                                {"Test", extraOptions});
-}
-} // namespace
-
 TEST(CommandLine, SharedOptions)
 {
-    const hitbox::Options options = parse({"--headless", "--frames", "42", "--seed", "7"});
+    const hitbox::Options options =
+        parseCommandLine({"--headless", "--frames", "42", "--seed", "7"});
     EXPECT_TRUE(options.headless);
     EXPECT_EQ(options.frames, 42);
     EXPECT_EQ(options.seed, 7u);
-    EXPECT_EQ(parse({"--seconds", "3"}).frames, 360);
-    EXPECT_EQ(parse({"--screenshot", "a.png", "--debug"}).screenshotPath, "a.png");
+    EXPECT_EQ(parseCommandLine({"--seconds", "3"}).frames, 360);
+    EXPECT_EQ(parseCommandLine({"--screenshot", "a.png", "--debug"}).screenshotPath, "a.png");
 }
 
 TEST(CommandLine, ProgramOptionsAndBadInputGetClearErrors)
 {
-    EXPECT_EQ(parse({"--mode", "two"}, {"--mode"}).get("--mode", "one"), "two");
-    EXPECT_EQ(parse({}, {"--mode"}).get("--mode", "one"), "one");
-    EXPECT_THROW(parse({"--mode", "two"}), std::invalid_argument);
-    EXPECT_THROW(parse({"--frames"}), std::invalid_argument);
-    EXPECT_THROW(parse({"--frames", "ten"}), std::invalid_argument);
-    EXPECT_THROW(parse({"--frames", "-3"}), std::invalid_argument);
-    EXPECT_THROW(parse({"--headless", "--screenshot", "x.png"}), std::invalid_argument);
+    EXPECT_EQ(parseCommandLine({"--mode", "two"}, {"--mode"}).get("--mode", "one"), "two");
+    EXPECT_EQ(parseCommandLine({}, {"--mode"}).get("--mode", "one"), "one");
+    EXPECT_THROW(parseCommandLine({"--mode", "two"}), std::invalid_argument);
+    EXPECT_THROW(parseCommandLine({"--frames"}), std::invalid_argument);
+    EXPECT_THROW(parseCommandLine({"--frames", "ten"}), std::invalid_argument);
+    EXPECT_THROW(parseCommandLine({"--frames", "-3"}), std::invalid_argument);
+    EXPECT_THROW(parseCommandLine({"--headless", "--screenshot", "x.png"}), std::invalid_argument);
 }
 
 TEST(Simulate, RunsExactlyTheFramesAskedWithNoInput)

@@ -1,5 +1,7 @@
 // The command line's typed getters (issue 19): one message format, stated ranges, no
 // overflow, nothing silently read as something else.
+#include "support/CommandLine.h"
+
 #include "hitbox/app/Options.h"
 
 #include <gtest/gtest.h>
@@ -10,14 +12,6 @@
 
 namespace
 {
-hitbox::Options parse(std::vector<const char*> arguments,
-                      const std::vector<std::string>& extraOptions = {})
-{
-    arguments.insert(arguments.begin(), "program");
-    return hitbox::parseOptions(static_cast<int>(arguments.size()), arguments.data(),
-                                {"Test", extraOptions});
-}
-
 // The message a bad command line throws, or "" when it parses.
 template <typename Read>
 std::string messageOf(Read read)
@@ -36,9 +30,11 @@ std::string messageOf(Read read)
 
 TEST(OptionsWholeNumber, ReadsDigitsWithinTheRangeAndTheFallbackWhenAbsent)
 {
-    EXPECT_EQ(parse({"--balls", "12"}, {"--balls"}).wholeNumber("--balls", 2, 1, 100), 12);
-    EXPECT_EQ(parse({"--balls", "-3"}, {"--balls"}).wholeNumber("--balls", 2, -5, 5), -3);
-    EXPECT_EQ(parse({}, {"--balls"}).wholeNumber("--balls", 2, 1, 100), 2);
+    EXPECT_EQ(parseCommandLine({"--balls", "12"}, {"--balls"}).wholeNumber("--balls", 2, 1, 100),
+              12);
+    EXPECT_EQ(parseCommandLine({"--balls", "-3"}, {"--balls"}).wholeNumber("--balls", 2, -5, 5),
+              -3);
+    EXPECT_EQ(parseCommandLine({}, {"--balls"}).wholeNumber("--balls", 2, 1, 100), 2);
 }
 
 TEST(OptionsWholeNumber, RefusesEverythingElseWithOneMessageFormat)
@@ -47,7 +43,7 @@ TEST(OptionsWholeNumber, RefusesEverythingElseWithOneMessageFormat)
     for (const char* bad :
          {"abc", "200000000", "-5", "1e9", "", " 5", "+5", "12abc", "0", "99999999999999999999999"})
     {
-        const hitbox::Options options = parse({"--balls", bad}, {"--balls"});
+        const hitbox::Options options = parseCommandLine({"--balls", bad}, {"--balls"});
         EXPECT_EQ(messageOf([&] { options.wholeNumber("--balls", 2, 1, 100); }), wanted + bad + "'")
             << bad;
     }
@@ -55,24 +51,24 @@ TEST(OptionsWholeNumber, RefusesEverythingElseWithOneMessageFormat)
 
 TEST(OptionsNumber, ReadsDecimalsAndRefusesNanInfinityAndText)
 {
-    EXPECT_DOUBLE_EQ(parse({"--t", "0.5"}, {"--t"}).number("--t", 0, 0, 10), 0.5);
+    EXPECT_DOUBLE_EQ(parseCommandLine({"--t", "0.5"}, {"--t"}).number("--t", 0, 0, 10), 0.5);
     for (const char* bad : {"nan", "inf", "abc", "11", "-1", "1x", ""})
         EXPECT_EQ(messageOf(
                       [&] {
-                          parse({"--t", bad}, {"--t"}).number("--t", 0, 0, 10);
+                          parseCommandLine({"--t", bad}, {"--t"}).number("--t", 0, 0, 10);
                       }),
                   std::string("--t needs a number from 0 to 10, not '") + bad + "'");
 }
 
 TEST(OptionsOnOff, OnlyOnAndOffAreAnswers)
 {
-    EXPECT_TRUE(parse({"--demo", "on"}, {"--demo"}).onOff("--demo", false));
-    EXPECT_FALSE(parse({"--demo", "off"}, {"--demo"}).onOff("--demo", true));
-    EXPECT_TRUE(parse({}, {"--demo"}).onOff("--demo", true));
+    EXPECT_TRUE(parseCommandLine({"--demo", "on"}, {"--demo"}).onOff("--demo", false));
+    EXPECT_FALSE(parseCommandLine({"--demo", "off"}, {"--demo"}).onOff("--demo", true));
+    EXPECT_TRUE(parseCommandLine({}, {"--demo"}).onOff("--demo", true));
     for (const char* bad : {"no", "maybe", "1", "ON"})
         EXPECT_EQ(messageOf(
                       [&] {
-                          parse({"--demo", bad}, {"--demo"}).onOff("--demo", false);
+                          parseCommandLine({"--demo", bad}, {"--demo"}).onOff("--demo", false);
                       }),
                   std::string("--demo needs on or off, not '") + bad + "'");
 }
@@ -80,37 +76,37 @@ TEST(OptionsOnOff, OnlyOnAndOffAreAnswers)
 TEST(OptionsOneOf, SpelledExactlyOrAnError)
 {
     const std::vector<std::string> modes = {"swept", "discrete"};
-    EXPECT_EQ(parse({"--mode", "discrete"}, {"--mode"}).oneOf("--mode", "swept", modes),
+    EXPECT_EQ(parseCommandLine({"--mode", "discrete"}, {"--mode"}).oneOf("--mode", "swept", modes),
               "discrete");
-    EXPECT_EQ(parse({}, {"--mode"}).oneOf("--mode", "", modes), "");
+    EXPECT_EQ(parseCommandLine({}, {"--mode"}).oneOf("--mode", "", modes), "");
     EXPECT_EQ(messageOf(
                   [&] {
-                      parse({"--mode", "bogus"}, {"--mode"}).oneOf("--mode", "", modes);
+                      parseCommandLine({"--mode", "bogus"}, {"--mode"}).oneOf("--mode", "", modes);
                   }),
               "--mode needs one of swept, discrete, not 'bogus'");
 }
 
 TEST(OptionsShared, SecondsAndFramesHaveAStatedMaximumAndNeverOverflow)
 {
-    EXPECT_EQ(parse({"--seconds", "100000000"}).frames, 12'000'000'000LL);
+    EXPECT_EQ(parseCommandLine({"--seconds", "100000000"}).frames, 12'000'000'000LL);
     EXPECT_EQ(messageOf(
                   [] {
-                      parse({"--seconds", "76861433640456466"});
+                      parseCommandLine({"--seconds", "76861433640456466"});
                   }),
               "--seconds needs a whole number from 0 to 100000000, not '76861433640456466'");
     EXPECT_EQ(messageOf(
                   [] {
-                      parse({"--frames", "12000000001"});
+                      parseCommandLine({"--frames", "12000000001"});
                   }),
               "--frames needs a whole number from 0 to 12000000000, not '12000000001'");
 }
 
 TEST(OptionsShared, SeedOutOfRangeIsAnErrorNotAnotherSeed)
 {
-    EXPECT_EQ(parse({"--seed", "4294967295"}).seed, 4294967295u);
+    EXPECT_EQ(parseCommandLine({"--seed", "4294967295"}).seed, 4294967295u);
     EXPECT_EQ(messageOf(
                   [] {
-                      parse({"--seed", "4294967297"});
+                      parseCommandLine({"--seed", "4294967297"});
                   }),
               "--seed needs a whole number from 0 to 4294967295, not '4294967297'");
 }
@@ -119,7 +115,7 @@ TEST(OptionsShared, EmptyScreenshotNameIsAUsageError)
 {
     EXPECT_EQ(messageOf(
                   [] {
-                      parse({"--screenshot", ""});
+                      parseCommandLine({"--screenshot", ""});
                   }),
               "--screenshot needs a file name, e.g. shot.png");
 }
