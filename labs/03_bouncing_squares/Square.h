@@ -1,4 +1,5 @@
-// Square.h - a crate picture that flies in a straight line and bounces off the world's edges.
+// Square.h - a crate picture that flies in a straight line and bounces off the world's edges
+// (Square::update) and off other crates (bounceApart).
 //
 // The picture (the sprite) is spriteSize pixels wide, but like most sprites it has a
 // see-through margin: the crate itself, the part a player sees, is only crateSize wide, in
