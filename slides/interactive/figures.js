@@ -208,11 +208,14 @@
           const to = at(high);
           svg += line(from[0] + side[0] * shift, from[1] + side[1] * shift, to[0] + side[0] * shift, to[1] + side[1] * shift,
             `stroke="${colour}" stroke-width="12" stroke-opacity="0.8"`);
-          for (let i = 0; i < corners.length; i += 2) {
-            const along = corners[i] * axis[0] + corners[i + 1] * axis[1];
-            if (along !== low && along !== high) continue;
-            const foot = at(along);
-            svg += line(corners[i], corners[i + 1], foot[0], foot[1], `stroke="${colour}" stroke-width="2" stroke-dasharray="6 6"`);
+          // Dashed lines from the corners that cast the shadow's two ends (nearest to them:
+          // the geometry worked in float, this file in double).
+          for (const end of [low, high]) {
+            let best = 0;
+            const distance = (i) => Math.abs(corners[i] * axis[0] + corners[i + 1] * axis[1] - end);
+            for (let i = 2; i < corners.length; i += 2) if (distance(i) < distance(best)) best = i;
+            const foot = at(end);
+            svg += line(corners[best], corners[best + 1], foot[0], foot[1], `stroke="${colour}" stroke-width="2" stroke-dasharray="6 6"`);
           }
         });
       svg += '</g>';
