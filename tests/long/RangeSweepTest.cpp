@@ -47,7 +47,8 @@ struct Sweep
             ADD_FAILURE() << what;
     }
     // Judges one contact against the reference depth (> 0: overlap), at scale `largest`.
-    void judge(const hitbox::Contact& contact, double depth, double largest, const std::string& name)
+    void judge(const hitbox::Contact& contact, double depth, double largest,
+               const std::string& name)
     {
         ++cases;
         const double tolerance = std::max(1e-4, 1e-6 * largest);
@@ -70,7 +71,8 @@ struct Sweep
                         std::to_string(depth) + " at scale " + std::to_string(largest));
         if (!contact.hit)
             return;
-        worstError = std::max(worstError, std::fabs(contact.depth - depth) / std::max(1.0, largest));
+        worstError =
+            std::max(worstError, std::fabs(contact.depth - depth) / std::max(1.0, largest));
         if (std::fabs(contact.depth - depth) > tolerance)
             fail(name + ": depth " + std::to_string(contact.depth) + ", reference " +
                  std::to_string(depth) + " at scale " + std::to_string(largest));
@@ -101,7 +103,8 @@ hitbox::Polygon randomPolygon(Sweep& sweep, Corner centre, double size)
     const auto at = [](double x, double y) { return hitbox::Vec2(float(x), float(y)); };
     if (sweep.uniform(0, 1) < 0.3)
         return hitbox::toPolygon(hitbox::OrientedBox{
-            at(centre.x, centre.y), at(size * sweep.uniform(0.05, 0.7), size * sweep.uniform(0.05, 0.7)),
+            at(centre.x, centre.y),
+            at(size * sweep.uniform(0.05, 0.7), size * sweep.uniform(0.05, 0.7)),
             float(sweep.uniform(0, 360))});
     std::vector<Corner> points;
     const int count = std::uniform_int_distribution<int>(3, 8)(sweep.random);
@@ -109,8 +112,8 @@ hitbox::Polygon randomPolygon(Sweep& sweep, Corner centre, double size)
     {
         const double angle = sweep.uniform(0, 6.283185307179586);
         const double r = size * std::sqrt(sweep.uniform(0.05, 1));
-        points.push_back(
-            {double(float(centre.x + r * std::cos(angle))), double(float(centre.y + r * std::sin(angle)))});
+        points.push_back({double(float(centre.x + r * std::cos(angle))),
+                          double(float(centre.y + r * std::sin(angle)))});
     }
     hitbox::Polygon polygon;
     for (Corner p : reference::convexHull(points))
@@ -183,8 +186,8 @@ TEST(GeometryRangeSweep, PolygonsAndOrientedBoxesAtEveryScaleInTheRange)
         const hitbox::Polygon movedA = moved(a, offset);
         const hitbox::Polygon movedB = moved(b, offset);
         const double movedLargest = std::max(largestCoordinate(movedA), largestCoordinate(movedB));
-        const double movedDepth =
-            reference::originDepth(reference::minkowskiDifference(corners(movedA), corners(movedB)));
+        const double movedDepth = reference::originDepth(
+            reference::minkowskiDifference(corners(movedA), corners(movedB)));
         const hitbox::Contact movedContact = hitbox::polygonVsPolygon(movedA, movedB);
         if (std::fabs(movedDepth) > 1e-6 * movedLargest && std::fabs(depth) > 1e-6 * movedLargest &&
             (movedContact.hit != contact.hit ||
@@ -238,7 +241,8 @@ TEST(GeometryRangeSweep, CapsulesAtEveryScaleInTheRange)
             const double half = size * sweep.uniform(0, 1);
             const hitbox::Vec2 along(float(half * std::cos(angle)), float(half * std::sin(angle)));
             const hitbox::Vec2 middle(float(centre.x), float(centre.y));
-            return hitbox::Capsule{middle - along, middle + along, float(size * sweep.uniform(0.05, 1))};
+            return hitbox::Capsule{middle - along, middle + along,
+                                   float(size * sweep.uniform(0.05, 1))};
         };
         const hitbox::Capsule a = capsuleAt(centreA);
         const hitbox::Capsule b = capsuleAt(centreB);

@@ -272,6 +272,11 @@ Polygon toPolygon(const Box& box)
         {{b.left, b.top}, {b.left, bottomOf(b)}, {rightOf(b), bottomOf(b)}, {rightOf(b), b.top}}};
 }
 
+Polygon convexHull(const Polygon& polygon)
+{
+    return Polygon{cleaned(polygon)};
+}
+
 float twiceSignedArea(const Polygon& polygon)
 {
     return static_cast<float>(twiceSignedAreaOf(cleaned(polygon)));
