@@ -375,7 +375,7 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
         contact.point = closest;
         return contact;
     }
-    if (!inside && !(circle.radius > 0.f))
+    if (!inside && !penetrates(circle.radius))
         return contact; // a point on the outline is outside (the edge rule)
 
     contact.hit = true;
