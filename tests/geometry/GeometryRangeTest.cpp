@@ -221,3 +221,40 @@ TEST(PolygonVsPolygon, AHundredThousandGonAgainstASquare)
     ASSERT_TRUE(circle);
     EXPECT_NEAR(circle.depth, 5.f, 1e-3f);
 }
+
+// ---- every test works on the convex hull --------------------------------------------------
+
+TEST(ConvexHull, StartsAtTheLeftmostCornerAndGoesClockwiseOnScreen)
+{
+    // Points in any order, one repeated, one in a dent, one on an edge.
+    const Polygon scattered{
+        {{10.f, 10.f}, {0.f, 0.f}, {10.f, 0.f}, {5.f, 2.f}, {0.f, 10.f}, {10.f, 5.f}, {0.f, 0.f}}};
+    const Polygon hull = hitbox::convexHull(scattered);
+    const std::vector<hitbox::Vec2> expected{{0.f, 0.f}, {10.f, 0.f}, {10.f, 10.f}, {0.f, 10.f}};
+    EXPECT_EQ(hull.points, expected);
+    EXPECT_GT(hitbox::twiceSignedArea(hull), 0.f); // clockwise on screen
+    EXPECT_TRUE(
+        hitbox::convexHull(Polygon{{{0.f, 0.f}, {notANumber, 1.f}, {1.f, 1.f}}}).points.empty());
+    // All in line: the two ends.
+    const std::vector<hitbox::Vec2> ends{{0.f, 0.f}, {3.f, 3.f}};
+    EXPECT_EQ(hitbox::convexHull(Polygon{{{1.f, 1.f}, {3.f, 3.f}, {0.f, 0.f}}}).points, ends);
+}
+
+TEST(ConvexHull, AConcavePolygonCollidesAsItsHull)
+{
+    // A "C" shape: a box with a notch cut into its right side. A crate in the notch is
+    // inside the hull, so every test reports it.
+    const Polygon notched{{{0.f, 0.f},
+                           {30.f, 0.f},
+                           {30.f, 10.f},
+                           {10.f, 10.f},
+                           {10.f, 20.f},
+                           {30.f, 20.f},
+                           {30.f, 30.f},
+                           {0.f, 30.f}}};
+    const Polygon crate = toPolygon(hitbox::Box(20.f, 12.f, 6.f, 6.f));
+    EXPECT_TRUE(hitbox::polygonVsPolygon(crate, notched));
+    EXPECT_TRUE(hitbox::circleVsPolygon(Circle{{23.f, 15.f}, 2.f}, notched));
+    EXPECT_TRUE(hitbox::capsuleVsPolygon(Capsule{{20.f, 15.f}, {25.f, 15.f}, 2.f}, notched));
+    EXPECT_TRUE(hitbox::pointInPolygon({23.f, 15.f}, notched));
+}

@@ -294,11 +294,11 @@ TEST(GeometryRangeSweep, BeyondTheRangeNothingCollides)
         {
             ++judged;
             if (hitbox::circleVsPolygon(hitbox::Circle{c, radius}, b).hit ||
-                hitbox::capsuleVsPolygon(hitbox::Capsule{c, a.points[0], radius}, b).hit)
+                hitbox::capsuleVsPolygon(hitbox::Capsule{c, a.points.front(), radius}, b).hit)
                 sweep.fail("circleVsPolygon or capsuleVsPolygon: a hit" + where);
         }
-        const hitbox::Capsule first{a.points[0], a.points[1], radius};
-        const hitbox::Capsule second{b.points[0], b.points[1], radius};
+        const hitbox::Capsule first{a.points.front(), a.points.back(), radius};
+        const hitbox::Capsule second{b.points.front(), b.points.back(), radius};
         if (out(first.start) || out(first.end) || out(second.start) || out(second.end) ||
             !hitbox::withinExactRange(radius))
         {

@@ -223,17 +223,14 @@ Contact capsuleVsCapsule(const Capsule& a, const Capsule& b)
 Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
 {
     Contact contact;
-    if (!isUsable(capsule) || polygon.points.empty())
+    const std::vector<Vec2> corners = convexHull(polygon).points; // empty when out of range
+    if (!isUsable(capsule) || corners.empty())
         return contact;
-    for (Vec2 point : polygon.points)
-        if (!withinExactRange(point))
-            return contact;
-    if (capsule.radius == 0.f && twiceSignedArea(polygon) == 0.f)
+    if (capsule.radius == 0.f && corners.size() < 3)
         return contact; // a segment against a polygon with no area: nothing to share
 
     // Candidate axes (see the header): the polygon's edge normals, the capsule's normal, and
     // each capsule end to each corner.
-    const std::vector<Vec2>& corners = polygon.points;
     std::vector<Vec2> axes;
     std::vector<bool> fromPolygonFace;
     for (std::size_t i = 0; i < corners.size(); ++i)

@@ -55,7 +55,7 @@ SegmentPoints closestPointsOfSegments(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 
 Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);
 // Point: on B's surface, facing A.
 Contact capsuleVsCapsule(const Capsule& a, const Capsule& b);
-// A = the capsule, B = the convex polygon (Polygon.h's rules for degenerate polygons).
+// A = the capsule, B = the polygon's convex hull (Polygon.h's rules for degenerate polygons).
 // Separating axes: the polygon's edge normals, the capsule's own normal, and the directions
 // from each end of the capsule to each corner (the round ends need those). Costs O(n^2) in
 // the polygon's corners: meant for a handful of corners, not for a 1000-gon.

@@ -272,6 +272,11 @@ Polygon toPolygon(const Box& box)
         {{b.left, b.top}, {b.left, bottomOf(b)}, {rightOf(b), bottomOf(b)}, {rightOf(b), b.top}}};
 }
 
+Polygon convexHull(const Polygon& polygon)
+{
+    return Polygon{cleaned(polygon)};
+}
+
 float twiceSignedArea(const Polygon& polygon)
 {
     return static_cast<float>(twiceSignedAreaOf(cleaned(polygon)));
@@ -370,7 +375,7 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
         contact.point = closest;
         return contact;
     }
-    if (!inside && !(circle.radius > 0.f))
+    if (!inside && !penetrates(circle.radius))
         return contact; // a point on the outline is outside (the edge rule)
 
     contact.hit = true;

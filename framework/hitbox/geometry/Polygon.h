@@ -65,6 +65,10 @@ Polygon toPolygon(const OrientedBox& box);
 // The four corners of an axis-aligned box, in the same order (negative sizes normalised).
 Polygon toPolygon(const Box& box);
 
+// The polygon every test here works on: the corners of its convex hull, from the leftmost
+// (then topmost) corner, clockwise on screen. Empty when a point is NaN or out of range.
+Polygon convexHull(const Polygon& polygon);
+
 // Twice the signed area (positive when the points run clockwise on screen, y down).
 float twiceSignedArea(const Polygon& polygon);
 
