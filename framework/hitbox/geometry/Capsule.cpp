@@ -123,45 +123,50 @@ struct SegmentTimes
 SegmentTimes closestTimes(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2)
 {
     // Write the points as start1 + s * d1 and start2 + t * d2 and minimise the distance over
-    // s and t in [0, 1]: set both derivatives to zero, then clamp. The letters a, b, c, e, f
-    // and r are those of Ericson, Real-Time Collision Detection, 5.1.9 (ClosestPtSegmentSegment).
+    // s and t in [0, 1]: set both derivatives to zero, then clamp (Ericson, Real-Time Collision
+    // Detection, 5.1.9, whose letters are a = length1Squared, e = length2Squared,
+    // b = directionsDot, c = offsetAlong1, f = offsetAlong2 and r = offset).
     const Vec2 d1 = end1 - start1;
     const Vec2 d2 = end2 - start2;
-    const Vec2 r = start1 - start2;
-    const double a = double(d1.x) * d1.x + double(d1.y) * d1.y;
-    const double e = double(d2.x) * d2.x + double(d2.y) * d2.y;
-    const double f = double(d2.x) * r.x + double(d2.y) * r.y;
+    const Vec2 offset = start1 - start2;
+    const double length1Squared = double(d1.x) * d1.x + double(d1.y) * d1.y;
+    const double length2Squared = double(d2.x) * d2.x + double(d2.y) * d2.y;
+    const double offsetAlong2 = double(d2.x) * offset.x + double(d2.y) * offset.y;
     double s = 0.0;
     double t = 0.0;
-    if (a == 0.0 && e == 0.0)
+    if (length1Squared == 0.0 && length2Squared == 0.0)
         return {0.0, 0.0}; // two points
-    if (a == 0.0)
+    if (length1Squared == 0.0)
     {
-        t = clamp01(f / e); // the first is a point
+        t = clamp01(offsetAlong2 / length2Squared); // the first is a point
     }
     else
     {
-        const double c = double(d1.x) * r.x + double(d1.y) * r.y;
-        if (e == 0.0)
+        const double offsetAlong1 = double(d1.x) * offset.x + double(d1.y) * offset.y;
+        if (length2Squared == 0.0)
         {
-            s = clamp01(-c / a); // the second is a point
+            s = clamp01(-offsetAlong1 / length1Squared); // the second is a point
         }
         else
         {
-            const double b = double(d1.x) * d2.x + double(d1.y) * d2.y;
-            const double denominator = a * e - b * b; // 0 when parallel
-            s = denominator > 0.0 ? clamp01((b * f - c * e) / denominator) : 0.0;
-            t = (b * s + f) / e;
+            const double directionsDot = double(d1.x) * d2.x + double(d1.y) * d2.y;
+            const double denominator =
+                length1Squared * length2Squared - directionsDot * directionsDot; // 0 when parallel
+            s = denominator > 0.0
+                    ? clamp01((directionsDot * offsetAlong2 - offsetAlong1 * length2Squared) /
+                              denominator)
+                    : 0.0;
+            t = (directionsDot * s + offsetAlong2) / length2Squared;
             // t off the second segment: clamp it and find s again for that t.
             if (t < 0.0)
             {
                 t = 0.0;
-                s = clamp01(-c / a);
+                s = clamp01(-offsetAlong1 / length1Squared);
             }
             else if (t > 1.0)
             {
                 t = 1.0;
-                s = clamp01((b - c) / a);
+                s = clamp01((directionsDot - offsetAlong1) / length1Squared);
             }
         }
     }
