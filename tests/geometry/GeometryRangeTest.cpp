@@ -208,7 +208,7 @@ TEST(GeometryRange, CollinearCornersDoNotChangeTheAnswer)
 TEST(PolygonVsPolygon, AHundredThousandGonAgainstASquare)
 {
     // Before: O(n^2), a 10^4-gon took seconds and a 10^5-gon minutes. The figures are in
-    // tests/benchmarks/NarrowphaseBench.cpp; here only the answers.
+    // tests/benchmarks/PolygonBench.cpp; here only the answers.
     const Polygon wheel = regularPolygon({0.f, 0.f}, 1000.f, 100000);
     const Polygon square = toPolygon(hitbox::Box(990.f, -5.f, 20.f, 10.f));
     const Contact contact = hitbox::polygonVsPolygon(square, wheel);
@@ -220,6 +220,14 @@ TEST(PolygonVsPolygon, AHundredThousandGonAgainstASquare)
     const Contact circle = hitbox::circleVsPolygon(Circle{{1005.f, 0.f}, 10.f}, wheel);
     ASSERT_TRUE(circle);
     EXPECT_NEAR(circle.depth, 5.f, 1e-3f);
+    // Capsule against the wheel, O(n) as well: its left round end reaches 4 px in, then 6 px out.
+    const Contact stick =
+        hitbox::capsuleVsPolygon(Capsule{{1020.f, 0.f}, {1060.f, 0.f}, 24.f}, wheel);
+    ASSERT_TRUE(stick);
+    EXPECT_NEAR(stick.depth, 4.f, 1e-3f);
+    EXPECT_NEAR(stick.normal.x, 1.f, 1e-6f);
+    expectWellFormed(stick);
+    EXPECT_FALSE(hitbox::capsuleVsPolygon(Capsule{{1030.f, 0.f}, {1070.f, 0.f}, 24.f}, wheel));
 }
 
 // ---- every test works on the convex hull --------------------------------------------------

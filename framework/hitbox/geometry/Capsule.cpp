@@ -1,6 +1,7 @@
 #include "hitbox/geometry/Capsule.h"
 
 #include "hitbox/geometry/Range.h"
+#include "hitbox/geometry/SupportWalk.h"
 #include "hitbox/geometry/Vec2.h"
 
 #include <algorithm>
@@ -235,7 +236,7 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
         return contact; // a segment against a polygon with no area: nothing to share
 
     // Candidate axes (see the header): the polygon's edge normals, the capsule's normal, and
-    // each capsule end to each corner.
+    // from each capsule end to the corner nearest it (where the round end meets a corner).
     std::vector<Vec2> axes;
     std::vector<bool> fromPolygonFace;
     for (std::size_t i = 0; i < corners.size(); ++i)
@@ -245,13 +246,19 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
     }
     axes.push_back(perpendicular(capsule.end - capsule.start));
     fromPolygonFace.push_back(false);
-    for (Vec2 corner : corners)
-        for (Vec2 end : {capsule.start, capsule.end})
-        {
-            axes.push_back(corner - end);
-            fromPolygonFace.push_back(false);
-        }
+    for (Vec2 end : {capsule.start, capsule.end})
+    {
+        Vec2 nearest = corners[0];
+        for (Vec2 corner : corners)
+            if (dot(corner - end, corner - end) < dot(nearest - end, nearest - end))
+                nearest = corner;
+        axes.push_back(nearest - end);
+        fromPolygonFace.push_back(false);
+    }
 
+    // The edge normals come in order round the polygon: walking support points (SupportWalk.h)
+    // find its shadow on each in O(1) steps on average, so the whole test is O(n).
+    SupportWalk furthest{corners}, nearest{corners};
     bool found = false;
     bool bestFromFace = false;
     for (std::size_t i = 0; i < axes.size(); ++i)
@@ -261,13 +268,8 @@ Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon)
             continue; // a repeated corner, or a capsule end on a corner
         if (axis.x < 0.f || (axis.x == 0.f && axis.y < 0.f))
             axis = -axis; // point right (or down): ties then go left (or up)
-        float polygonMin = dot(corners[0], axis);
-        float polygonMax = polygonMin;
-        for (Vec2 corner : corners)
-        {
-            polygonMin = std::fmin(polygonMin, dot(corner, axis));
-            polygonMax = std::fmax(polygonMax, dot(corner, axis));
-        }
+        const float polygonMin = static_cast<float>(-nearest.furthestAlong(-axis));
+        const float polygonMax = static_cast<float>(furthest.furthestAlong(axis));
         const float capsuleMin =
             std::fmin(dot(capsule.start, axis), dot(capsule.end, axis)) - capsule.radius;
         const float capsuleMax =

@@ -56,9 +56,8 @@ Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);
 // Point: on B's surface, facing A.
 Contact capsuleVsCapsule(const Capsule& a, const Capsule& b);
 // A = the capsule, B = the polygon's convex hull (Polygon.h's rules for degenerate polygons).
-// Separating axes: the polygon's edge normals, the capsule's own normal, and the directions
-// from each end of the capsule to each corner (the round ends need those). Costs O(n^2) in
-// the polygon's corners: meant for a handful of corners, not for a 1000-gon.
+// Separating axes: the polygon's edge normals, the capsule's own normal, and from each end of
+// the capsule to the corner nearest it (the round ends need those). O(n) in the corners.
 Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon);
 
 } // namespace hitbox
