@@ -1,6 +1,7 @@
 #include "Pieces.h"
 
 #include "hitbox/app/Level.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -124,8 +125,8 @@ void Enemy::collisionResponse(GameObject* other)
     ++bumpCount;
     // Head straight away from the other enemy, at the same speed.
     const sf::Vector2f away = getPosition() - other->getPosition();
-    const float distance = std::hypot(away.x, away.y);
-    const float speed = std::hypot(velocity.x, velocity.y);
+    const float distance = hitbox::length(hitbox::toVec2(away));
+    const float speed = hitbox::length(hitbox::toVec2(velocity));
     if (distance > 0.f)
         velocity = away * (speed / distance);
 }

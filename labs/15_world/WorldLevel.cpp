@@ -3,6 +3,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
@@ -125,7 +126,7 @@ void WorldLevel::steerPlayer(const Input* input)
         for (const std::unique_ptr<Coin>& coin : coins)
         {
             const sf::Vector2f towards = coin->getPosition() - player->getPosition();
-            const float distance = std::hypot(towards.x, towards.y);
+            const float distance = hitbox::length(hitbox::toVec2(towards));
             if (distance < nearest && distance > 0.f)
             {
                 nearest = distance;
@@ -135,7 +136,7 @@ void WorldLevel::steerPlayer(const Input* input)
     }
     else if (input == nullptr)
         return; // tests drive the player by its velocity
-    const float length = std::hypot(direction.x, direction.y);
+    const float length = hitbox::length(hitbox::toVec2(direction));
     player->setVelocity(length > 0.f ? direction * (playerSpeed / length) : sf::Vector2f{});
 }
 
