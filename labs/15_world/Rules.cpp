@@ -2,11 +2,6 @@
 
 #include <algorithm>
 
-bool mayEverMeet(const Layers& first, const Layers& second)
-{
-    return (first.layer & second.mask) != 0 && (second.layer & first.mask) != 0;
-}
-
 // BEGIN TASK 1: each object on its layer, with the right mask
 Layers layersFor(Kind kind)
 {

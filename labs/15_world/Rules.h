@@ -22,7 +22,10 @@ Layers layersFor(Kind kind);
 
 // True when a World would ever test objects with these layers against each other: each
 // one's layer is in the other's mask (the rule World applies, written out for the tests).
-bool mayEverMeet(const Layers& first, const Layers& second);
+inline bool mayEverMeet(const Layers& first, const Layers& second)
+{
+    return (first.layer & second.mask) != 0 && (second.layer & first.mask) != 0;
+}
 
 // Task 2: takes every collected coin out of `world`, then destroys it; returns how many.
 int removeCollectedCoins(hitbox::World& world, std::vector<std::unique_ptr<Coin>>& coins);

@@ -208,9 +208,17 @@ void WorldLevel::renderDebug(hitbox::DebugRenderer& debug) const
     debug.objectBox(*player, collided(*player));
 }
 
+// The keys, then the score and what the last step's collision check cost (redrawn every
+// frame): press M and watch the box tests change while the exact tests stay the same.
 std::string WorldLevel::getHelpText() const
 {
-    return "Arrows move   A autopilot   M broadphase method   R restart";
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "Arrows move  A autopilot  M method  R restart  |  score %d  hurt %d  |  %s: "
+                  "%zu box tests, %zu exact",
+                  score, player->getHurtCount(), hitbox::toString(world.getMethod()),
+                  world.getBroadphaseStats().pairsTested, world.getExactTests());
+    return text;
 }
 
 std::string WorldLevel::describeState() const
