@@ -103,21 +103,18 @@ void WorldLevel::handleInput(const Input& input, float)
         const int next = (static_cast<int>(world.getMethod()) + 1) % 4; // four methods
         world.setMethod(static_cast<hitbox::BroadphaseMethod>(next));
     }
-    steerPlayer(&input);
+    steerPlayer(input);
 }
 
 // The arrow keys move the player (and switch the autopilot off); the autopilot heads for
 // the nearest coin, so a run with no keyboard (--headless, the screenshot) still plays.
-void WorldLevel::steerPlayer(const Input* input)
+void WorldLevel::steerPlayer(const Input& input)
 {
     sf::Vector2f direction;
-    if (input != nullptr)
-    {
-        direction.x = (input->isKeyDown(sf::Keyboard::Key::Right) ? 1.f : 0.f) -
-                      (input->isKeyDown(sf::Keyboard::Key::Left) ? 1.f : 0.f);
-        direction.y = (input->isKeyDown(sf::Keyboard::Key::Down) ? 1.f : 0.f) -
-                      (input->isKeyDown(sf::Keyboard::Key::Up) ? 1.f : 0.f);
-    }
+    direction.x = (input.isKeyDown(sf::Keyboard::Key::Right) ? 1.f : 0.f) -
+                  (input.isKeyDown(sf::Keyboard::Key::Left) ? 1.f : 0.f);
+    direction.y = (input.isKeyDown(sf::Keyboard::Key::Down) ? 1.f : 0.f) -
+                  (input.isKeyDown(sf::Keyboard::Key::Up) ? 1.f : 0.f);
     if (direction.x != 0.f || direction.y != 0.f)
         autopilot = false;
     else if (autopilot)
@@ -134,8 +131,6 @@ void WorldLevel::steerPlayer(const Input* input)
             }
         }
     }
-    else if (input == nullptr)
-        return; // tests drive the player by its velocity
     const float length = hitbox::length(hitbox::toVec2(direction));
     player->setVelocity(length > 0.f ? direction * (playerSpeed / length) : sf::Vector2f{});
 }
@@ -159,8 +154,6 @@ void WorldLevel::wander(float dt)
 
 void WorldLevel::update(float dt)
 {
-    if (autopilot)
-        steerPlayer(nullptr);
     player->update(dt);
     wander(dt);
     for (std::unique_ptr<Enemy>& enemy : enemies)

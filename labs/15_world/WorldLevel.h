@@ -53,7 +53,7 @@ private:
     void addRandomCoin();
     void addRandomEnemy();
     void wander(float dt);
-    void steerPlayer(const Input* input);
+    void steerPlayer(const Input& input);
 
     std::mt19937 random;
     hitbox::World world;
