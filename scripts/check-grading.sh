@@ -160,5 +160,6 @@ fair_labs=(
     lab12_broad_phase
     lab13_fast_movers
     lab14_resting_stack
+    lab15_world
 )
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"

@@ -1,0 +1,234 @@
+// Grading tests of lab 15 (many objects in one World). Each suite is named after the task it
+// checks; README.md lists them. The level runs with no window, one fixed step at a time.
+//
+// Each task's tests reach only that task's code: task 1's scenes have no player in them
+// (so no coin is collected and no rule matters), task 2's have no enemies, task 3's no
+// coins. A mistake in one task costs that task alone.
+#include "labs/LabTesting.h"
+
+#include "Pieces.h"
+#include "Rules.h"
+#include "WorldLevel.h"
+
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
+#include "hitbox/sfml/Conversions.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+namespace
+{
+
+void runSteps(WorldLevel& level, int steps)
+{
+    hitbox::simulate(level, steps);
+}
+
+// A level with only the player (still, at `playerAt`, no autopilot) and what a test adds.
+WorldLevel emptyLevel(sf::Vector2f playerAt)
+{
+    WorldLevel level;
+    level.removeAllButThePlayer();
+    level.placePlayer(playerAt);
+    return level;
+}
+
+// Half the player's side and the coin's radius, whatever Pieces.h sets them to.
+float playerHalf()
+{
+    return hitbox::toBox(Player({}).getCollisionBox()).width / 2.f;
+}
+
+float coinRadiusNow()
+{
+    return Coin({}).getBoundingCircle().radius;
+}
+
+const sf::Vector2f farCorner{100.f, 100.f};
+const sf::Vector2f middle{600.f, 340.f};
+
+} // namespace
+
+TEST(Level, StartsWithCoinsEnemiesAndThePlayerInOneWorld)
+{
+    WorldLevel level;
+    EXPECT_EQ(level.getCoinCount(), startCoins);
+    EXPECT_EQ(level.getEnemyCount(), startEnemies);
+    EXPECT_EQ(level.getWorld().size(), static_cast<std::size_t>(1 + startCoins + startEnemies));
+}
+
+TEST(Level, EveryBroadphaseMethodFindsTheSameCollisions)
+{
+    // M switches the method: the World finds the same pairs, only the work differs.
+    std::vector<std::size_t> found;
+    for (int method = 0; method < 4; ++method)
+    {
+        WorldLevel level(7);
+        for (int press = 0; press < method; ++press)
+        {
+            Input input;
+            input.setKeyDown(sf::Keyboard::Key::M);
+            level.handleInput(input, hitbox::stepSeconds);
+        }
+        EXPECT_EQ(static_cast<int>(level.getWorld().getMethod()), (2 + method) % 4);
+        std::size_t collisions = 0;
+        for (int step = 0; step < 600; ++step)
+        {
+            runSteps(level, 1);
+            collisions += level.getWorld().getCollisions().size();
+        }
+        found.push_back(collisions);
+    }
+    for (std::size_t method = 1; method < found.size(); ++method)
+        EXPECT_EQ(found[method], found[0]) << "method " << method;
+}
+
+TEST(Task1LayersAndMasks, CoinsNeverMeetCoinsOrEnemies)
+{
+    const Layers coin = layersFor(Kind::Coin);
+    EXPECT_FALSE(mayEverMeet(coin, coin)) << "two coins never need an exact test";
+    EXPECT_FALSE(mayEverMeet(coin, layersFor(Kind::Enemy))) << "enemies walk over coins";
+    EXPECT_FALSE(mayEverMeet(layersFor(Kind::Enemy), coin));
+}
+
+TEST(Task1LayersAndMasks, ThePlayerMeetsCoinsAndEnemiesAndEnemiesBump)
+{
+    const Layers player = layersFor(Kind::Player);
+    EXPECT_TRUE(mayEverMeet(player, layersFor(Kind::Coin)));
+    EXPECT_TRUE(mayEverMeet(player, layersFor(Kind::Enemy)));
+    EXPECT_TRUE(mayEverMeet(layersFor(Kind::Enemy), layersFor(Kind::Enemy)));
+}
+
+TEST(Task1LayersAndMasks, EachKindIsOnItsOwnLayer)
+{
+    EXPECT_EQ(layersFor(Kind::Player).layer, layer::player);
+    EXPECT_EQ(layersFor(Kind::Coin).layer, layer::coin);
+    EXPECT_EQ(layersFor(Kind::Enemy).layer, layer::enemy);
+}
+
+TEST(Task1LayersAndMasks, APileOfCoinsAndEnemiesCostsOnlyTheEnemyTests)
+{
+    // Four coins and three enemies on one spot, the player far away: 21 pairs overlap, but
+    // only the 3 enemy-enemy pairs may ever meet, so only they get an exact test.
+    WorldLevel level = emptyLevel(farCorner);
+    for (int coin = 0; coin < 4; ++coin)
+        level.addCoin(middle + sf::Vector2f{2.f * coin, 0.f});
+    for (int enemy = 0; enemy < 3; ++enemy)
+        level.addEnemy(middle + sf::Vector2f{0.f, 3.f * enemy}, {});
+    runSteps(level, 1);
+    EXPECT_EQ(level.getWorld().getExactTests(), 3u);
+    EXPECT_EQ(level.getWorld().getCollisions().size(), 3u);
+    EXPECT_EQ(level.getEnemy(0).getBumpCount(), 2);
+}
+
+TEST(Task2CollectCoins, CoinTouchedByThePlayerIsCollected)
+{
+    WorldLevel level = emptyLevel(middle);
+    level.addCoin(middle + sf::Vector2f{playerHalf(), 0.f});
+    const std::size_t before = level.getWorld().size();
+    runSteps(level, 1);
+    EXPECT_EQ(level.getScore(), 1);
+    EXPECT_EQ(level.getCoinCount(), 0);
+    EXPECT_EQ(level.getWorld().size(), before - 1) << "a collected coin leaves the World";
+}
+
+TEST(Task2CollectCoins, EachCoinCountsOnce)
+{
+    WorldLevel level = emptyLevel(middle);
+    level.addCoin(middle);
+    level.addCoin(middle + sf::Vector2f{5.f, 0.f});
+    level.addCoin(middle + sf::Vector2f{0.f, -5.f});
+    level.addCoin(middle + sf::Vector2f{300.f, 0.f}); // out of reach
+    runSteps(level, 10);
+    EXPECT_EQ(level.getScore(), 3);
+    EXPECT_EQ(level.getCoinCount(), 1);
+    EXPECT_EQ(level.getWorld().size(), 2u);
+}
+
+TEST(Task2CollectCoins, CoinOnlyTouchingThePlayerStays)
+{
+    // The edge rule: touching is not colliding. The coin's circle touches the player's
+    // right side, and the two never overlap.
+    WorldLevel level = emptyLevel(middle);
+    level.addCoin(middle + sf::Vector2f{playerHalf() + coinRadiusNow(), 0.f});
+    runSteps(level, 10);
+    EXPECT_EQ(level.getScore(), 0);
+    EXPECT_EQ(level.getCoinCount(), 1);
+}
+
+TEST(Task2CollectCoins, OnlyThePlayerCollects)
+{
+    Coin coin(middle);
+    Enemy enemy(middle, {});
+    coin.collisionResponse(&enemy);
+    coin.collisionResponse(nullptr);
+    EXPECT_FALSE(coin.isCollected()) << "an enemy or a wall does not collect a coin";
+    Player player(middle);
+    coin.collisionResponse(&player);
+    EXPECT_TRUE(coin.isCollected());
+}
+
+TEST(Task2CollectCoins, CollectedCoinsLeaveTheWorldBeforeTheyAreDestroyed)
+{
+    // The World keeps pointers to objects it does not own: a coin destroyed while still in
+    // it would be read by the next checkCollisions (the address sanitizer reports that).
+    hitbox::World world;
+    std::vector<std::unique_ptr<Coin>> coins;
+    Player player(farCorner);
+    world.add(player);
+    for (int coin = 0; coin < 3; ++coin)
+    {
+        coins.push_back(std::make_unique<Coin>(middle + sf::Vector2f{100.f * coin, 0.f}));
+        world.add(*coins.back(), 1, 0xFFFFFFFF, hitbox::World::Shape::Circle);
+    }
+    const Coin* kept = coins[1].get();
+    coins[0]->collisionResponse(&player);
+    coins[2]->collisionResponse(&player);
+    EXPECT_EQ(removeCollectedCoins(world, coins), 2);
+    ASSERT_EQ(coins.size(), 1u);
+    EXPECT_EQ(coins[0].get(), kept);
+    EXPECT_EQ(world.size(), 2u);
+    world.checkCollisions();
+    EXPECT_EQ(removeCollectedCoins(world, coins), 0);
+}
+
+TEST(Task3BlinkingPlayerRule, ABlinkingPlayerIsNotTestedAgainstEnemies)
+{
+    Player player(middle);
+    Enemy enemy(middle, {});
+    player.collisionResponse(&enemy);
+    ASSERT_TRUE(player.isBlinking());
+    EXPECT_FALSE(mayMeetNow(player, enemy));
+    EXPECT_FALSE(mayMeetNow(enemy, player)) << "the World may hand the pair either way round";
+}
+
+TEST(Task3BlinkingPlayerRule, EveryOtherPairIsStillTested)
+{
+    Player player(middle);
+    Enemy enemy(middle, {});
+    Enemy other(middle, {});
+    Coin coin(middle);
+    EXPECT_TRUE(mayMeetNow(player, enemy)) << "a player who is not blinking can be hurt";
+    player.collisionResponse(&enemy);
+    EXPECT_TRUE(mayMeetNow(player, coin)) << "a blinking player still collects coins";
+    EXPECT_TRUE(mayMeetNow(coin, player));
+    EXPECT_TRUE(mayMeetNow(enemy, other)) << "enemies still bump each other";
+}
+
+TEST(Task3BlinkingPlayerRule, PlayerStandingOnAnEnemyIsHurtOncePerBlink)
+{
+    WorldLevel level = emptyLevel(middle);
+    level.addEnemy(middle + sf::Vector2f{10.f, 0.f}, {});
+    runSteps(level, 1);
+    EXPECT_EQ(level.getPlayer().getHurtCount(), 1);
+    runSteps(level, 1);
+    EXPECT_EQ(level.getWorld().getExactTests(), 0u) << "the blinking pair needs no exact test";
+    const int blinkSteps = static_cast<int>(blinkSeconds * hitbox::stepsPerSecond);
+    runSteps(level, blinkSteps - 10);
+    EXPECT_EQ(level.getPlayer().getHurtCount(), 1) << "hurt again while still blinking";
+    runSteps(level, 20);
+    EXPECT_EQ(level.getPlayer().getHurtCount(), 2) << "the blink is over: the enemy hurts again";
+}
