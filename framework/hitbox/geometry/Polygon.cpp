@@ -243,15 +243,28 @@ float twiceSignedArea(const Polygon& polygon)
     return static_cast<float>(twiceSignedAreaOf(cleaned(polygon)));
 }
 
+namespace
+{
+// Both polygons cleaned into `a` and `b`, and the search over their axes; false when there is
+// nothing to search (a pair that never collides, or no axis at all).
+bool searchPolygons(const Polygon& first, const Polygon& second, std::vector<Vec2>& a,
+                    std::vector<Vec2>& b, Search& search)
+{
+    a = cleaned(first);
+    b = cleaned(second);
+    if (neverCollide(a, b))
+        return false;
+    search = searchAxes(a, b);
+    return search.anyAxis;
+}
+} // namespace
+
 AxisReport findSeparatingAxis(const Polygon& first, const Polygon& second)
 {
     AxisReport report;
-    const std::vector<Vec2> a = cleaned(first);
-    const std::vector<Vec2> b = cleaned(second);
-    if (neverCollide(a, b))
-        return report;
-    const Search search = searchAxes(a, b);
-    if (!search.anyAxis)
+    std::vector<Vec2> a, b;
+    Search search;
+    if (!searchPolygons(first, second, a, b, search))
         return report;
     report.separated = search.separated;
     report.axis = search.separated ? search.gapAxis : search.overlapAxis;
@@ -262,12 +275,9 @@ AxisReport findSeparatingAxis(const Polygon& first, const Polygon& second)
 Contact polygonVsPolygon(const Polygon& first, const Polygon& second)
 {
     Contact contact;
-    const std::vector<Vec2> a = cleaned(first);
-    const std::vector<Vec2> b = cleaned(second);
-    if (neverCollide(a, b))
-        return contact;
-    const Search search = searchAxes(a, b);
-    if (search.separated || !search.anyAxis)
+    std::vector<Vec2> a, b;
+    Search search;
+    if (!searchPolygons(first, second, a, b, search) || search.separated)
         return contact;
     // The axis of least overlap is the minimum translation.
     contact.hit = true;

@@ -117,10 +117,15 @@ Hit sweepBoxVsMovingBox(const Box& mover, Vec2 moverDisplacement, const Box& tar
                         Vec2 targetDisplacement)
 {
     // Watch from the target: it stands still and the mover makes the relative move.
-    Hit hit = sweepBoxVsBox(mover, moverDisplacement - targetDisplacement, target);
-    if (hit.hit)
-        hit.point += targetDisplacement * hit.time;
-    return hit;
+    return movedWithTarget(sweepBoxVsBox(mover, moverDisplacement - targetDisplacement, target),
+                           targetDisplacement);
+}
+
+Hit movedWithTarget(Hit hitSeenFromTarget, Vec2 targetDisplacement)
+{
+    if (hitSeenFromTarget.hit)
+        hitSeenFromTarget.point += targetDisplacement * hitSeenFromTarget.time;
+    return hitSeenFromTarget;
 }
 
 } // namespace hitbox

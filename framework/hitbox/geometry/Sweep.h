@@ -29,6 +29,10 @@ struct Hit
 // time 0 with `startedInside`, and the contact's push-out as normal, depth and point.
 Hit startedInsideHit(const Contact& overlap);
 
+// A hit found in a moving target's frame (the mover made the relative move), put back in the
+// world: the point moves on with the target by targetDisplacement * time. No hit: unchanged.
+Hit movedWithTarget(Hit hitSeenFromTarget, Vec2 targetDisplacement);
+
 // The slab method (Ericson, Real-Time Collision Detection, 5.3.3): a point moving from `start`
 // to `end` against a box. Hits only when the point passes strictly inside (a point grazing an
 // edge does not); `point` is start + time * (end - start). A zero-length segment is

@@ -80,10 +80,9 @@ Hit sweepCircleVsMovingCircle(const Circle& mover, Vec2 moverDisplacement, const
                               Vec2 targetDisplacement)
 {
     // Watch from the target: it stands still and the mover makes the relative move.
-    Hit hit = sweepCircleVsCircle(mover, moverDisplacement - targetDisplacement, target);
-    if (hit.hit)
-        hit.point += targetDisplacement * hit.time;
-    return hit;
+    return movedWithTarget(
+        sweepCircleVsCircle(mover, moverDisplacement - targetDisplacement, target),
+        targetDisplacement);
 }
 
 Hit sweepCircleVsBox(const Circle& mover, Vec2 displacement, const Box& box)
