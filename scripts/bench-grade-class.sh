@@ -43,18 +43,20 @@ for ((i = 1; i <= count; i++)); do
 done
 
 echo "bench: load before: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
-start=$(date +%s.%N)
-/usr/bin/time -f '%U %S' -o "$work/cold.cpu" \
-    ./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-cold" --build "$work/instructor"
-cold=$(echo "$(date +%s.%N) - $start" | bc)
-cold_cpu=$(awk 'END { print $1 + $2 }' "$work/cold.cpu")
-echo "bench: load after the cold run: $(cut -d' ' -f1-3 /proc/loadavg)"
-start=$(date +%s.%N)
-/usr/bin/time -f '%U %S' -o "$work/warm.cpu" \
-    ./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-warm" --build "$work/instructor"
-warm=$(echo "$(date +%s.%N) - $start" | bc)
-warm_cpu=$(awk 'END { print $1 + $2 }' "$work/warm.cpu")
-echo "bench: load after the warm run: $(cut -d' ' -f1-3 /proc/loadavg)"
+# grade_once NAME: grade the class into $work/grades-NAME; sets seconds and cpu_seconds.
+grade_once() {
+    local start
+    start=$(date +%s.%N)
+    /usr/bin/time -f '%U %S' -o "$work/$1.cpu" \
+        ./scripts/grade-class.sh "$work/class" --lab "$lab" --out "$work/grades-$1" --build "$work/instructor"
+    seconds=$(echo "$(date +%s.%N) - $start" | bc)
+    cpu_seconds=$(awk 'END { print $1 + $2 }' "$work/$1.cpu")
+    echo "bench: load after the $1 run: $(cut -d' ' -f1-3 /proc/loadavg)"
+}
+grade_once cold
+cold=$seconds cold_cpu=$cpu_seconds
+grade_once warm
+warm=$seconds warm_cpu=$cpu_seconds
 cmp -s "$work/grades-cold/grades.csv" "$work/grades-warm/grades.csv" ||
     { echo "bench: the two runs gave different grades" >&2; exit 1; }
 printf 'bench: %d submissions of %s: cold start %.0f s (%.0f CPU s); with the instructor build in place %.0f s (%.1f s per submission; %.1f CPU s per submission)\n' \

@@ -68,13 +68,13 @@ void CrowdLevel::update(float dt)
         lastSearch = gridPairs(boxes, cellSize);
         break;
     }
+    overlapping.assign(boxes.size(), false);
+    for (const Pair& pair : lastSearch.pairs)
+        overlapping[pair.first] = overlapping[pair.second] = true;
 }
 
 void CrowdLevel::render(sf::RenderTarget& target) const
 {
-    std::vector<bool> overlapping(boxes.size(), false);
-    for (const Pair& pair : lastSearch.pairs)
-        overlapping[pair.first] = overlapping[pair.second] = true;
     for (std::size_t index = 0; index < boxes.size(); ++index)
     {
         const Box& box = boxes[index];
@@ -101,9 +101,6 @@ void CrowdLevel::renderDebug(hitbox::DebugRenderer& debug) const
     const bool sweeping = method == Method::SortAndSweep;
     if (sweeping)
         debug.line({sweepLineX, 0.f}, {sweepLineX, world.y}, hitbox::DebugRenderer::velocityColor);
-    std::vector<bool> overlapping(boxes.size(), false);
-    for (const Pair& pair : lastSearch.pairs)
-        overlapping[pair.first] = overlapping[pair.second] = true;
     for (std::size_t index = 0; index < boxes.size(); ++index)
     {
         const Box& box = boxes[index];

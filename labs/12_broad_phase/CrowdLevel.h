@@ -45,5 +45,6 @@ private:
     std::vector<float> speedY;
     Method method = Method::SortAndSweep;
     PairSearch lastSearch;
+    std::vector<bool> overlapping; // box i is in one of lastSearch's pairs (drawn red)
     float sweepLineX = 0.f;
 };
