@@ -269,6 +269,10 @@ function(hitbox_add_course_lab lab_folder)
     endif()
     target_include_directories(${library} BEFORE PUBLIC "${COURSE_LAB_OVERLAY}" "${compat_folder}")
     hitbox_warnings(${library})
+    if(NOT MSVC)
+        # The lab's own headers in the overlay may carry MSVC's #pragma warning lines.
+        target_compile_options(${library} PRIVATE -Wno-unknown-pragmas)
+    endif()
     target_link_libraries(course_lab PRIVATE ${library})
     # The lab's converted copies first (its own includes: "Level.h"), then the overlay (its
     # GameState.h), then Hitbox's "Framework/X.h" headers. The original folder is
