@@ -139,14 +139,17 @@ for lab in "${labs[@]}"; do
         failed=1
         continue
     fi
-    grep -m1 "Course lab: .*framework" "$build/configure.log" || true
+    grep -m1 "Course lab: .*course framework" "$build/configure.log" || true
 
     echo "== $name: run for $seconds_to_run seconds"
     shot="${screenshots:-$PWD/$build}/$name.png"
     rm -f "$shot"
     # Start the lab, let it run, photograph the screen, then close it. Exit code 0 means it
     # was still running when closed; anything else is a crash or an early exit. The X server
-    # accepts any local client (-ac), so a program in the Debian root can use it too; setsid
+    # accepts any local client (-ac), so a program in the Debian root can use it too, and
+    # does not reset when its last client leaves (-noreset: a lab that asks the desktop's
+    # size before opening its window connects twice, and a resetting server refuses the
+    # second connection, which a real desktop never does); setsid
     # puts the program (and, in the root, the commands around it) in a group of its own.
     runner='
         inside=$1 build=$2 seconds=$3 shot=$4 log=$5 mouse_at=$6
@@ -162,7 +165,7 @@ for lab in "${labs[@]}"; do
         kill -0 "$lab_pid" 2>/dev/null || { wait "$lab_pid"; echo "exited early with code $? (output: $log)" >&2; exit 1; }
         ffmpeg -loglevel error -f x11grab -draw_mouse 0 -video_size 1920x1920 -i "$DISPLAY" -frames:v 1 "$shot"
         kill -- "-$lab_pid"; wait "$lab_pid" 2>/dev/null; exit 0'
-    if ! xvfb-run -a -s "-screen 0 1920x1920x24 -ac" \
+    if ! xvfb-run -a -s "-screen 0 1920x1920x24 -ac -noreset" \
         sh -c "$runner" runner "${inside[*]}" "$build" "$seconds_to_run" "$shot" "$build/run.log" "$mouse_at"; then
         echo "FAIL $name: did not keep running" >&2
         failed=1
