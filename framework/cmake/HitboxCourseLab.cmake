@@ -31,10 +31,11 @@
 #     assets, with extra names for files the code spells with other letter case
 #     (HitboxCourseLabAssets.cmake), so gfx/, font/ and sfx/ paths load as on Windows.
 
-set(HITBOX_COURSE_LAB_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
-if(NOT CMAKE_SCRIPT_MODE_FILE)
-    include("${CMAKE_CURRENT_LIST_DIR}/HitboxCourseLabFramework.cmake")
+if(CMAKE_SCRIPT_MODE_FILE)
+    cmake_minimum_required(VERSION 3.16) # the policies of a project, for the script modes below
 endif()
+set(HITBOX_COURSE_LAB_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
+include("${CMAKE_CURRENT_LIST_DIR}/HitboxCourseLabFramework.cmake")
 
 # Sets HITBOX_COURSE_LAB_GENERATION (2019 or 2025) and HITBOX_COURSE_LAB_SFML_MAJOR (2 or 3)
 # from the folder's own Framework/ headers or, without them, from its code.
@@ -306,4 +307,11 @@ endfunction()
 if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_GENERATION_OF)
     hitbox_find_course_lab_generation("${HITBOX_PRINT_GENERATION_OF}")
     execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${HITBOX_COURSE_LAB_GENERATION}")
+endif()
+# Script mode, for the tests: the lines configure prints about a folder's edited Framework/.
+#   cmake -DHITBOX_REPORT_EDITED_FRAMEWORK_OF=<folder> -P HitboxCourseLab.cmake
+if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_REPORT_EDITED_FRAMEWORK_OF)
+    get_filename_component(lab_folder "${HITBOX_REPORT_EDITED_FRAMEWORK_OF}" ABSOLUTE)
+    hitbox_find_course_lab_generation("${lab_folder}")
+    hitbox_report_edited_framework_files("${lab_folder}" ${HITBOX_COURSE_LAB_GENERATION})
 endif()

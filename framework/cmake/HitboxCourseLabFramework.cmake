@@ -17,8 +17,11 @@
 # there too (beside their headers, which they include as "GameState.h") and compiled as lab
 # code.
 
-set(HITBOX_COURSE_LAB_OWN_FRAMEWORK "" CACHE STRING
-    "Course lab Framework/ files to build from the lab's own (edited) copy, e.g. Framework/Input.cpp")
+if(NOT CMAKE_SCRIPT_MODE_FILE)
+    set(HITBOX_COURSE_LAB_OWN_FRAMEWORK "" CACHE STRING
+        "Course lab Framework/ files to build from the lab's own (edited) copy, e.g. Framework/Input.cpp")
+endif()
+set(HITBOX_COURSE_FRAMEWORK_HASHES "${CMAKE_CURRENT_LIST_DIR}/../compat/course-framework-hashes.json")
 
 # The course classes that 2019-24 labs may replace: the ones Hitbox implements in
 # framework/compat/ only. GameObject, Collision, Input, BaseLevel, Vector and Animation are
@@ -42,9 +45,10 @@ endfunction()
 
 # Says, one line per file, which of the lab's Framework/ files differ from the course's.
 function(hitbox_report_edited_framework_files lab_folder generation)
-    set(table_file "${PROJECT_SOURCE_DIR}/framework/compat/course-framework-hashes.json")
-    file(READ "${table_file}" table)
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${table_file}")
+    file(READ "${HITBOX_COURSE_FRAMEWORK_HASHES}" table)
+    if(NOT CMAKE_SCRIPT_MODE_FILE)
+        set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${HITBOX_COURSE_FRAMEWORK_HASHES}")
+    endif()
     file(GLOB framework_files RELATIVE "${lab_folder}" "${lab_folder}/Framework/*")
     foreach(relative IN LISTS framework_files)
         if(relative MATCHES "^Framework/GameState\\.(h|cpp)$" OR relative IN_LIST HITBOX_COURSE_LAB_OWN_FRAMEWORK)
