@@ -266,7 +266,11 @@ function(hitbox_add_course_lab lab_folder)
         target_link_libraries(${library} PUBLIC hitbox)
         # Before main(): with no sound device, OpenAL Soft's silent driver and one line
         # instead of an error for every sound (SFML 2 only: SFML 3 says it once itself).
-        target_sources(course_lab PRIVATE "${PROJECT_SOURCE_DIR}/framework/compat/SilentAudio.cpp")
+        # An object library: its objects are always linked, so its initializer runs.
+        add_library(hitbox_course_silent_audio OBJECT
+            "${PROJECT_SOURCE_DIR}/framework/compat/SilentAudio.cpp")
+        hitbox_warnings(hitbox_course_silent_audio)
+        target_link_libraries(course_lab PRIVATE hitbox_course_silent_audio)
     endif()
     target_include_directories(${library} BEFORE PUBLIC "${COURSE_LAB_OVERLAY}" "${compat_folder}")
     hitbox_warnings(${library})
