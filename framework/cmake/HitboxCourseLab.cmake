@@ -15,11 +15,13 @@
 #
 # What it does about the folder as Visual Studio saved it:
 #   - its own Framework/ copy (and the Windows-only SFML/ copy) is ignored: Hitbox's
-#     headers take its place. One exception: the course invites students to edit
-#     Framework/GameState.h (its enum of states), so the lab's copy of that header (and of
-#     GameState.cpp) is used when there is one;
+#     headers take its place, except its GameState and any edited file the user chooses
+#     to build, and a file a student edited is named in one line
+#     (HitboxCourseLabFramework.cmake);
 #   - the .cpp files its Visual Studio project compiles (the .vcxproj's ClCompile list) are
-#     compiled, not the stray copies beside them; every .cpp when there is no project;
+#     compiled, not the stray copies beside them; every .cpp when there is no project. A
+#     .cpp left out of the list whose header the code includes is named in one line;
+#   - <windows.h> off Windows: a stand-in for the calls labs make, said in one line;
 #   - every source and header is copied into the build tree by
 #     HitboxConvertCourseSource.cmake (UTF-16 and byte-order marks, backslash includes,
 #     includes whose letter case differs from the file's), at build time;
