@@ -260,8 +260,10 @@ function(hitbox_add_course_lab lab_folder)
         # Hitbox's Animation is the course's Animation; nothing else of the object layer is:
         # the 2019-24 classes of the same names (GameObject, Input, BaseLevel) must not be
         # linked into the same program, so the course's classes sit on Hitbox's maths only.
-        add_library(${library} STATIC ${compat_sources}
-            "${PROJECT_SOURCE_DIR}/framework/hitbox/objects/Animation.cpp")
+        if(NOT Animation IN_LIST COURSE_LAB_OWN_CLASSES)
+            list(APPEND compat_sources "${PROJECT_SOURCE_DIR}/framework/hitbox/objects/Animation.cpp")
+        endif()
+        add_library(${library} STATIC ${compat_sources})
         target_link_libraries(${library} PUBLIC hitbox_sfml hitbox_geometry)
     else()
         add_library(${library} STATIC ${compat_sources})
@@ -285,6 +287,12 @@ function(hitbox_add_course_lab lab_folder)
     # GameState.h), then Hitbox's "Framework/X.h" headers. The original folder is
     # deliberately not on the path.
     target_include_directories(course_lab BEFORE PRIVATE "${copy_folder}" "${COURSE_LAB_OVERLAY}" "${compat_folder}")
+    # The course's own files include their neighbours without the folder ("GameObject.h"
+    # in Framework/TileMap.h): when the lab builds some of them, Hitbox's neighbours are
+    # found that way too, last.
+    if(HITBOX_COURSE_LAB_OWN_FRAMEWORK)
+        target_include_directories(${library} PUBLIC "${compat_folder}/Framework")
+    endif()
 
     # The folder the program runs from: the lab's assets, letter case forgiven.
     set(run_folder "${CMAKE_CURRENT_BINARY_DIR}/course_lab_run")

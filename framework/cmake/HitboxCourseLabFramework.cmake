@@ -45,6 +45,11 @@ endfunction()
 
 # Says, one line per file, which of the lab's Framework/ files differ from the course's.
 function(hitbox_report_edited_framework_files lab_folder generation)
+    if(CMAKE_VERSION VERSION_LESS 3.19)
+        message(STATUS "Course lab: CMake ${CMAKE_VERSION} cannot read the table of the course's "
+                       "Framework/ files (3.19 can): a student's edits to them are not looked for")
+        return()
+    endif()
     file(READ "${HITBOX_COURSE_FRAMEWORK_HASHES}" table)
     if(NOT CMAKE_SCRIPT_MODE_FILE)
         set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${HITBOX_COURSE_FRAMEWORK_HASHES}")
