@@ -23,7 +23,7 @@ labs=()
 while [[ $# -gt 0 ]]; do
     case "$1" in
     --screenshots) screenshots="$(mkdir -p "$2" && cd "$2" && pwd)"; shift 2 ;;
-    -h | --help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,17p' "$0"; exit 0 ;;
     *) labs+=("$1"); shift ;;
     esac
 done
@@ -46,7 +46,7 @@ sfml_major_here=$(pkg-config --modversion sfml-graphics 2>/dev/null || echo 0)
 sfml_major_here=${sfml_major_here%%.*}
 seconds_to_run=4
 # A flood, not a chatty lab: a lab printing a line every frame writes about 240 lines in four
-# seconds; OpenAL Soft with no sound device wrote 58,708 (measured on week10_sound_effects).
+# seconds; OpenAL Soft with no sound device wrote 2.6 million (week10_sound_effects, unsilenced).
 most_output_lines=1000
 failed=0
 
@@ -151,8 +151,8 @@ for lab in "${labs[@]}"; do
     # accepts any local client (-ac), so a program in the Debian root can use it too, and
     # does not reset when its last client leaves (-noreset: a lab that asks the desktop's
     # size before opening its window connects twice, and a resetting server refuses the
-    # second connection, which a real desktop never does); setsid
-    # puts the program (and, in the root, the commands around it) in a group of its own.
+    # second connection, which a real desktop never does). setsid puts the program (and, in
+    # the root, the commands around it) in a group of its own.
     runner='
         inside=$1 build=$2 seconds=$3 shot=$4 log=$5 mouse_at=$6
         setsid $inside env DISPLAY="$DISPLAY" \
@@ -173,16 +173,17 @@ for lab in "${labs[@]}"; do
         failed=1
         continue
     fi
-    # SFML says when a picture, font or sound does not load (a white box, no text, silence).
-    if grep -E "Failed to (load|open)" "$build/run.log" >&2; then
-        echo "FAIL $name: a file did not load (output: $build/run.log)" >&2
-        failed=1
-        continue
-    fi
+    # First the flood (its lines would bury everything else).
     lines=$(wc -l <"$build/run.log")
     if [[ $lines -gt $most_output_lines ]]; then
         sort "$build/run.log" | uniq -c | sort -rn | head -n 3 >&2
         echo "FAIL $name: printed $lines lines in $seconds_to_run seconds (output: $build/run.log)" >&2
+        failed=1
+        continue
+    fi
+    # SFML says when a picture, font or sound does not load (a white box, no text, silence).
+    if grep -E "Failed to (load|open)" "$build/run.log" >&2; then
+        echo "FAIL $name: a file did not load (output: $build/run.log)" >&2
         failed=1
         continue
     fi

@@ -17,6 +17,9 @@ public:
     BaseLevel(sf::RenderWindow& window, Input& input);
     BaseLevel(sf::RenderWindow& window, Input& input, GameState& gameState);
     virtual ~BaseLevel() = default;
+    // Not copyable: a copy's m_gameState would still be the original's own game state.
+    BaseLevel(const BaseLevel&) = delete;
+    BaseLevel& operator=(const BaseLevel&) = delete;
 
     virtual void handleInput(float dt) = 0;
     virtual void update(float dt) = 0;
