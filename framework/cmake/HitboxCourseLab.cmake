@@ -322,6 +322,13 @@ if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_GENERATION_OF)
     hitbox_find_course_lab_generation("${HITBOX_PRINT_GENERATION_OF}")
     execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${HITBOX_COURSE_LAB_GENERATION}")
 endif()
+# Script mode, for tests/course/write_framework_hashes.py: the Framework/ files whose lab
+# copy is always used, one a line.
+#   cmake -DHITBOX_PRINT_ALWAYS_OWN=ON -P HitboxCourseLab.cmake
+if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_ALWAYS_OWN)
+    string(REPLACE ";" "\n" lines "${HITBOX_COURSE_LAB_ALWAYS_OWN}")
+    execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${lines}")
+endif()
 # Script mode, for the tests: the lines configure prints about a folder's edited Framework/.
 #   cmake -DHITBOX_REPORT_EDITED_FRAMEWORK_OF=<folder> -P HitboxCourseLab.cmake
 if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_REPORT_EDITED_FRAMEWORK_OF)

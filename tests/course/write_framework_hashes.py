@@ -4,8 +4,9 @@ course's own Framework/ files that the lab folders in tests/course/ carry, per g
 
 The course-lab build (framework/cmake/HitboxCourseLabFramework.cmake) compares a lab's
 Framework/ files against this table and names, in one line, each one a student edited.
-Left out: GameState.h and GameState.cpp (students are invited to edit them, and the lab's
-copy is always used), and fixture files marked "Student edit" (the edits being tested).
+Left out: the files whose lab copy the build always uses (GameState.h and GameState.cpp,
+which students are invited to edit; the build says which), and fixture files marked
+"Student edit" (the edits being tested).
 
     tests/course/write_framework_hashes.py          rewrite the table
     tests/course/write_framework_hashes.py --check  exit 1 if the table is out of date
@@ -19,20 +20,23 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 FIXTURES = ROOT / "tests" / "course"
 TABLE = ROOT / "framework" / "compat" / "course-framework-hashes.json"
-ALWAYS_THE_LABS_OWN = {"GameState.h", "GameState.cpp"}
+MODULE = ROOT / "framework" / "cmake" / "HitboxCourseLab.cmake"
 EDIT_MARKER = b"Student edit"
 
 
-def generation_of(lab: pathlib.Path) -> str:
-    """The generation as the build decides it (HitboxCourseLab.cmake), one home for the rule."""
-    result = subprocess.run(
-        ["cmake", f"-DHITBOX_PRINT_GENERATION_OF={lab}", "-P",
-         str(ROOT / "framework" / "cmake" / "HitboxCourseLab.cmake")],
-        check=True, capture_output=True, text=True)
+def ask_the_build(definition: str) -> str:
+    """What HitboxCourseLab.cmake prints in script mode: the build's rules have one home."""
+    result = subprocess.run(["cmake", f"-D{definition}", "-P", str(MODULE)],
+                            check=True, capture_output=True, text=True)
     return result.stdout.strip()
 
 
+def generation_of(lab: pathlib.Path) -> str:
+    return ask_the_build(f"HITBOX_PRINT_GENERATION_OF={lab}")
+
+
 def build_table() -> dict:
+    always_the_labs_own = set(ask_the_build("HITBOX_PRINT_ALWAYS_OWN=ON").splitlines())
     generations: dict = {}
     for lab in sorted(p for p in FIXTURES.iterdir() if (p / "Main.cpp").is_file()):
         framework = lab / "Framework"
@@ -41,7 +45,7 @@ def build_table() -> dict:
         files = generations.setdefault(generation_of(lab), {})
         for path in sorted(framework.iterdir()):
             data = path.read_bytes()
-            if path.name in ALWAYS_THE_LABS_OWN or EDIT_MARKER in data:
+            if f"Framework/{path.name}" in always_the_labs_own or EDIT_MARKER in data:
                 continue
             hashes = files.setdefault(f"Framework/{path.name}", [])
             digest = hashlib.sha256(data).hexdigest()
