@@ -9,9 +9,12 @@
 # Each folder is built as `cmake -DHITBOX_COURSE_LAB_DIR=<folder>` (see README.md), then run
 # for a few seconds under Xvfb and photographed. A lab passes when it builds, is still
 # running when it is closed, every picture, font and sound it asked for loaded, and the
-# picture is not blank (more than the screen's black and one clear colour). 2019-24 labs need SFML 2 and 2025-26 labs SFML 3: a lab whose SFML is
-# not installed here is built and run in the Debian unstable root (scripts/sid-root.sh,
-# SFML 3), shown on this machine's Xvfb; such a folder must be inside this checkout.
+# picture is not blank (more than the screen's black and one clear colour), and its output
+# is not flooded (no sound device must cost one line, not thousands). A folder may hold
+# check-course-lab.txt, saying what else it must do (see "Expectations" below).
+# 2019-24 labs need SFML 2 and 2025-26 labs SFML 3: a lab whose SFML is not installed here
+# is built and run in the Debian unstable root (scripts/sid-root.sh, SFML 3), shown on this
+# machine's Xvfb; such a folder must be inside this checkout.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,7 +23,7 @@ labs=()
 while [[ $# -gt 0 ]]; do
     case "$1" in
     --screenshots) screenshots="$(mkdir -p "$2" && cd "$2" && pwd)"; shift 2 ;;
-    -h | --help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,17p' "$0"; exit 0 ;;
     *) labs+=("$1"); shift ;;
     esac
 done
@@ -31,14 +34,32 @@ fi
 if ! command -v ffmpeg >/dev/null && command -v apt-get >/dev/null && [[ $(id -u) -eq 0 ]]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends ffmpeg >/dev/null
 fi
-for tool in xvfb-run ffmpeg python3; do
+# xdotool holds the mouse down for the folders that ask for it.
+if ! command -v xdotool >/dev/null && command -v apt-get >/dev/null && [[ $(id -u) -eq 0 ]]; then
+    DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends xdotool >/dev/null
+fi
+for tool in xvfb-run ffmpeg python3 xdotool; do
     command -v "$tool" >/dev/null || { echo "check-course-labs: needs $tool (./scripts/install-deps.sh; apt-get install ffmpeg)" >&2; exit 2; }
 done
 
 sfml_major_here=$(pkg-config --modversion sfml-graphics 2>/dev/null || echo 0)
 sfml_major_here=${sfml_major_here%%.*}
 seconds_to_run=4
+# A flood, not a chatty lab: a lab printing a line every frame writes about 240 lines in four
+# seconds; OpenAL Soft with no sound device wrote 2.6 million (week10_sound_effects, unsilenced).
+most_output_lines=1000
 failed=0
+
+# Expectations: a folder's check-course-lab.txt, one per line (# starts a comment):
+#   cmake: -DNAME=VALUE          an option for its configure step
+#   configure says: TEXT         a line the configure step must print
+#   build fails                  it must not build (the configure lines still count)
+#   hold the mouse at: X Y       hold the left button down there from the second second
+#   run says: TEXT               a line the program must print
+expectation() { # expectation FOLDER KEY -> every value given for KEY, one a line
+    [[ -f $1/check-course-lab.txt ]] || return 0
+    sed -n "s/^$2: *//p" "$1/check-course-lab.txt"
+}
 
 for lab in "${labs[@]}"; do
     name="$(basename "$lab")"
@@ -75,46 +96,102 @@ for lab in "${labs[@]}"; do
         fi
     fi
 
+    mapfile -t cmake_options < <(expectation "$lab" cmake)
+    mapfile -t configure_says < <(expectation "$lab" "configure says")
+    mapfile -t run_says < <(expectation "$lab" "run says")
+    mouse_at=$(expectation "$lab" "hold the mouse at")
+    build_fails=$(grep -sx "build fails" "$lab/check-course-lab.txt" || true)
+
     echo "== $name ($generation-generation course framework, SFML $sfml_major): build"
     # One build folder per SFML major: the framework is compiled once. The converted copies
     # of the previous lab's files and its run folder are removed so nothing is picked up by
     # mistake.
     rm -rf "$build/course_lab_sources" "$build/course_lab_run"
     mkdir -p "$build"
-    if ! "${inside[@]}" cmake -S . -B "$build" -DHITBOX_COURSE_LAB_DIR="$lab_path" \
-        -DHITBOX_BUILD_TESTS=OFF -DHITBOX_BUILD_BENCHMARKS=OFF \
-        -DCMAKE_CXX_COMPILER_LAUNCHER="$launcher" >"$build/configure.log" 2>&1 ||
-        ! "${inside[@]}" cmake --build "$build" --target course_lab -j 2; then
-        echo "FAIL $name: does not build (configure log: $build/configure.log)" >&2
+    # The lab's own Framework/ files to build are named afresh for every folder.
+    configured=0
+    "${inside[@]}" cmake -S . -B "$build" -DHITBOX_COURSE_LAB_DIR="$lab_path" \
+        -DHITBOX_BUILD_TESTS=OFF -DHITBOX_BUILD_BENCHMARKS=OFF -DHITBOX_COURSE_LAB_OWN_FRAMEWORK= \
+        -DCMAKE_CXX_COMPILER_LAUNCHER="$launcher" "${cmake_options[@]}" >"$build/configure.log" 2>&1 ||
+        configured=$?
+    missing=0
+    for line in "${configure_says[@]}"; do
+        grep -F -- "$line" "$build/configure.log" || { echo "FAIL $name: configure did not say \"$line\" ($build/configure.log)" >&2; missing=1; }
+    done
+    if [[ $missing != 0 ]]; then
         failed=1
         continue
     fi
-    grep -m1 "Course lab:" "$build/configure.log" || true
+    built=0
+    if [[ $configured == 0 ]]; then
+        "${inside[@]}" cmake --build "$build" --target course_lab -j 2 >"$build/build.log" 2>&1 || built=$?
+    fi
+    if [[ -n $build_fails ]]; then
+        if [[ $configured == 0 && $built == 0 ]]; then
+            echo "FAIL $name: built, but it should not (the project leaves out a file it needs)" >&2
+            failed=1
+        else
+            echo "ok   $name (does not build, as in Visual Studio, and configure said so)"
+        fi
+        continue
+    fi
+    if [[ $configured != 0 || $built != 0 ]]; then
+        tail -n 30 "$build/build.log" >&2 || true
+        echo "FAIL $name: does not build (logs: $build/configure.log, $build/build.log)" >&2
+        failed=1
+        continue
+    fi
+    grep -m1 "Course lab: .*course framework" "$build/configure.log" || true
 
     echo "== $name: run for $seconds_to_run seconds"
     shot="${screenshots:-$PWD/$build}/$name.png"
     rm -f "$shot"
     # Start the lab, let it run, photograph the screen, then close it. Exit code 0 means it
     # was still running when closed; anything else is a crash or an early exit. The X server
-    # accepts any local client (-ac), so a program in the Debian root can use it too; setsid
-    # puts the program (and, in the root, the commands around it) in a group of its own.
+    # accepts any local client (-ac), so a program in the Debian root can use it too, and
+    # does not reset when its last client leaves (-noreset: a lab that asks the desktop's
+    # size before opening its window connects twice, and a resetting server refuses the
+    # second connection, which a real desktop never does). setsid puts the program (and, in
+    # the root, the commands around it) in a group of its own.
     runner='
-        inside=$1 build=$2 seconds=$3 shot=$4 log=$5
-        setsid $inside env DISPLAY="$DISPLAY" ALSOFT_DRIVERS=null \
+        inside=$1 build=$2 seconds=$3 shot=$4 log=$5 mouse_at=$6
+        setsid $inside env DISPLAY="$DISPLAY" \
             sh -c "cd \"$build/course_lab_run\" && exec ../course_lab" >"$log" 2>&1 & lab_pid=$!
-        sleep "$seconds"
+        if [ -n "$mouse_at" ]; then
+            sleep 2
+            xdotool mousemove $mouse_at mousedown 1
+            sleep $((seconds - 2))
+        else
+            sleep "$seconds"
+        fi
         kill -0 "$lab_pid" 2>/dev/null || { wait "$lab_pid"; echo "exited early with code $? (output: $log)" >&2; exit 1; }
         ffmpeg -loglevel error -f x11grab -draw_mouse 0 -video_size 1920x1920 -i "$DISPLAY" -frames:v 1 "$shot"
         kill -- "-$lab_pid"; wait "$lab_pid" 2>/dev/null; exit 0'
-    if ! xvfb-run -a -s "-screen 0 1920x1920x24 -ac" \
-        sh -c "$runner" runner "${inside[*]}" "$build" "$seconds_to_run" "$shot" "$build/run.log"; then
+    if ! xvfb-run -a -s "-screen 0 1920x1920x24 -ac -noreset" \
+        sh -c "$runner" runner "${inside[*]}" "$build" "$seconds_to_run" "$shot" "$build/run.log" "$mouse_at"; then
         echo "FAIL $name: did not keep running" >&2
+        failed=1
+        continue
+    fi
+    # First the flood (its lines would bury everything else).
+    lines=$(wc -l <"$build/run.log")
+    if [[ $lines -gt $most_output_lines ]]; then
+        sort "$build/run.log" | uniq -c | sort -rn | head -n 3 >&2
+        echo "FAIL $name: printed $lines lines in $seconds_to_run seconds (output: $build/run.log)" >&2
         failed=1
         continue
     fi
     # SFML says when a picture, font or sound does not load (a white box, no text, silence).
     if grep -E "Failed to (load|open)" "$build/run.log" >&2; then
         echo "FAIL $name: a file did not load (output: $build/run.log)" >&2
+        failed=1
+        continue
+    fi
+    missing=0
+    for line in "${run_says[@]}"; do
+        grep -qF -- "$line" "$build/run.log" || { echo "FAIL $name: did not print \"$line\" (output: $build/run.log)" >&2; missing=1; }
+    done
+    if [[ $missing != 0 ]]; then
         failed=1
         continue
     fi

@@ -6,9 +6,9 @@
 #   - Include lines written with Windows backslashes (#include "Framework\GameObject.h")
 #     get forward slashes, which every compiler accepts.
 #   - Windows finds files whatever their letter case: an include that names no file as
-#     written (#include "player.h" for Player.h, "Vector" for Vector.h) is rewritten to the
-#     file it names when letter case is ignored and, failing that, with ".h" added. It is
-#     looked for beside the including file, in the lab folder and in SEARCH_DIRS.
+#     written is rewritten to the file it names when letter case is ignored: the lab's own
+#     file first ("player.h" is Player.h), else the standard header of that name ("Vector"
+#     and <String> are <vector> and <string>), else Hitbox's course header in SEARCH_DIRS.
 #   - A #line directive names the original file, so compiler errors point at the file the
 #     student edits, not at this copy.
 # Only these changes are made: line numbers stay the same.
@@ -128,45 +128,98 @@ foreach(include_line IN LISTS include_lines)
     endif()
 endforeach()
 
-# Letter case in quoted includes: an include that names no file as written is matched,
-# ignoring case, against the headers in each folder an include may be found in (the
-# including file's own folder first, as the compiler searches).
+# Headers a lab may spell in any letter case, because Windows finds them whatever the case:
+# the C++17 standard library's (and the C headers it keeps), and <windows.h>, for which
+# Hitbox has a stand-in on Linux and macOS (framework/compat/windows/windows.h).
+set(system_headers
+    algorithm any array atomic bitset cassert cctype cerrno cfloat charconv chrono cinttypes
+    climits clocale cmath codecvt complex condition_variable csetjmp csignal cstdarg cstddef
+    cstdint cstdio cstdlib cstring ctime cwchar cwctype deque exception execution filesystem
+    forward_list fstream functional future initializer_list iomanip ios iosfwd iostream
+    istream iterator limits list locale map memory memory_resource mutex new numeric
+    optional ostream queue random ratio regex scoped_allocator set shared_mutex sstream stack
+    stdexcept streambuf string string_view system_error thread tuple type_traits typeindex
+    typeinfo unordered_map unordered_set utility valarray variant vector
+    assert.h ctype.h float.h limits.h math.h stddef.h stdint.h stdio.h stdlib.h string.h
+    time.h windows.h)
+
+# <String>, <Vector>, <Windows.h>: a system header in other letter case gets its own.
+string(REGEX MATCHALL "#[ \t]*include[ \t]*<[^<>\r\n]*>" angle_includes "${content}")
+list(REMOVE_DUPLICATES angle_includes)
+foreach(include_line IN LISTS angle_includes)
+    string(REGEX REPLACE "^.*<(.*)>$" "\\1" named "${include_line}")
+    string(TOLOWER "${named}" lower_named)
+    if(NOT named STREQUAL lower_named AND lower_named IN_LIST system_headers)
+        string(REPLACE "<${named}>" "<${lower_named}>" fixed_line "${include_line}")
+        string(REPLACE "${include_line}" "${fixed_line}" content "${content}")
+    endif()
+endforeach()
+
+# Finds, ignoring letter case, the header under one of `dirs` that `wanted` (lower case)
+# names, with `suffix` added to it; sets `out_var` to its path as spelled, or "". In the
+# lab's own folders, its Framework/ and SFML/ copies are not looked at: Hitbox replaces them
+# (its own GameState.h has the same spelling as Hitbox's).
+function(hitbox_find_header_ignoring_case out_var wanted suffix dirs)
+    foreach(dir IN LISTS dirs)
+        file(GLOB_RECURSE candidates RELATIVE "${dir}" "${dir}/*.h" "${dir}/*.hpp")
+        foreach(candidate IN LISTS candidates)
+            string(TOLOWER "${candidate}" lower_candidate)
+            if(dir IN_LIST own_dirs AND lower_candidate MATCHES "^(framework|sfml)/")
+                continue()
+            endif()
+            if(lower_candidate STREQUAL "${wanted}${suffix}")
+                set(${out_var} "${candidate}" PARENT_SCOPE)
+                return()
+            endif()
+        endforeach()
+    endforeach()
+    set(${out_var} "" PARENT_SCOPE)
+endfunction()
+
+# Letter case in quoted includes. An include that names no file as written is resolved the
+# way Visual Studio's search on a case-blind file system would find it: first the lab's own
+# files (beside the including file, then in the lab folder: "player.h" is Player.h), then
+# a standard header of that name ("Vector" is <vector>, not the course's Vector.h), then
+# Hitbox's course headers in SEARCH_DIRS ("Framework/tilemap.h"). Last, for old labs that
+# wrote "Framework/GameObject" without its extension, the same with ".h" added.
 get_filename_component(input_dir "${INPUT}" DIRECTORY)
-set(search_dirs "${input_dir}")
+set(own_dirs "${input_dir}")
 if(LAB_DIR)
-    list(APPEND search_dirs "${LAB_DIR}")
+    list(APPEND own_dirs "${LAB_DIR}")
 endif()
-list(APPEND search_dirs ${SEARCH_DIRS})
+set(search_dirs ${own_dirs} ${SEARCH_DIRS})
 string(REGEX MATCHALL "#[ \t]*include[ \t]*\"[^\"\r\n]*\"" quoted_includes "${content}")
 list(REMOVE_DUPLICATES quoted_includes)
 foreach(include_line IN LISTS quoted_includes)
     string(REGEX REPLACE "^.*\"(.*)\"$" "\\1" named "${include_line}")
-    set(found "")
+    set(as_written FALSE)
     foreach(dir IN LISTS search_dirs)
-        if(EXISTS "${dir}/${named}")
-            set(found "${named}") # as written: nothing to do
+        if(EXISTS "${dir}/${named}" AND NOT IS_DIRECTORY "${dir}/${named}")
+            set(as_written TRUE)
             break()
         endif()
     endforeach()
-    if(found)
+    if(as_written)
         continue()
     endif()
     string(TOLOWER "${named}" wanted)
-    foreach(dir IN LISTS search_dirs)
-        file(GLOB_RECURSE candidates RELATIVE "${dir}" "${dir}/*.h" "${dir}/*.hpp")
-        foreach(candidate IN LISTS candidates)
-            string(TOLOWER "${candidate}" lower_candidate)
-            if(lower_candidate STREQUAL wanted OR lower_candidate STREQUAL "${wanted}.h")
-                set(found "${candidate}")
-                break()
-            endif()
-        endforeach()
-        if(found)
-            break()
-        endif()
-    endforeach()
+    set(replacement "")
+    hitbox_find_header_ignoring_case(found "${wanted}" "" "${own_dirs}")
     if(found)
-        string(REPLACE "\"${named}\"" "\"${found}\"" fixed_line "${include_line}")
+        set(replacement "\"${found}\"")
+    elseif(wanted IN_LIST system_headers)
+        set(replacement "<${wanted}>")
+    else()
+        hitbox_find_header_ignoring_case(found "${wanted}" "" "${SEARCH_DIRS}")
+        if(NOT found)
+            hitbox_find_header_ignoring_case(found "${wanted}" ".h" "${search_dirs}")
+        endif()
+        if(found)
+            set(replacement "\"${found}\"")
+        endif()
+    endif()
+    if(replacement)
+        string(REPLACE "\"${named}\"" "${replacement}" fixed_line "${include_line}")
         string(REPLACE "${include_line}" "${fixed_line}" content "${content}")
     endif()
 endforeach()

@@ -15,11 +15,13 @@
 #
 # What it does about the folder as Visual Studio saved it:
 #   - its own Framework/ copy (and the Windows-only SFML/ copy) is ignored: Hitbox's
-#     headers take its place. One exception: the course invites students to edit
-#     Framework/GameState.h (its enum of states), so the lab's copy of that header (and of
-#     GameState.cpp) is used when there is one;
+#     headers take its place, except its GameState and any edited file the user chooses
+#     to build, and a file a student edited is named in one line
+#     (HitboxCourseLabFramework.cmake);
 #   - the .cpp files its Visual Studio project compiles (the .vcxproj's ClCompile list) are
-#     compiled, not the stray copies beside them; every .cpp when there is no project;
+#     compiled, not the stray copies beside them; every .cpp when there is no project. A
+#     .cpp left out of the list whose header the code includes is named in one line;
+#   - <windows.h> off Windows: a stand-in for the calls labs make, said in one line;
 #   - every source and header is copied into the build tree by
 #     HitboxConvertCourseSource.cmake (UTF-16 and byte-order marks, backslash includes,
 #     includes whose letter case differs from the file's), at build time;
@@ -31,7 +33,11 @@
 #     assets, with extra names for files the code spells with other letter case
 #     (HitboxCourseLabAssets.cmake), so gfx/, font/ and sfx/ paths load as on Windows.
 
+if(CMAKE_SCRIPT_MODE_FILE)
+    cmake_minimum_required(VERSION 3.16) # the policies of a project, for the script modes below
+endif()
 set(HITBOX_COURSE_LAB_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}")
+include("${CMAKE_CURRENT_LIST_DIR}/HitboxCourseLabFramework.cmake")
 
 # Sets HITBOX_COURSE_LAB_GENERATION (2019 or 2025) and HITBOX_COURSE_LAB_SFML_MAJOR (2 or 3)
 # from the folder's own Framework/ headers or, without them, from its code.
@@ -82,6 +88,35 @@ function(hitbox_find_ignoring_case out_var wanted files)
     endforeach()
 endfunction()
 
+# One line for each .cpp in the folder that the project leaves out while the code includes
+# its header (Ball.cpp beside an included Ball.h): the link will miss what it defines, as it
+# would in Visual Studio. The project's list is kept; only the student can tell which is right.
+function(hitbox_report_unlisted_sources lab_folder project_name lab_files compiled_files)
+    set(included "")
+    foreach(lab_file IN LISTS lab_files)
+        file(STRINGS "${lab_folder}/${lab_file}" lines REGEX "#[ \t]*include[ \t]*\"")
+        foreach(line IN LISTS lines)
+            string(REGEX REPLACE "^.*include[ \t]*\"([^\"]*)\".*$" "\\1" named "${line}")
+            string(REPLACE "\\" "/" named "${named}")
+            get_filename_component(named "${named}" NAME)
+            string(TOLOWER "${named}" named)
+            list(APPEND included "${named}")
+        endforeach()
+    endforeach()
+    foreach(lab_file IN LISTS lab_files)
+        if(NOT lab_file MATCHES "\\.cpp$" OR lab_file IN_LIST compiled_files)
+            continue()
+        endif()
+        get_filename_component(stem "${lab_file}" NAME_WE)
+        string(TOLOWER "${stem}.h" header)
+        if(header IN_LIST included)
+            message(STATUS "Course lab: ${lab_file} is in the folder but not in ${project_name}, "
+                           "whose code includes ${stem}.h; if the link fails, add ${lab_file} "
+                           "to the project (Add > Existing Item)")
+        endif()
+    endforeach()
+endfunction()
+
 function(hitbox_add_course_lab lab_folder)
     get_filename_component(lab_folder "${lab_folder}" ABSOLUTE BASE_DIR "${CMAKE_SOURCE_DIR}")
     if(NOT IS_DIRECTORY "${lab_folder}")
@@ -113,12 +148,10 @@ function(hitbox_add_course_lab lab_folder)
     list(FILTER lab_files EXCLUDE REGEX "^(SFML|x64|x86|Debug|Release|\\.vs)/")
     list(FILTER lab_files EXCLUDE REGEX "^Framework/(.*/)?[^/]*$")
     list(FILTER lab_files EXCLUDE REGEX "(^|/)(CMakeFiles|course_lab_[a-z]+|_deps)/")
-    # ...but the lab's own edited GameState (see above) stays.
-    foreach(own_file Framework/GameState.h Framework/GameState.cpp)
-        if(EXISTS "${lab_folder}/${own_file}")
-            list(APPEND lab_files "${own_file}")
-        endif()
-    endforeach()
+    # ...but the lab's own GameState and any edited Framework/ file it chose to build stay
+    # (HitboxCourseLabFramework.cmake): headers in the overlay folder, sources compiled here.
+    hitbox_use_course_lab_framework("${lab_folder}" ${generation} "${compat_folder}")
+    list(REMOVE_ITEM lab_files ${COURSE_LAB_OWN_HEADERS})
 
     # What to compile: the Visual Studio project's ClCompile list when there is a project.
     file(GLOB projects "${lab_folder}/*.vcxproj")
@@ -139,6 +172,7 @@ function(hitbox_add_course_lab lab_folder)
         endforeach()
         get_filename_component(project_name "${project}" NAME)
         set(compiled_from "the ClCompile list of ${project_name}")
+        hitbox_report_unlisted_sources("${lab_folder}" "${project_name}" "${lab_files}" "${compiled_files}")
     else()
         set(compiled_files ${lab_files})
         list(FILTER compiled_files INCLUDE REGEX "\\.cpp$")
@@ -176,7 +210,24 @@ function(hitbox_add_course_lab lab_folder)
         endif()
     endforeach()
 
-    add_executable(course_lab ${copied_files})
+    list(APPEND copied_sources ${COURSE_LAB_OWN_SOURCES})
+    add_executable(course_lab ${copied_files} ${COURSE_LAB_OWN_SOURCES})
+    # Win32 calls, off Windows: Hitbox's stand-in (framework/compat/windows/windows.h).
+    if(NOT WIN32)
+        foreach(original IN LISTS original_files)
+            # file(STRINGS) follows a byte-order mark, so a UTF-16 Main.cpp is read too.
+            file(STRINGS "${original}" windows_include REGEX "#[ \t]*include[ \t]*[<\"][Ww][Ii][Nn][Dd][Oo][Ww][Ss]\\.[Hh][>\"]")
+            if(windows_include)
+                file(RELATIVE_PATH shown "${lab_folder}" "${original}")
+                message(STATUS "Course lab: ${shown} includes <windows.h>; on ${CMAKE_SYSTEM_NAME} "
+                               "Hitbox's stand-in gives GetSystemMetrics(SM_CXSCREEN/SM_CYSCREEN) "
+                               "from the desktop size and Sleep() (framework/compat/windows/)")
+                target_include_directories(course_lab SYSTEM PRIVATE
+                    "${PROJECT_SOURCE_DIR}/framework/compat/windows")
+                break()
+            endif()
+        endforeach()
+    endif()
     # The lab's own files: Visual Studio's implicit standard headers, and -fpermissive for
     # what it accepts and g++ does not. Hitbox's code is never compiled this way.
     set(implicit_includes "${PROJECT_SOURCE_DIR}/framework/compat/CourseLabIncludes.h")
@@ -189,36 +240,59 @@ function(hitbox_add_course_lab lab_folder)
     # No hitbox_warnings(): lab code is built with the compiler's default warnings and
     # never with -Werror, whatever HITBOX_WARNINGS_AS_ERRORS says.
 
+    # The course's classes in Hitbox, compiled against the lab's own GameState.h (and any
+    # edited header it chose to build) in the overlay folder; a class the lab brings its own
+    # .cpp for is not compiled from Hitbox's.
     if(generation EQUAL 2025)
         file(GLOB compat_sources CONFIGURE_DEPENDS "${compat_folder}/Framework/*.cpp")
+        set(library hitbox_course2025)
+    else()
+        set(compat_sources "")
+        foreach(class_name AudioManager MusicObject SoundObject TileMap GameState)
+            list(APPEND compat_sources "${compat_folder}/Framework/${class_name}.cpp")
+        endforeach()
+        set(library hitbox_course_compat)
+    endif()
+    foreach(class_name IN LISTS COURSE_LAB_OWN_CLASSES)
+        list(REMOVE_ITEM compat_sources "${compat_folder}/Framework/${class_name}.cpp")
+    endforeach()
+    if(generation EQUAL 2025)
         # Hitbox's Animation is the course's Animation; nothing else of the object layer is:
         # the 2019-24 classes of the same names (GameObject, Input, BaseLevel) must not be
         # linked into the same program, so the course's classes sit on Hitbox's maths only.
-        add_library(hitbox_course2025 STATIC ${compat_sources}
-            "${PROJECT_SOURCE_DIR}/framework/hitbox/objects/Animation.cpp")
-        target_include_directories(hitbox_course2025 PUBLIC "${compat_folder}")
-        target_link_libraries(hitbox_course2025 PUBLIC hitbox_sfml hitbox_geometry)
-        hitbox_warnings(hitbox_course2025)
-        target_link_libraries(course_lab PRIVATE hitbox_course2025)
-    else()
-        add_library(hitbox_course_compat STATIC
-            "${compat_folder}/Framework/AudioManager.cpp"
-            "${compat_folder}/Framework/MusicObject.cpp"
-            "${compat_folder}/Framework/SoundObject.cpp"
-            "${compat_folder}/Framework/TileMap.cpp")
-        target_include_directories(hitbox_course_compat PUBLIC "${compat_folder}")
-        target_link_libraries(hitbox_course_compat PUBLIC hitbox sfml-audio)
-        hitbox_warnings(hitbox_course_compat)
-        target_link_libraries(course_lab PRIVATE hitbox_course_compat)
-        # GameState is compiled with the lab's header, which may have more states.
-        if(NOT "Framework/GameState.cpp" IN_LIST compiled_files)
-            target_sources(course_lab PRIVATE "${compat_folder}/Framework/GameState.cpp")
+        if(NOT Animation IN_LIST COURSE_LAB_OWN_CLASSES)
+            list(APPEND compat_sources "${PROJECT_SOURCE_DIR}/framework/hitbox/objects/Animation.cpp")
         endif()
+        add_library(${library} STATIC ${compat_sources})
+        target_link_libraries(${library} PUBLIC hitbox_sfml hitbox_geometry)
+    else()
+        add_library(${library} STATIC ${compat_sources})
+        target_link_libraries(${library} PUBLIC hitbox)
+        # Before main(): with no sound device, OpenAL Soft's silent driver and one line
+        # instead of an error for every sound (SFML 2 only: SFML 3 says it once itself).
+        # An object library: its objects are always linked, so its initializer runs.
+        add_library(hitbox_course_silent_audio OBJECT
+            "${PROJECT_SOURCE_DIR}/framework/compat/SilentAudio.cpp")
+        hitbox_warnings(hitbox_course_silent_audio)
+        target_link_libraries(course_lab PRIVATE hitbox_course_silent_audio)
     endif()
-    # The lab's copy first: only its Framework/GameState.h can be there (see above), and it
-    # must win over Hitbox's. Then Hitbox's "Framework/X.h" headers. The original folder is
+    target_include_directories(${library} BEFORE PUBLIC "${COURSE_LAB_OVERLAY}" "${compat_folder}")
+    hitbox_warnings(${library})
+    if(NOT MSVC)
+        # The lab's own headers in the overlay may carry MSVC's #pragma warning lines.
+        target_compile_options(${library} PRIVATE -Wno-unknown-pragmas)
+    endif()
+    target_link_libraries(course_lab PRIVATE ${library})
+    # The lab's converted copies first (its own includes: "Level.h"), then the overlay (its
+    # GameState.h), then Hitbox's "Framework/X.h" headers. The original folder is
     # deliberately not on the path.
-    target_include_directories(course_lab BEFORE PRIVATE "${copy_folder}" "${compat_folder}")
+    target_include_directories(course_lab BEFORE PRIVATE "${copy_folder}" "${COURSE_LAB_OVERLAY}" "${compat_folder}")
+    # The course's own files include their neighbours without the folder ("GameObject.h"
+    # in Framework/TileMap.h): when the lab builds some of them, Hitbox's neighbours are
+    # found that way too, last.
+    if(HITBOX_COURSE_LAB_OWN_FRAMEWORK)
+        target_include_directories(${library} PUBLIC "${compat_folder}/Framework")
+    endif()
 
     # The folder the program runs from: the lab's assets, letter case forgiven.
     set(run_folder "${CMAKE_CURRENT_BINARY_DIR}/course_lab_run")
@@ -247,4 +321,18 @@ endfunction()
 if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_GENERATION_OF)
     hitbox_find_course_lab_generation("${HITBOX_PRINT_GENERATION_OF}")
     execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${HITBOX_COURSE_LAB_GENERATION}")
+endif()
+# Script mode, for tests/course/write_framework_hashes.py: the Framework/ files whose lab
+# copy is always used, one a line.
+#   cmake -DHITBOX_PRINT_ALWAYS_OWN=ON -P HitboxCourseLab.cmake
+if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_ALWAYS_OWN)
+    string(REPLACE ";" "\n" lines "${HITBOX_COURSE_LAB_ALWAYS_OWN}")
+    execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${lines}")
+endif()
+# Script mode, for the tests: the lines configure prints about a folder's edited Framework/.
+#   cmake -DHITBOX_REPORT_EDITED_FRAMEWORK_OF=<folder> -P HitboxCourseLab.cmake
+if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_REPORT_EDITED_FRAMEWORK_OF)
+    get_filename_component(lab_folder "${HITBOX_REPORT_EDITED_FRAMEWORK_OF}" ABSOLUTE)
+    hitbox_find_course_lab_generation("${lab_folder}")
+    hitbox_report_edited_framework_files("${lab_folder}" ${HITBOX_COURSE_LAB_GENERATION})
 endif()

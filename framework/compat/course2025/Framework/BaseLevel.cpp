@@ -1,6 +1,14 @@
 #include "Framework/BaseLevel.h"
 
-BaseLevel::BaseLevel(sf::RenderWindow& window, Input& input) : m_window(window), m_input(input) {}
+BaseLevel::BaseLevel(sf::RenderWindow& window, Input& input)
+    : m_window(window), m_input(input), m_gameState(m_ownGameState)
+{
+}
+
+BaseLevel::BaseLevel(sf::RenderWindow& window, Input& input, GameState& gameState)
+    : m_window(window), m_input(input), m_gameState(gameState)
+{
+}
 
 void BaseLevel::beginDraw()
 {

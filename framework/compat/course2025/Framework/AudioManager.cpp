@@ -1,0 +1,67 @@
+#include "Framework/AudioManager.h"
+
+AudioManager::~AudioManager()
+{
+    stopAllSounds();
+    stopAllMusic();
+}
+
+void AudioManager::addSound(const std::string& filename, const std::string& name)
+{
+    NamedSound& added = m_sounds.emplace_back();
+    added.name = name;
+    if (added.buffer.loadFromFile(filename))
+        added.sound.emplace(added.buffer);
+}
+
+void AudioManager::playSoundbyName(const std::string& name)
+{
+    if (sf::Sound* sound = getSound(name))
+        sound->play();
+}
+
+void AudioManager::stopAllSounds()
+{
+    for (NamedSound& named : m_sounds)
+        if (named.sound)
+            named.sound->stop();
+}
+
+sf::Sound* AudioManager::getSound(const std::string& name)
+{
+    for (NamedSound& named : m_sounds)
+        if (named.name == name && named.sound)
+            return &*named.sound;
+    return nullptr;
+}
+
+void AudioManager::addMusic(const std::string& filename, const std::string& name)
+{
+    m_musics.push_back({name, filename});
+}
+
+void AudioManager::playMusicbyName(const std::string& name)
+{
+    for (const NamedMusic& named : m_musics)
+    {
+        if (named.name != name)
+            continue;
+        m_music.stop();
+        if (m_music.openFromFile(named.filename))
+        {
+            m_music.setLooping(true);
+            m_music.play();
+        }
+        return;
+    }
+}
+
+void AudioManager::stopAllMusic()
+{
+    m_music.stop();
+}
+
+sf::Music& AudioManager::getMusic()
+{
+    return m_music;
+}

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <SFML/Graphics.hpp>
+#include "Framework/Input.h"
+
+class Level {
+public:
+	Level(sf::RenderWindow* hwnd, Input* in);
+	~Level();
+
+	void handleInput(float dt);
+	void update(float dt);
+	void render();
+
+private:
+	sf::RenderWindow* window;
+	Input* input;
+	sf::RectangleShape rect;
+};

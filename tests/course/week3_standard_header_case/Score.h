@@ -1,0 +1,7 @@
+#pragma once
+
+// Counts the dots the student has drawn.
+struct Score
+{
+	int dots = 0;
+};
