@@ -12,7 +12,7 @@ packages=(
     g++-mingw-w64-x86-64-posix mingw-w64-x86-64-dev wine wine64 ninja-build
     libc++-dev libc++abi-dev googletest                   # Windows, multi-config, libc++ checks
     bubblewrap python3-pil                                # class grading's sandbox; picture checks
-    clang-14 libclang-rt-14-dev ffmpeg                    # 11b: fuzzers; 8 and 10: videos
+    clang-14 libclang-rt-14-dev ffmpeg xdotool            # 11b: fuzzers; 8 and 10: videos, a held mouse
 )
 # These the slide scripts install with apt's recommended packages: prefetch them the same way.
 with_recommends=(nodejs npm emscripten chromium)
