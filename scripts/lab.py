@@ -89,6 +89,20 @@ def command_gradescope(options):
     return classgrade.run_gradescope(options)
 
 
+def command_tricks(options):
+    from labtool import tricks
+    if options.action == "make":
+        tricks.make_class(options.path)
+        return 0
+    problems, table = tricks.check(options.path)
+    print(f"{'SUBMISSION':<24} {'MARKS':<10} {'MAY EARN':<10} WHY")
+    for student, got, earns, why in table:
+        print(f"{student:<24} {','.join(map(str, got)) or '-':<10} {','.join(map(str, earns)) or '-':<10} {why}")
+    for problem in problems:
+        print(f"check-grading: {problem}", file=sys.stderr)
+    return 1 if problems else 0
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="lab.py", description=__doc__.split("\n\n")[0])
     commands = parser.add_subparsers(dest="command", required=True)
@@ -133,6 +147,11 @@ def main(argv=None):
     exercise.add_argument("output")
     exercise.add_argument("--solved", default="", help="tasks to keep solved, e.g. 1,3")
     exercise.set_defaults(run=command_exercise)
+
+    tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
+    tricks.add_argument("action", choices=("make", "check"))
+    tricks.add_argument("path", help="make: the class folder; check: its grades.csv")
+    tricks.set_defaults(run=command_tricks)
 
     options = parser.parse_args(argv)
     try:

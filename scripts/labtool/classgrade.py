@@ -157,6 +157,8 @@ def compile_caged(arguments, lab, lab_copy, output, cwd, log, caged, what, tests
                                 env=dict(os.environ, CCACHE_NOHASHDIR="1"))
     log.append(outcome.output)
     out.unlink(missing_ok=True)
+    if caged and outcome.status > 128:
+        outcome.status = 128 - outcome.status  # the cage reports a signal as 128 + n
     stopped = procs.why_stopped(outcome, limits.COMPILE_SECONDS, limits.COMPILE_FILE_BYTES, what=f"compiling {what}")
     if stopped:
         return stopped.replace("(an endless loop?)", "").strip()

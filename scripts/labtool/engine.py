@@ -69,6 +69,8 @@ def run_test(program, test, work, slot=None, threaded=False):
                                     cwd=report_dir, env=test_environment(), memory=limits.TEST_MEMORY,
                                     file_bytes=limits.OUTPUT_BYTES, cpu_seconds=limits.TEST_SECONDS,
                                     set_limits_here=slot is None and not threaded)
+        if slot is not None and outcome.status > 128:
+            outcome.status = 128 - outcome.status  # the cage reports a signal as 128 + n
         return judge(test, outcome, report)
     finally:
         shutil.rmtree(report_dir, ignore_errors=True)
