@@ -39,7 +39,7 @@ for ((i = 1; i <= count; i++)); do
         cmake "-DINPUT=$source" "-DOUTPUT=$into/$(basename "$source")" "-DSOLVED_TASKS=${solved%,}" \
             -P framework/cmake/HitboxMakeExercise.cmake
         echo "// student $i" >>"$into/$(basename "$source")"
-    done < <(grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' "$folder")
+    done < <(lab_sources "$folder")
 done
 
 echo "bench: load before: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"

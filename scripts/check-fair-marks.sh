@@ -39,7 +39,7 @@ for lab in "${labs[@]}"; do
             mkdir -p "$(dirname "$into/${source#"$folder"/}")"
             cmake "-DINPUT=$source" "-DOUTPUT=$into/${source#"$folder"/}" "-DSOLVED_TASKS=$solved" \
                 -P framework/cmake/HitboxMakeExercise.cmake
-        done < <(grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' "$folder" --include='*.cpp' --include='*.h' --include='*.hpp')
+        done < <(lab_sources "$folder")
     done
     lab_options+=(--lab "$lab")
 done
