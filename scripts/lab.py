@@ -57,6 +57,33 @@ def command_exercise(options):
     return 0
 
 
+def command_same_exercise(options):
+    """Proves HitboxMakeExercise.cmake (the build's generator) writes what markers.py says,
+    for every lab file with a task, with no task solved and with the first one solved."""
+    import subprocess
+    import tempfile
+    from labtool import markers
+    problems = 0
+    generator = lablist.REPO / "framework" / "cmake" / "HitboxMakeExercise.cmake"
+    with tempfile.TemporaryDirectory() as scratch:
+        output = Path(scratch) / "exercise"
+        for lab in lablist.all_labs():
+            for relative in lab.student_files:
+                source = lablist.REPO / lab.folder / relative
+                tasks = lab.tasks()
+                for solved in ((), tuple(tasks[:1])):
+                    output.unlink(missing_ok=True)
+                    subprocess.run(["cmake", f"-DINPUT={source}", f"-DOUTPUT={output}",
+                                    f"-DSOLVED_TASKS={','.join(map(str, solved))}", "-P", str(generator)], check=True)
+                    text = source.read_text(encoding="utf-8")
+                    if output.read_text(encoding="utf-8") != markers.make_exercise(text, set(solved), str(source)):
+                        print(f"same-exercise: {lab.folder}/{relative} (solved {solved or 'none'}): "
+                              "HitboxMakeExercise.cmake and markers.py disagree", file=sys.stderr)
+                        problems += 1
+    print(f"same-exercise: {'FAILED' if problems else 'the CMake generator and markers.py agree on every lab file'}")
+    return 1 if problems else 0
+
+
 def command_mark(options):
     import csv
     try:
@@ -93,6 +120,9 @@ def command_tricks(options):
     from labtool import tricks
     if options.action == "make":
         tricks.make_class(options.path)
+        return 0
+    if options.action == "bench":
+        tricks.make_bench(options.path, options.count, options.hostile)
         return 0
     problems, table = tricks.check(options.path)
     print(f"{'SUBMISSION':<24} {'MARKS':<10} {'MAY EARN':<10} WHY")
@@ -136,7 +166,8 @@ def main(argv=None):
     mark.add_argument("task", type=int)
     mark.set_defaults(run=command_mark)
 
-    for name, function in (("labs", command_labs), ("student-files", command_student_files)):
+    for name, function in (("labs", command_labs), ("student-files", command_student_files),
+                           ("same-exercise", command_same_exercise)):
         commands.add_parser(name).set_defaults(run=function)
     for name, function in (("tasks", command_tasks), ("folder", command_folder)):
         sub = commands.add_parser(name)
@@ -149,8 +180,10 @@ def main(argv=None):
     exercise.set_defaults(run=command_exercise)
 
     tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
-    tricks.add_argument("action", choices=("make", "check"))
-    tricks.add_argument("path", help="make: the class folder; check: its grades.csv")
+    tricks.add_argument("action", choices=("make", "check", "bench"))
+    tricks.add_argument("path", help="make, bench: the class folder to write; check: its grades.csv")
+    tricks.add_argument("--count", type=int, default=30, help="bench: realistic submissions")
+    tricks.add_argument("--hostile", action="store_true", help="bench: add the hostile submissions")
     tricks.set_defaults(run=command_tricks)
 
     options = parser.parse_args(argv)

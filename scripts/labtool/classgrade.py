@@ -154,8 +154,12 @@ def compile_caged(arguments, lab, lab_copy, output, cwd, log, caged, what, tests
     else:
         command = procs.prlimit_prefix(limits.COMPILE_MEMORY, limits.COMPILE_FILE_BYTES, limits.COMPILE_SECONDS) + arguments
     out = output.parent / (output.name + ".log")
+    # Every path in the scratch folder becomes relative to the lab copy, which lies equally
+    # deep in every submission's scratch: ccache then finds what another submission (or an
+    # earlier run) compiled from the same text (an untouched starter file, the same headers).
+    scratch_root = Path(lab_copy).parents[len(Path(lab.folder).parts) + 2]
     outcome = procs.run_limited(command, out, limits.COMPILE_SECONDS, cwd=cwd,
-                                env=dict(os.environ, CCACHE_NOHASHDIR="1"))
+                                env=dict(os.environ, CCACHE_NOHASHDIR="1", CCACHE_BASEDIR=str(scratch_root)))
     log.append(outcome.output)
     out.unlink(missing_ok=True)
     if caged and outcome.status > 128:
@@ -287,7 +291,7 @@ def compile_shared(arguments, output_index, output, lab, lab_copy, directory, lo
         output.parent.mkdir(parents=True, exist_ok=True)
         arguments = list(arguments)
         arguments[output_index + (1 if arguments[0] == "ccache" else 0)] = str(output) + ".part"
-        why = compile_caged(arguments, lab, lab_copy, Path(str(output) + ".part"), directory, log, caged,
+        why = compile_caged(arguments, lab, lab_copy, Path(str(output) + ".part"), lab_copy, log, caged,
                             "the tests with your headers", tests_visible=True)
         if not why:
             os.replace(str(output) + ".part", output)

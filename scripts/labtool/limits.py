@@ -6,7 +6,7 @@ Classroom) use the same ones, so "passed" means the same everywhere.
 
 # One test process: wall-clock and CPU seconds. Every grading test is bounded by step counts
 # and takes well under a second on the solution and on the starter; this is the last resort.
-TEST_SECONDS = 10
+TEST_SECONDS = 5
 # One test process's address space (bytes): a test needs a few MB.
 TEST_MEMORY = 1024 * 1024 * 1024
 # Bytes one test process may print (stdout and stderr together) or write to any one file.
@@ -23,7 +23,7 @@ COMPILE_FILE_BYTES = 256 * 1024 * 1024
 LINK_SECONDS = 60
 # Everything of one submission together (every lab): when it is used up, what is left is
 # reported "not run: the submission used up its N s".
-SUBMISSION_SECONDS = 900
+SUBMISSION_SECONDS = 300
 
 
 def megabytes(count):

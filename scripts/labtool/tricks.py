@@ -145,3 +145,49 @@ def check(gradebook):
         if got != tuple(earns):
             problems.append(f"{student} got marks for tasks {list(got)}, expected {list(earns)}")
     return problems, table
+
+
+# What a class hands in (bench-grade-class.sh): mistakes students really make, and hostile code.
+def in_task_one(code):
+    """Puts code at the start of task 1's block (Ball::update, the wall bounce)."""
+    return {"Ball.cpp": lambda t: t.replace("    const float radius = getRadius();\n",
+                                            code + "\n    const float radius = getRadius();\n", 1)}
+
+
+REALISTIC = [  # (kind, tasks solved, edits), cycled through the class
+    ("solution", ALL, None), ("without-1", (2, 3), None), ("solution", ALL, None), ("without-2", (1, 3), None),
+    ("solution", ALL, None), ("without-3", (1, 2), None), ("starter", (), None),
+    ("not-compiling", ALL, {"Ball.cpp": append("int broken = ;")}),
+    ("solution", ALL, None),
+    ("crashing", ALL, in_task_one("    if (getPosition().x > 0.f) *static_cast<volatile int*>(nullptr) = 1;")),
+    ("hanging", ALL, in_task_one("    for (volatile int spin = 0; spin >= 0; spin = spin % 2) {}")),
+]
+HOSTILE = [
+    ("hostile-hang", ALL, in_task_one("    for (volatile int spin = 0; spin >= 0; spin = spin % 2) {}")),
+    ("hostile-output-flood", ALL, in_task_one('    for (;;) std::puts("flood flood flood flood flood flood");')),
+    ("hostile-compile-bomb", ALL, {"Ball.cpp": append(
+        "constexpr long spin(long n) { long s = 0; for (long i = 0; i < n; ++i) s += i % 7; return s; }\n"
+        + "".join(f"constexpr long bomb{i} = spin(4000000000L + {i});\n" for i in range(100)))}),
+    ("hostile-10gib-file", ALL, in_task_one(
+        '    static std::FILE* big = std::fopen("/tmp/big", "wb"); static char block[1 << 20];\n'
+        "    for (int i = 0; big && i < 10240; ++i) std::fwrite(block, 1, sizeof block, big);")),
+    ("hostile-fork-storm", ALL, in_task_one("    for (int i = 0; i < 100000; ++i) fork();")),
+]
+
+
+def make_bench(into, count, hostile):
+    """count realistic submissions (a comment makes each differ, as real ones do), then the
+    hostile ones when asked; returns the names."""
+    into = Path(into)
+    if into.exists():
+        shutil.rmtree(into)
+    into.mkdir(parents=True)
+    chosen = [(f"student{i + 1:02d}-{REALISTIC[i % len(REALISTIC)][0]}",) + REALISTIC[i % len(REALISTIC)][1:]
+              for i in range(count)] + (list(HOSTILE) if hostile else [])
+    for number, (name, solved, edits) in enumerate(chosen):
+        edits = dict(edits or {})
+        first = edits.get("Ball.cpp", lambda t: t)
+        edits["Ball.cpp"] = lambda t, first=first, number=number: (
+            "#include <cstdio>\n#include <unistd.h>\n" + first(t) + f"\n// student {number}\n")
+        write_lab(into / name, solved, edits)
+    return [c[0] for c in chosen]
