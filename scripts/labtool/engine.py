@@ -69,8 +69,11 @@ def run_test(program, test, work, slot=None, threaded=False):
                                     cwd=report_dir, env=test_environment(), memory=limits.TEST_MEMORY,
                                     file_bytes=limits.OUTPUT_BYTES, cpu_seconds=limits.TEST_SECONDS,
                                     set_limits_here=slot is None and not threaded)
-        if slot is not None and outcome.status > 128:
-            outcome.status = 128 - outcome.status  # the cage reports a signal as 128 + n
+        if slot is not None:
+            if outcome.status > 128:
+                outcome.status = 128 - outcome.status  # the cage reports a signal as 128 + n
+            if not sandbox.wait_until_slot_is_empty(slot):
+                return TestResult(test, False, "a process of the test would not end", seconds=outcome.seconds)
         return judge(test, outcome, report)
     finally:
         shutil.rmtree(report_dir, ignore_errors=True)
@@ -106,7 +109,7 @@ def judge(test, outcome, report):
     if failures:
         result.reason = "failed"
         text = "\n".join(f.get("message", "") for f in failures)
-        result.message = re.sub(r"(\.\./)+tests/labs/", "tests/labs/", text)
+        result.message = re.sub(r"(\.\./)+tests/", "tests/", text)
         return result
     if outcome.status != 0:
         result.reason = f"the test program exited with status {outcome.status} after the test"

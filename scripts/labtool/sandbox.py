@@ -8,7 +8,9 @@ counts only that slot's processes and a fork storm stops at it.
 """
 import os
 import shutil
+import signal
 import subprocess
+import time
 from pathlib import Path
 
 from . import limits
@@ -71,6 +73,39 @@ def test_command(program, arguments, report_dir, slot):
             + prlimit_prefix(limits.TEST_MEMORY, limits.OUTPUT_BYTES, limits.TEST_SECONDS, limits.TEST_PROCESSES)
             + base_command([program], [report_dir], limits.SCRATCH_BYTES)
             + ["--chdir", "/tmp", "--setenv", "HOME", "/tmp", "--", str(program)] + list(arguments))
+
+
+def processes_of_slot(slot):
+    """Process ids still running as the slot's user (read from /proc)."""
+    user, found = str(FIRST_SANDBOX_USER + slot), []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                status = (entry / "status").read_text()
+            except OSError:
+                continue
+            uid_line = next((line for line in status.splitlines() if line.startswith("Uid:")), "")
+            if uid_line.split()[1:2] == [user]:
+                found.append(int(entry.name))
+    return found
+
+
+def wait_until_slot_is_empty(slot, seconds=5.0):
+    """Returns once no process of the slot's user is left (each one found is killed): only
+    then is a test's report read. The cage's pid namespace ends them all; this waits for it."""
+    deadline = time.monotonic() + seconds
+    while True:
+        left = processes_of_slot(slot)
+        if not left:
+            return True
+        for pid in left:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.01)
 
 
 def give_to_slot(path, slot):
