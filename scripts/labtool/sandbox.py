@@ -84,8 +84,9 @@ def processes_of_slot(slot):
                 status = (entry / "status").read_text()
             except OSError:
                 continue
-            uid_line = next((line for line in status.splitlines() if line.startswith("Uid:")), "")
-            if uid_line.split()[1:2] == [user]:
+            fields = dict(line.split(":", 1) for line in status.splitlines() if ":" in line)
+            zombie = fields.get("State", "").strip().startswith("Z")  # already dead, not yet reaped
+            if fields.get("Uid", "").split()[:1] == [user] and not zombie:
                 found.append(int(entry.name))
     return found
 
