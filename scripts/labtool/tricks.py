@@ -51,13 +51,16 @@ TRICKS = [
     ("own-main", (), {"Ball.cpp": append('#include <cstdio>\nint main() { std::puts("<testsuites/>"); return 0; }')},
      (), "its own main() that reports success"),
     ("listener-split-include", (), {"Ball.cpp": append(
-        "#include <gtest/gt\\\nest.h>\nnamespace {\nstruct Clear : testing::EmptyTestEventListener {\n"
-        "    void OnTestPartResult(const testing::TestPartResult&) override {}\n};\n"
-        "struct Install { Install() { testing::UnitTest::GetInstance()->listeners().Append(new Clear); } } install;\n}")},
-     (), "a GoogleTest listener, the include split by a backslash-newline"),
-    ("assertion-always-true", (), {"Ball.cpp": append(
-        "#include <gtest/gtest.h>\nnamespace testing {\nAssertionResult AssertionFailure() { return AssertionSuccess(); }\n}")},
-     (), "redefines testing::AssertionFailure to succeed"),
+        "#include <any>\n#include <map>\n#include <memory>\n#include <sstream>\n#include <string>\n#include <vector>\n#include <variant>\n#include <optional>\n#include <functional>\n#include <iostream>\n#include <set>\n#include <unordered_map>\n#include <atomic>\n#include <mutex>\n#include <regex>\n#include <ostream>\n#include <limits>\n#include <type_traits>\n#include <tuple>\n#include <utility>\n"
+        "#define private public\n#include <gt\\\nest/gtest.h>\n#undef private\n"
+        "namespace testing {\nnamespace {\nstruct Clear : EmptyTestEventListener {\n"
+        "    void OnTestEnd(const TestInfo& info) override { const_cast<TestResult*>(info.result())->test_part_results_.clear(); }\n};\n"
+        "struct Install { Install() { UnitTest::GetInstance()->listeners().Append(new Clear); } } install;\n}\n}")},
+     (), "a GoogleTest listener that clears failures, the gtest include split by a backslash-newline"),
+    ("operator-bool-true", (), {"Ball.cpp": append(
+        "namespace testing {\nclass AssertionResult {\npublic:\n    explicit operator bool() const;\n"
+        "    bool success_;\n};\nAssertionResult::operator bool() const { return true; }\n}")},
+     (), "a 9-line AssertionResult::operator bool that returns true (every EXPECT passes)"),
     ("atexit-rewrite", (), {"Ball.cpp": append(
         "#include <cstdlib>\n#include <unistd.h>\nnamespace {\nvoid quit() { _exit(0); }\n"
         "struct Hook { Hook() { std::atexit(quit); } } hook;\n}")},
