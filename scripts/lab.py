@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Hitbox's lab tool: one program for the labs' rules, grading and files (Python 3.8+,
+"""Hitbox's lab tool: one program for the labs' rules, grading and files (Python 3.9+,
 standard library only; Linux, macOS and Windows).
 
     python3 scripts/lab.py grade 02            self-check lab 02 here (02, 2, 02_bouncing_balls,

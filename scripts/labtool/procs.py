@@ -114,6 +114,8 @@ def why_stopped(outcome, seconds, output_cap, what="the test"):
         if name in ("SIGXCPU",):
             return f"{what} used more than {seconds:g} s of CPU time"
         return f"crashed: {name}"
+    if outcome.status >= 0xC0000000:  # Windows: an exception code (0xC0000005: access violation)
+        return f"crashed: Windows exception 0x{outcome.status:08X}"
     return ""
 
 
