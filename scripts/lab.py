@@ -192,6 +192,9 @@ def main(argv=None):
     except BadInput as error:
         print(f"{options.command}: {error}", file=sys.stderr)
         return 2
+    except RuntimeError as error:  # the instructor's tree itself is broken
+        print(f"{options.command}: {error}", file=sys.stderr)
+        return 1
     except KeyboardInterrupt:
         print(f"\n{options.command}: interrupted: nothing recorded", file=sys.stderr)
         return 130

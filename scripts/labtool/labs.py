@@ -32,6 +32,15 @@ class Lab:
                 found |= markers.tasks_in_text(path.read_text(encoding="utf-8", errors="replace"))
         return sorted(found)
 
+    def visible_tests(self):
+        """Suite.Name of every test the lab's grading-test sources define (not disabled)."""
+        found = []
+        for source in sorted((self.repo / "tests" / "labs" / Path(self.folder).name).glob("*.cpp")):
+            text = source.read_text(encoding="utf-8", errors="replace")
+            found += [f"{s}.{n}" for s, n in re.findall(r"^\s*TEST\(\s*(\w+)\s*,\s*(\w+)\s*\)", text, re.M)
+                      if not s.startswith("DISABLED_") and not n.startswith("DISABLED_")]
+        return found
+
     def hidden_tests(self):
         """Suite.Name of every test in the instructor's hidden variants (never in a handout)."""
         found = set()

@@ -8,7 +8,6 @@ folder take turns (a lock). Exit status: 0 every test passed, 1 some test failed
 not build, 2 bad input (or a build folder that cannot be written).
 """
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -78,16 +77,6 @@ def find_program(build, target):
     return None
 
 
-def expected_tests(lab):
-    """The tests the lab's test sources define (a program that hides one still owes it)."""
-    found = []
-    for source in sorted((REPO / "tests" / "labs" / Path(lab.folder).name).glob("*.cpp")):
-        text = source.read_text(encoding="utf-8", errors="replace")
-        found += [f"{s}.{n}" for s, n in re.findall(r"^\s*TEST\(\s*(\w+)\s*,\s*(\w+)\s*\)", text, re.M)
-                  if not s.startswith("DISABLED_") and not n.startswith("DISABLED_")]
-    return found
-
-
 def grade_lab(lab, build, target, results_dir, work):
     """Builds and runs one lab; returns {"results": [...], "reason": why the lab got nothing}."""
     print(f"grade: building {target}...", flush=True)
@@ -95,7 +84,7 @@ def grade_lab(lab, build, target, results_dir, work):
     done = procs.run_limited(["cmake", "--build", str(build), "--config", "Debug", "--parallel", "2",
                               "--target", target], log, seconds=1800)
     graded = {"log": log}
-    expected = expected_tests(lab)
+    expected = lab.visible_tests()
     if done.status != 0:
         text = done.output
         sys.stderr.write(text[-6000:])
