@@ -62,6 +62,19 @@ for g in graders:
 print(f"check-grading: the Classroom workflow parses: {len(graders)} tests of 1 point, one per task, every step always runs")
 EOF_PY
 
+# The Classroom path on the handout: lab 1 does not compile, lab 2 is solved; the workflow's own
+# grading command must still give lab 2 every mark (a lab that does not compile costs that lab only).
+classroom=$work/handout
+echo "int broken = ;" >>"$classroom/labs/01_point_in_box/PointInBoxLevel.cpp"
+for source in $(lab_sources labs/02_bouncing_balls); do
+    python3 scripts/lab.py exercise "$source" "$classroom/$source" --solved "$(lab_tasks 02 | paste -sd, -)"
+done
+(cd "$classroom" && python3 scripts/lab.py grade-class --one . --no-cage --lab 01 --lab 02 --out grades --build build/grading >/dev/null &&
+    python3 scripts/lab.py mark grades/grades.csv lab02_bouncing_balls 3 &&
+    ! python3 scripts/lab.py mark grades/grades.csv lab01_point_in_box 1) ||
+    { echo "check-grading: on the Classroom path a broken lab 1 cost more than lab 1" >&2; exit 1; }
+echo "check-grading: Classroom: lab 1 does not compile, lab 2 still earns every task"
+
 # The labs whose tests are proven fair (one mistake costs one task): check-fair-marks.sh
 # leaves each of their tasks undone in turn. Add a lab here once its tests pass that check.
 fair_labs=(
