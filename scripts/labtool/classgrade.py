@@ -368,9 +368,10 @@ def grade(sources, labs, build, out, jobs, caged, gradescope_file=None):
     scratch_root = Path(tempfile.mkdtemp(prefix="hitbox-grading-"))
     scratch_root.chmod(0o711)
     shared_dir = scratch_root / "shared"
-    slots = queue.Queue()
-    for slot in range(jobs):
-        slots.put(slot)
+    slots = queue.Queue()  # a slot is the user id its caged tests run as
+    held = sandbox.claim_users(jobs) if caged else [(number, None) for number in range(jobs)]
+    for user, _ in held:
+        slots.put(user)
     all_rows, done = [], 0
     try:
         with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:

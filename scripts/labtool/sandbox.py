@@ -6,10 +6,12 @@ processes, nothing of the instructor's tree, other students or the engine's own 
 programs also run as a user of their own (one per grading slot), so the process limit
 counts only that slot's processes and a fork storm stops at it.
 """
+import fcntl
 import os
 import shutil
 import signal
 import subprocess
+import tempfile
 import time
 from pathlib import Path
 
@@ -17,7 +19,26 @@ from . import limits
 from .procs import prlimit_prefix
 
 SYSTEM_FOLDERS = ("/usr", "/etc/alternatives", "/etc/ld.so.cache")
-FIRST_SANDBOX_USER = 61000  # slot n runs tests as user 61000 + n (no account needed)
+FIRST_SANDBOX_USER = 61000  # grading slots run tests as users 61000, 61001, ... (no account needed)
+SANDBOX_USERS = 1000
+
+
+def claim_users(count):
+    """count user ids no other grading run on this machine holds, each held by a lock file
+    (kept open until this process ends): two runs at once never share a slot's user, so one
+    never kills the other's processes."""
+    held = []
+    for user in range(FIRST_SANDBOX_USER, FIRST_SANDBOX_USER + SANDBOX_USERS):
+        handle = open(Path(tempfile.gettempdir()) / f"hitbox-grading-user-{user}.lock", "a")
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            handle.close()
+            continue
+        held.append((user, handle))
+        if len(held) == count:
+            return held
+    raise SandboxUnavailable("no free sandbox user ids (too many grading runs at once)")
 
 
 class SandboxUnavailable(RuntimeError):
@@ -68,7 +89,7 @@ def compile_command(arguments, read_only, writable, cwd):
 def test_command(program, arguments, report_dir, slot):
     """A test program run caged as the slot's own user: it sees its program, a folder for its
     report (fresh, emptied by the engine), a private scratch /tmp of SCRATCH_BYTES."""
-    user = str(FIRST_SANDBOX_USER + slot)
+    user = str(slot)
     return (["setpriv", f"--reuid={user}", f"--regid={user}", "--clear-groups", "--"]
             + prlimit_prefix(limits.TEST_MEMORY, limits.OUTPUT_BYTES, limits.TEST_SECONDS, limits.TEST_PROCESSES)
             + base_command([program], [report_dir], limits.SCRATCH_BYTES)
@@ -77,7 +98,7 @@ def test_command(program, arguments, report_dir, slot):
 
 def processes_of_slot(slot):
     """Process ids still running as the slot's user (read from /proc)."""
-    user, found = str(FIRST_SANDBOX_USER + slot), []
+    user, found = str(slot), []
     for entry in Path("/proc").iterdir():
         if entry.name.isdigit():
             try:
@@ -111,8 +132,7 @@ def wait_until_slot_is_empty(slot, seconds=5.0):
 
 def give_to_slot(path, slot):
     """Makes path (a fresh folder) the slot user's, so the caged test can write its report."""
-    user = FIRST_SANDBOX_USER + slot
-    os.chown(path, user, user)
+    os.chown(path, slot, slot)
 
 
 def open_path_for_slot(path):
