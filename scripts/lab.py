@@ -16,6 +16,7 @@ import argparse
 import sys
 from pathlib import Path
 
+sys.dont_write_bytecode = True  # (a read-only handout, and no __pycache__ in anyone's tree)
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from labtool import labs as lablist  # noqa: E402
 from labtool.labs import BadInput  # noqa: E402
