@@ -65,8 +65,17 @@ def configure(build, default_build):
     done = subprocess.run(command, cwd=REPO, capture_output=True, text=True, errors="replace")
     if done.returncode != 0:
         sys.stderr.write(done.stdout[-4000:] + done.stderr[-4000:])
-        raise Stop(f"cmake could not configure {build} (its messages are above)"
-                   + (": the disk is full" if "No space left" in done.stdout + done.stderr else ""))
+        if disk_full(build):
+            raise Stop(f"cmake could not configure {build}: the disk is full")
+        raise Stop(f"cmake could not configure {build} (its messages are above)")
+
+
+def disk_full(folder, margin=4 * 1024 * 1024):
+    """True when the disk holding folder has less than margin bytes free."""
+    try:
+        return shutil.disk_usage(folder).free < margin
+    except OSError:
+        return False
 
 
 def find_program(build, target):
@@ -89,7 +98,7 @@ def grade_lab(lab, build, target, results_dir, work):
         text = done.output
         sys.stderr.write(text[-6000:])
         why = "did not build (the compiler's messages are above)"
-        if "No space left on device" in text:
+        if "No space left on device" in text or disk_full(build):
             why = "did not build: the disk is full"
         elif not text.strip():
             why = f"did not build (cmake --build stopped with status {done.status} and said nothing)"
