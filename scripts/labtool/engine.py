@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import limits, markers, procs, sandbox
+from .labs import REPO
 
 
 @dataclass
@@ -59,7 +60,8 @@ def run_test(program, test, work, slot=None, threaded=False):
     if slot is not None:
         report_dir.chmod(0o700)
         sandbox.give_to_slot(report_dir, slot)
-        command = sandbox.test_command(program, arguments, report_dir, slot)
+        assets = [REPO / "assets"] if (REPO / "assets").is_dir() else []
+        command = sandbox.test_command(program, arguments, report_dir, slot, assets)
     elif threaded:  # (limits from a thread: set by prlimit, not in the child)
         command = procs.prlimit_prefix(limits.TEST_MEMORY, limits.OUTPUT_BYTES, limits.TEST_SECONDS) + [str(program), *arguments]
     else:

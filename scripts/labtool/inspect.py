@@ -6,8 +6,9 @@ Refused when a student object
 - defines main, anything of GoogleTest (testing::, gtest), or a strong symbol the harness
   already defines (the tests, the lab's other files, the framework, GoogleTest, the C and C++
   libraries): replacing one changes what the tests see;
-- calls a function that ends or leaves the process, starts processes, or opens, writes,
-  renames or deletes files (the ways to forge or hide a report);
+- calls a function that ends or leaves the process, starts processes, or writes, renames or
+  deletes files (the ways to forge or hide a report; reading a file, as lab 9's level loader
+  does, is allowed);
 - contains a raw system call instruction.
 Comments, strings and the student's own macros never matter: only compiled code is read.
 """
@@ -25,8 +26,12 @@ FORBIDDEN_CALLS = {
     "dup2", "dup3", "mmap", "mmap64", "mprotect", "dlopen", "dlsym", "dlmopen", "ptrace", "syscall",
     "longjmp", "_longjmp", "siglongjmp", "__longjmp_chk", "setcontext", "swapcontext", "chdir", "prctl",
 }
-# Mangled-name pieces of the C++ library's file and filesystem classes.
-FORBIDDEN_CLASSES = ("basic_ofstream", "basic_fstream", "basic_ifstream", "basic_filebuf", "filesystem")
+# Mangled-name pieces of the C++ library's file writers (reading a level file is allowed: lab 9).
+FORBIDDEN_CLASSES = ("basic_ofstream", "basic_fstream")
+# std::filesystem operations that change files (status, exists, file_size and path are fine).
+FORBIDDEN_FILESYSTEM = re.compile(r"^std::filesystem::(__cxx11::)?(remove|remove_all|rename|copy|copy_file|"
+                                  r"copy_symlink|create_\w+|resize_file|permissions|current_path|"
+                                  r"last_write_time)\(")
 STRONG_TYPES = set("TDBRGSA")  # nm letters of a non-weak definition
 RAW_SYSCALL = re.compile(r"\t(syscall|sysenter|int\s+\$0x80|svc\s+#?0)\b")
 SYSTEM_LIBRARIES = ("libc.so.6", "libstdc++.so.6", "libm.so.6", "libgcc_s.so.1")
@@ -93,7 +98,9 @@ def refusal(objects, harness):
                 return f"`{source}` calls {name}(): lab code may not end the program, start processes or touch files"
             if name.startswith("_Z") and any(piece in name for piece in FORBIDDEN_CLASSES):
                 return (f"`{source}` uses {demangle([name])[0].split('(')[0]}: "
-                        "lab code may not open files")
+                        "lab code may not write files")
+            if name.startswith("_ZNSt10filesystem") and FORBIDDEN_FILESYSTEM.match(demangle([name])[0]):
+                return f"`{source}` calls {demangle([name])[0].split('(')[0]}: lab code may not change files"
         code = subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(obj)], capture_output=True,
                               text=True, errors="replace").stdout
         if RAW_SYSCALL.search(code):

@@ -86,13 +86,14 @@ def compile_command(arguments, read_only, writable, cwd):
             + base_command(read_only, writable) + ["--chdir", str(cwd), "--"] + list(arguments))
 
 
-def test_command(program, arguments, report_dir, slot):
-    """A test program run caged as the slot's own user: it sees its program, a folder for its
-    report (fresh, emptied by the engine), a private scratch /tmp of SCRATCH_BYTES."""
+def test_command(program, arguments, report_dir, slot, read_only=()):
+    """A test program run caged as the slot's own user: it sees its program, read_only (the
+    course's assets), a folder for its report (fresh, made by the engine), a private scratch
+    /tmp of SCRATCH_BYTES."""
     user = str(slot)
     return (["setpriv", f"--reuid={user}", f"--regid={user}", "--clear-groups", "--"]
             + prlimit_prefix(limits.TEST_MEMORY, limits.OUTPUT_BYTES, limits.TEST_SECONDS, limits.TEST_PROCESSES)
-            + base_command([program], [report_dir], limits.SCRATCH_BYTES)
+            + base_command([program, *read_only], [report_dir], limits.SCRATCH_BYTES)
             + ["--chdir", "/tmp", "--setenv", "HOME", "/tmp", "--", str(program)] + list(arguments))
 
 
