@@ -39,12 +39,14 @@ for lab in "${labs[@]}"; do
             mkdir -p "$(dirname "$into/${source#"$folder"/}")"
             cmake "-DINPUT=$source" "-DOUTPUT=$into/${source#"$folder"/}" "-DSOLVED_TASKS=$solved" \
                 -P framework/cmake/HitboxMakeExercise.cmake
-        done < <(grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' "$folder" --include='*.cpp' --include='*.h' --include='*.hpp')
+        done < <(lab_sources "$folder")
     done
     lab_options+=(--lab "$lab")
 done
 
-./scripts/grade-class.sh "$work/class" "${lab_options[@]}" --out "$work/grades" "${build_options[@]}"
+# The submissions are the instructor's own code with one task undone: graded by the same engine
+# with the same limits, without the sandbox (it only costs time here; check-grading.sh proves it).
+./scripts/grade-class.sh "$work/class" "${lab_options[@]}" --no-cage --out "$work/grades" "${build_options[@]}"
 
 # Each submission: a mark for every task of its lab but the one left undone.
 problems=0

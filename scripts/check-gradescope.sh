@@ -29,7 +29,7 @@ grade() {
     while IFS= read -r source; do
         cmake "-DINPUT=$source" "-DOUTPUT=$root/autograder/submission/$(basename "$source")" \
             "-DSOLVED_TASKS=$1" -P framework/cmake/HitboxMakeExercise.cmake
-    done < <(grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' "$folder")
+    done < <(lab_sources "$folder")
     local inside='/autograder/run_autograder'
     if [[ $first == yes ]]; then
         # Gradescope's image build: the zip in /autograder/source, setup.sh run from there.

@@ -1,38 +1,17 @@
 # shellcheck shell=bash
-# lab-tests.sh - shell functions shared by grade.sh, check-exercises.sh and check-handout.sh.
+# lab-tests.sh - shell functions shared by check-exercises.sh, check-handout.sh and other checks.
 # Source it; it is not a program:   source "$(dirname "$0")/lab-tests.sh"
 
 # Seconds one run of a test program may take before it counts as hung.
 : "${LAB_TEST_TIMEOUT:=60}"
 
-# lab_names: prints the name of every lab in labs/NN_*/CMakeLists.txt, one a line, in order
-# (the first argument of its hitbox_add_lab call). Run from the tree's top folder.
-lab_names() {
-    local cmakelists
-    for cmakelists in labs/[0-9][0-9]_*/CMakeLists.txt; do
-        [[ -f $cmakelists ]] || continue
-        sed -n 's/^[[:space:]]*hitbox_add_lab([[:space:]]*\([A-Za-z0-9_]*\).*/\1/p' "$cmakelists" | head -n 1
-    done
-}
-
-# lab_folder NAME: prints labs/NN_folder of the lab called NAME.
-lab_folder() {
-    local cmakelists
-    for cmakelists in labs/[0-9][0-9]_*/CMakeLists.txt; do
-        if grep -Eq "^[[:space:]]*hitbox_add_lab\([[:space:]]*$1([[:space:]]|$)" "$cmakelists"; then
-            dirname "$cmakelists"
-            return 0
-        fi
-    done
-    return 1
-}
-
-# lab_tasks FOLDER: the task numbers marked "// BEGIN TASK n:" in the folder's sources
-# (or "// TASK n:" in a handout), sorted, one a line. None (a finished handout) is no error.
-lab_tasks() {
-    { grep -rhoE '//[[:space:]]*(BEGIN )?TASK [0-9]+:' "$1" --include='*.cpp' --include='*.h' --include='*.hpp' || true; } |
-        { grep -oE '[0-9]+' || true; } | sort -n -u
-}
+# lab_names, lab_folder NAME, lab_tasks FOLDER_OR_NAME: the lab list and the task numbers,
+# from the one lab tool (scripts/lab.py, which owns the lab list and the task-marker grammar).
+lab_names() { python3 scripts/lab.py labs; }
+lab_folder() { python3 scripts/lab.py folder "$1"; }
+lab_tasks() { python3 scripts/lab.py tasks "$1"; }
+# lab_sources FOLDER: the files of the lab that hold a task marker (the student's files).
+lab_sources() { python3 scripts/lab.py student-files | grep "^$1/" || true; }
 
 # find_test_program BUILD_DIR NAME: the path of the built program NAME under BUILD_DIR.
 find_test_program() {

@@ -43,7 +43,8 @@ keep() {
         tests/objects/* | tests/app/* | tests/debug/* | tests/course/*.cpp) return 0 ;;
         CMakeLists.txt | CMakePresets.json | .clang-format | .gitignore | tests/CMakeLists.txt) return 0 ;;
         scripts/grade.sh | scripts/lab-tests.sh | scripts/install-deps.sh) return 0 ;;
-        scripts/grading/grader.py | scripts/grading/task-mark.sh) return 0 ;;
+        scripts/labtool/tricks.py) return 1 ;; # (check-grading's class of tricks)
+        scripts/lab.py | scripts/labtool/*.py) return 0 ;; # the lab tool: self-check, Classroom
         labs/CMakeLists.txt | labs/[0-9][0-9]_*/*) return 0 ;;
     esac
     return 1
@@ -93,8 +94,7 @@ mapfile -t labs < <(lab_names)
 
 # The files a student edits, from the solution's task markers (the grader's one list; the
 # handout has no markers left to derive it from).
-grep -rlE '//[[:space:]]*BEGIN TASK [0-9]+:' labs --include='*.cpp' --include='*.h' --include='*.hpp' |
-    sort >"$out/scripts/grading/student-files.txt"
+python3 scripts/lab.py student-files >"$out/scripts/labtool/student-files.txt"
 
 # GitHub Classroom: on every push the same grader grades the repository once, then one
 # Classroom test per task (1 point each) reads that task's mark from the gradebook.
@@ -102,7 +102,8 @@ mkdir -p "$out/.github/workflows"
 {
     cat <<'EOF'
 # GitHub Classroom autograding (written by make-handout.sh): grades every lab on each push
-# with scripts/grading/grader.py and reports one test per task, 1 point each.
+# with the lab tool (scripts/lab.py) and reports one test per task, 1 point each. Every step
+# runs even when one before it failed: a lab that does not compile costs that lab only.
 name: Autograding
 on: [push, workflow_dispatch, repository_dispatch]
 permissions:
@@ -119,7 +120,8 @@ jobs:
       - name: Install the compiler, CMake, SFML and GoogleTest
         run: sudo apt-get update -qq && sudo apt-get install -y -qq g++ cmake pkg-config libsfml-dev libgtest-dev libgmock-dev
       - name: Grade every lab
-        run: python3 scripts/grading/grader.py "$GITHUB_WORKSPACE" --out grades --build build/grading
+        if: always()
+        run: python3 scripts/lab.py grade-class --one "$GITHUB_WORKSPACE" --no-cage --out grades --build build/grading
       - name: Feedback
         if: always()
         run: cat grades/students/*.md >>"$GITHUB_STEP_SUMMARY"
@@ -129,10 +131,10 @@ EOF
         for task in $(lab_tasks "$(lab_folder "$lab")"); do
             id="${lab%%_*}_task_$task"
             runners+=("$id")
-            printf '%s\n' "      - name: $lab task $task" "        id: $id" \
+            printf '%s\n' "      - name: $lab task $task" "        id: $id" "        if: always()" \
                 "        uses: classroom-resources/autograding-command-grader@v1" "        with:" \
                 "          test-name: $lab task $task" \
-                "          command: scripts/grading/task-mark.sh grades/grades.csv $lab $task" \
+                "          command: python3 scripts/lab.py mark grades/grades.csv $lab $task" \
                 "          timeout: 1" "          max-score: 1"
         done
     done
@@ -166,18 +168,18 @@ runs without a window, `--screenshot out.png` saves one frame.
 
 ## Check your work
 
-    ./scripts/grade.sh --lab lab01_point_in_box    # one lab
-    ./scripts/grade.sh                             # every lab
+    python3 scripts/lab.py grade 01                # one lab (Windows: py scripts/lab.py grade 01)
+    python3 scripts/lab.py grade --all             # every lab
 
-builds the lab's grading tests against your code, runs them and prints, for each task,
-how many of its tests pass and fail (JUnit XML in `build/debug/grade-results/`). A task is
-done when none of its tests fail. Each test's name says what it checks, e.g.
-`Task1BounceOffTheWalls.BallNeverLeavesTheWindow`; the full output is in
-`build/debug/grade-results/<lab>.log`. A test that crashes, or runs longer than 60 seconds
-(an endless loop; `LAB_TEST_TIMEOUT=10 ./scripts/grade.sh` waits 10 instead), counts as
-failed and the table says so. A lab that does not compile shows "did not build" (the
-compiler's messages are in `build/debug/grade-results/<lab>.build.log`); the other labs
-are still graded. You can also run one lab's tests directly:
+builds the lab's grading tests against your code, runs each test in a process of its own
+and prints, for each task, how many of its tests pass and fail, and why (JUnit XML in
+`build/debug/grade-results/`). A task is done when none of its tests fail. Each test's
+name says what it checks, e.g. `Task1BounceOffTheWalls.BallNeverLeavesTheWindow`. A test
+that crashes, runs longer than 10 seconds (an endless loop) or prints more than 1 MB
+counts as failed and the table says so: the same rule and limits your instructor grades
+with. A lab that does not compile shows "did not build" (the compiler's messages are in
+`build/debug/grade-results/<lab>.build.log`); the other labs are still graded. You can
+also run one lab's tests directly:
 
     cmake --build --preset debug --target lab01_point_in_box_tests
     ./build/debug/tests/labs/01_point_in_box/lab01_point_in_box_tests

@@ -39,7 +39,7 @@
 # - labs/NN_name/: CMakeLists.txt calling hitbox_add_lab, README.md (the lab sheet: tasks,
 #   keys, which test suites check each task) and the sources. What students write sits
 #   between "// BEGIN TASK n: title" and "// END TASK n". The files holding a marker are the
-#   student's files: the class grader (scripts/grading/grader.py) takes ONLY those from a
+#   student's files: the class grader (scripts/lab.py grade-class) takes ONLY those from a
 #   submission; every other file of the lab is the instructor's. So put code the tests
 #   rely on, and that students must not change, in files without a marker.
 # - tests/labs/NN_name/: CMakeLists.txt calling hitbox_add_lab_tests. Suites are named
@@ -49,7 +49,7 @@
 #   (scripts/check-fair-marks.sh leaves each task undone in turn and fails on a cascade).
 #   Where a rule has an edge (walls, radii, tile bounds), test the touching case. Bound
 #   every loop by a step count: a test takes well under a second on the solution and on the
-#   starter (the grader stops a test after 10 s, as a last resort).
+#   starter (the grader stops a test after 5 s, as a last resort: scripts/labtool/limits.py).
 # - tests/labs-hidden/NN_name/*.cpp (optional): the instructor's hidden variants, the same
 #   behaviour with other numbers; built into <lab>_tests, left out of the handout.
 include_guard(GLOBAL)

@@ -1,5 +1,9 @@
 # Writes the student (exercise) version of one lab source file from the solution.
 #
+# The grammar's one home is scripts/labtool/markers.py (make_exercise() there writes the same
+# text); this file is its CMake twin so the build needs no Python, and `python3 scripts/lab.py
+# same-exercise` (CI, scripts/check-grading.sh) proves the two agree on every lab file.
+#
 # The solution marks what a student writes:
 #
 #     // BEGIN TASK 2: bounce off the window edges

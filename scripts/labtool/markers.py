@@ -93,3 +93,48 @@ def task_of_test(name):
         if match:
             return int(match.group(1))
     return None
+
+
+def make_exercise(text, solved=(), where="<text>"):
+    """The exercise version of a solution file's text (what HitboxMakeExercise.cmake writes):
+    each unsolved task block becomes "// TASK n: title — see README.md" at the BEGIN line's
+    indentation, then its starter lines un-commented; tasks in `solved` keep their solution."""
+    out, state, solved_now, task = [], "code", False, None
+    for number, raw in enumerate(text.splitlines(keepends=True), start=1):
+        line = raw.rstrip("\r\n").rstrip("\r")
+        ending = raw[len(raw.rstrip("\r\n")):]
+        if ANY_MARKER.match(line):
+            begin, starter, end = BEGIN.match(line), STARTER.match(line), END.match(line)
+            if begin and state == "code":
+                task, state = int(begin.group(2)), "solution"
+                solved_now = task in solved
+                if not solved_now:
+                    out.append(f"{begin.group(1)}// TASK {task}: {begin.group(3).strip()} — see README.md{ending}")
+            elif starter and state == "solution" and int(starter.group(1)) == task:
+                state = "starter"
+            elif end and state != "code" and int(end.group(1)) == task:
+                state = "code"
+            else:
+                raise MarkerError(f"{where}:{number}: a task marker out of place: {line.strip()}")
+        elif state == "code" or (state == "solution" and solved_now):
+            out.append(raw)
+        elif state == "starter" and not solved_now:
+            match = re.match(r"^([ \t]*)// ?(.*)$", line)
+            if not line.strip():
+                out.append(raw)
+            elif match is None:
+                raise MarkerError(f"{where}:{number}: a starter line of TASK {task} must be a comment")
+            else:
+                out.append((match.group(1) + match.group(2) if match.group(2) else "") + ending)
+    if state != "code":
+        raise MarkerError(f"{where}: BEGIN TASK {task} is never closed")
+    return "".join(out)
+
+
+def write_if_changed(path, text):
+    """Writes text to path unless it already holds it (an unchanged file does not recompile)."""
+    path = Path(path)
+    if path.exists() and path.read_text(encoding="utf-8") == text:
+        return
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8", newline="")

@@ -6,7 +6,5 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
 apt-get install -y -qq --no-install-recommends g++ make cmake pkg-config libsfml-dev \
-    libgtest-dev libgmock-dev python3 git unzip ca-certificates ccache
-lab=$(cat /autograder/source/lab.txt)
-python3 /autograder/source/hitbox/scripts/grading/grader.py --prepare-only --lab "$lab" \
-    --build /autograder/build
+    libgtest-dev libgmock-dev python3 git unzip ca-certificates ccache bubblewrap util-linux
+python3 /autograder/source/hitbox/scripts/lab.py gradescope --root /autograder --prepare-only

@@ -1,0 +1,205 @@
+#!/usr/bin/env python3
+"""Hitbox's lab tool: one program for the labs' rules, grading and files (Python 3.9+,
+standard library only; Linux, macOS and Windows).
+
+    python3 scripts/lab.py grade 02            self-check lab 02 here (02, 2, 02_bouncing_balls,
+                                               lab02_bouncing_balls); --all: every lab
+    python3 scripts/lab.py grade-class DIR     grade a class (instructor; Linux, caged)
+    python3 scripts/lab.py gradescope          Gradescope's run_autograder (always writes results.json)
+    python3 scripts/lab.py mark CSV LAB TASK   exit 0 when the gradebook gives LAB's TASK its mark
+    python3 scripts/lab.py labs | tasks LAB | folder LAB | student-files
+    python3 scripts/lab.py exercise IN OUT [--solved 1,2]   write a solution file's exercise version
+
+Exit status: 0 success, 1 a test failed (grade) or the mark is missing (mark), 2 bad input.
+"""
+import argparse
+import sys
+from pathlib import Path
+
+sys.dont_write_bytecode = True  # (a read-only handout, and no __pycache__ in anyone's tree)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from labtool import labs as lablist  # noqa: E402
+from labtool.labs import BadInput  # noqa: E402
+
+
+def command_labs(options):
+    for lab in lablist.all_labs():
+        print(lab.name)
+    return 0
+
+
+def command_tasks(options):
+    lab = lablist.find_lab(options.lab, lablist.all_labs())
+    for task in lab.tasks():
+        print(task)
+    return 0
+
+
+def command_folder(options):
+    print(lablist.find_lab(options.lab, lablist.all_labs()).folder)
+    return 0
+
+
+def command_student_files(options):
+    for lab in lablist.all_labs():
+        for relative in lab.student_files:
+            print(f"{lab.folder}/{relative}")
+    return 0
+
+
+def command_exercise(options):
+    from labtool import markers
+    solved = {int(t) for t in options.solved.split(",") if t.strip()} if options.solved else set()
+    try:
+        text = Path(options.input).read_text(encoding="utf-8")
+    except OSError as error:
+        raise BadInput(f"{options.input}: {error.strerror}") from None
+    markers.write_if_changed(Path(options.output), markers.make_exercise(text, solved, options.input))
+    return 0
+
+
+def command_same_exercise(options):
+    """Proves HitboxMakeExercise.cmake (the build's generator) writes what markers.py says,
+    for every lab file with a task, with no task solved and with the first one solved."""
+    import subprocess
+    import tempfile
+    from labtool import markers
+    problems = 0
+    generator = lablist.REPO / "framework" / "cmake" / "HitboxMakeExercise.cmake"
+    with tempfile.TemporaryDirectory() as scratch:
+        output = Path(scratch) / "exercise"
+        for lab in lablist.all_labs():
+            for relative in lab.student_files:
+                source = lablist.REPO / lab.folder / relative
+                tasks = lab.tasks()
+                for solved in ((), tuple(tasks[:1])):
+                    output.unlink(missing_ok=True)
+                    subprocess.run(["cmake", f"-DINPUT={source}", f"-DOUTPUT={output}",
+                                    f"-DSOLVED_TASKS={','.join(map(str, solved))}", "-P", str(generator)], check=True)
+                    text = source.read_text(encoding="utf-8")
+                    if output.read_text(encoding="utf-8") != markers.make_exercise(text, set(solved), str(source)):
+                        print(f"same-exercise: {lab.folder}/{relative} (solved {solved or 'none'}): "
+                              "HitboxMakeExercise.cmake and markers.py disagree", file=sys.stderr)
+                        problems += 1
+    print(f"same-exercise: {'FAILED' if problems else 'the CMake generator and markers.py agree on every lab file'}")
+    return 1 if problems else 0
+
+
+def command_mark(options):
+    import csv
+    try:
+        with open(options.gradebook, newline="", encoding="utf-8") as handle:
+            rows = list(csv.DictReader(handle))
+    except OSError as error:
+        print(f"mark: {options.gradebook}: {error.strerror} (did grading run?)", file=sys.stderr)
+        return 1
+    for row in rows:
+        if row["lab"] == options.lab and row["task"] == str(options.task):
+            print(f"{options.lab} task {options.task}: {row['tests passed']}/{row['tests total']} tests passed"
+                  + (f" ({row['reason']})" if row["reason"] else ""))
+            return 0 if row["mark"] == "1" else 1
+    print(f"{options.lab} task {options.task}: not graded", file=sys.stderr)
+    return 1
+
+
+def command_grade(options):
+    from labtool import selfcheck
+    return selfcheck.run(options)
+
+
+def command_grade_class(options):
+    from labtool import classgrade
+    return classgrade.run(options)
+
+
+def command_gradescope(options):
+    from labtool import classgrade
+    return classgrade.run_gradescope(options)
+
+
+def command_tricks(options):
+    from labtool import tricks
+    if options.action == "make":
+        tricks.make_class(options.path)
+        return 0
+    if options.action == "bench":
+        tricks.make_bench(options.path, options.count, options.hostile)
+        return 0
+    problems, table = tricks.check(options.path)
+    print(f"{'SUBMISSION':<24} {'MARKS':<10} {'MAY EARN':<10} WHY")
+    for student, got, earns, why in table:
+        print(f"{student:<24} {','.join(map(str, got)) or '-':<10} {','.join(map(str, earns)) or '-':<10} {why}")
+    for problem in problems:
+        print(f"check-grading: {problem}", file=sys.stderr)
+    return 1 if problems else 0
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="lab.py", description=__doc__.split("\n\n")[0])
+    commands = parser.add_subparsers(dest="command", required=True)
+    grade = commands.add_parser("grade", help="self-check labs in this checkout or handout")
+    grade.add_argument("labs", nargs="*", metavar="LAB")
+    grade.add_argument("--all", action="store_true", help="every lab")
+    grade.add_argument("--build", help="build folder (default build/debug, configured with the debug preset)")
+    grade.add_argument("--exercise", action="store_true", help="course repository: grade the generated exercise")
+    grade.set_defaults(run=command_grade)
+
+    whole = commands.add_parser("grade-class", help="grade a folder of submissions (one per student)")
+    whole.add_argument("submissions", nargs="+", help="a folder of submissions, or with --one a submission")
+    whole.add_argument("--one", action="store_true", help="the arguments are single submissions")
+    whole.add_argument("--lab", action="append", help="grade only this lab (repeatable)")
+    whole.add_argument("--out", default="grades", help="where the reports go (default grades/)")
+    whole.add_argument("--build", help="the instructor's build (default build/grading)")
+    whole.add_argument("--jobs", type=int, default=0, help="submissions at once (default: the cores)")
+    whole.add_argument("--no-cage", action="store_true",
+                       help="run without the sandbox (GitHub Classroom: the student's own repository)")
+    whole.add_argument("--prepare-only", action="store_true", help="only build the instructor's tests")
+    whole.set_defaults(run=command_grade_class)
+
+    scope = commands.add_parser("gradescope", help="Gradescope's run_autograder: grade /autograder/submission")
+    scope.add_argument("--root", default="/autograder")
+    scope.add_argument("--prepare-only", action="store_true")
+    scope.set_defaults(run=command_gradescope)
+
+    mark = commands.add_parser("mark", help="exit 0 when the gradebook gives LAB's TASK its mark")
+    mark.add_argument("gradebook")
+    mark.add_argument("lab")
+    mark.add_argument("task", type=int)
+    mark.set_defaults(run=command_mark)
+
+    for name, function in (("labs", command_labs), ("student-files", command_student_files),
+                           ("same-exercise", command_same_exercise)):
+        commands.add_parser(name).set_defaults(run=function)
+    for name, function in (("tasks", command_tasks), ("folder", command_folder)):
+        sub = commands.add_parser(name)
+        sub.add_argument("lab")
+        sub.set_defaults(run=function)
+    exercise = commands.add_parser("exercise", help="write the exercise version of a solution file")
+    exercise.add_argument("input")
+    exercise.add_argument("output")
+    exercise.add_argument("--solved", default="", help="tasks to keep solved, e.g. 1,3")
+    exercise.set_defaults(run=command_exercise)
+
+    tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
+    tricks.add_argument("action", choices=("make", "check", "bench"))
+    tricks.add_argument("path", help="make, bench: the class folder to write; check: its grades.csv")
+    tricks.add_argument("--count", type=int, default=30, help="bench: realistic submissions")
+    tricks.add_argument("--hostile", action="store_true", help="bench: add the hostile submissions")
+    tricks.set_defaults(run=command_tricks)
+
+    options = parser.parse_args(argv)
+    try:
+        return options.run(options)
+    except BadInput as error:
+        print(f"{options.command}: {error}", file=sys.stderr)
+        return 2
+    except RuntimeError as error:  # the instructor's tree itself is broken
+        print(f"{options.command}: {error}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print(f"\n{options.command}: interrupted: nothing recorded", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

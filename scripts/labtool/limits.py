@@ -1,0 +1,35 @@
+"""Every limit the grading engine puts on student code: the one home of these numbers.
+
+The self-check (lab.py grade) and class grading (lab.py grade-class, Gradescope, GitHub
+Classroom) use the same ones, so "passed" means the same everywhere.
+"""
+
+# One test process: wall-clock and CPU seconds. Every grading test is bounded by step counts
+# and takes well under a second on the solution and on the starter; this is the last resort.
+TEST_SECONDS = 5
+# One test process's address space (bytes): a test needs a few MB.
+TEST_MEMORY = 1024 * 1024 * 1024
+# Bytes one test process may print (stdout and stderr together) or write to any one file.
+OUTPUT_BYTES = 1_000_000
+# The private scratch folder of one test process (a tmpfs of this size, Linux class grading).
+SCRATCH_BYTES = 64 * 1024 * 1024
+# Processes and threads one test may have at once (a fork storm stops here).
+TEST_PROCESSES = 64
+# One compiler run: wall-clock seconds, address space, and the largest file it may write.
+COMPILE_SECONDS = 60
+COMPILE_MEMORY = 2 * 1024 * 1024 * 1024
+COMPILE_FILE_BYTES = 256 * 1024 * 1024
+# Linking one lab's test program.
+LINK_SECONDS = 60
+# Everything of one submission together (every lab): when it is used up, what is left is
+# reported "not run: the submission used up its N s".
+SUBMISSION_SECONDS = 300
+
+
+def megabytes(count):
+    """'1 MB' for 1_000_000, '64 MiB' for 64 * 2**20: how a limit is shown to people."""
+    if count % (1024 * 1024 * 1024) == 0:
+        return f"{count // (1024 * 1024 * 1024)} GiB"
+    if count % (1024 * 1024) == 0:
+        return f"{count // (1024 * 1024)} MiB"
+    return f"{count / 1_000_000:g} MB"

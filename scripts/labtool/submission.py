@@ -1,0 +1,63 @@
+"""One submission as handed in: its name, its files unpacked into a scratch folder (symbolic
+links refused), and where in it each of a lab's student files is."""
+import os
+import subprocess
+import zipfile
+from pathlib import Path
+
+SKIPPED_FOLDERS = {".git", "build", ".vs", ".vscode", "out", "cmake-build-debug", "__MACOSX"}
+
+
+class Refused(Exception):
+    """The whole submission is refused; the message is the one line that says why."""
+
+
+def submission_name(source):
+    name = Path(source).name
+    for suffix in (".zip", ".git", ".bundle"):
+        if name.endswith(suffix):
+            name = name[: -len(suffix)]
+    return name
+
+
+def unpack(source, into):
+    """The submission's files in a folder of their own; refuses symbolic links."""
+    source = Path(source)
+    files = into / "files"
+    if source.is_file() and source.suffix == ".zip":
+        with zipfile.ZipFile(source) as archive:
+            for member in archive.infolist():
+                if (member.external_attr >> 16) & 0o170000 == 0o120000:
+                    raise Refused(f"refused: the zip holds a symbolic link ({member.filename})")
+                target = (files / member.filename).resolve()
+                if not str(target).startswith(str(files.resolve()) + os.sep):
+                    raise Refused(f"refused: the zip writes outside its folder ({member.filename})")
+                archive.extract(member, files)
+    elif source.suffix == ".bundle" or (source.is_dir() and (source / "HEAD").is_file() and not (source / "labs").exists()):
+        subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", str(source), str(files)],
+                       stderr=subprocess.DEVNULL, check=True)
+    elif source.is_dir():
+        files = source
+    else:
+        raise Refused(f"not graded: {source.name} is not a folder, a .zip or a git repository")
+    found = []
+    for dirpath, dirnames, filenames in os.walk(files):
+        for name in dirnames + filenames:
+            path = Path(dirpath, name)
+            if path.is_symlink():
+                raise Refused(f"refused: the submission holds a symbolic link ({path.relative_to(files).as_posix()})")
+        dirnames[:] = [d for d in dirnames if d not in SKIPPED_FOLDERS and not d.startswith("build")]
+        found += [Path(dirpath, f).relative_to(files).as_posix() for f in filenames]
+    return files, sorted(found)
+
+
+def find(lab, relative, files):
+    """The student's copy of lab file `relative`: labs/NN_name/relative, NN_name/relative
+    anywhere, or (a flat upload) the one file of that name."""
+    folder = Path(lab.folder).name
+    for wanted in (f"{lab.folder}/{relative}", f"{folder}/{relative}"):
+        for candidate in files:
+            if candidate == wanted or candidate.endswith("/" + wanted):
+                return candidate
+    same_name = [f for f in files if f == relative or f.endswith("/" + relative)]
+    return same_name[0] if len(same_name) == 1 else None
