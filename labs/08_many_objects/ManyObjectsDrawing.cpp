@@ -2,6 +2,7 @@
 // the pair table, the readout and the debug view. Reads the simulation, changes nothing.
 #include "ManyObjectsLevel.h"
 
+#include "hitbox/app/App.h"
 #include "hitbox/app/Assets.h"
 #include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
@@ -229,7 +230,7 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
         lines += "pairs tested: " + withCommas(getPairsTested()) +
                  "    boxes overlapping: " + withCommas(candidatePairs.size()) +
                  "    circles touching: " + withCommas(contacts) + "\n";
-        lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms per step";
+        lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms CPU per step";
         if (stepsMeasured > 1)
             lines += "    real time: " + fixed(realStepMilliseconds, 1) + " ms per step";
         lines += "\n";
@@ -259,11 +260,13 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
 
 std::string ManyObjectsLevel::timingLine() const
 {
+    const double budget = 1000.0 / double(hitbox::stepsPerSecond);
     return "timing: " + std::string(methodLabel(method)) + ", " + std::to_string(balls.size()) +
-           " balls: " + std::to_string(getPairsTested()) + " pairs tested, " +
-           std::to_string(candidatePairs.size()) + " overlapping, collision " +
-           fixed(collisionMilliseconds, 2) + " ms/step, real time " +
-           fixed(realStepMilliseconds, 1) + " ms/step" +
+           " balls, " + std::to_string(threads) + (threads == 1 ? " thread: " : " threads: ") +
+           std::to_string(getPairsTested()) + " pairs tested, " +
+           std::to_string(candidatePairs.size()) + " overlapping; " +
+           describeTiming(getTimingSummary(), budget) + "; real time " +
+           fixed(realStepMilliseconds, 1) + " ms/step (wall clock, drawing included)" +
            (bruteForceSkipped ? " (brute force skipped)" : "") +
            (stoppedAsTooSlow ? " (stopped: too slow)" : "");
 }

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace hitbox
@@ -105,7 +106,8 @@ private:
         bool anyRules = false;
         std::vector<std::uint32_t> cursor;      // per cell: this half's count, then where it fills
         std::size_t firstCell = 0, endCell = 0; // the cells this half tests
-        std::vector<Pair> found;                // grows only; the first foundCount are real
+        std::unique_ptr<Pair[]> found; // foundRoom pairs; the first foundCount are real
+        std::size_t foundRoom = 0;
         std::size_t foundCount = 0;
     };
 
