@@ -45,7 +45,7 @@ struct LabSettings
     // The grid's threads: 1 or 2 (2 splits it in halves from 20,000 balls, see GridSettings).
     // Both give the same pairs in the same order, so the same balls step after step.
     int threads = 2;
-    bool stopWhenTooSlow = false;   // the wall-clock guard below: for a window, never headless
+    bool stopWhenTooSlow = false; // the wall-clock guard below: for a window, never headless
 };
 
 // The most balls a scene can hold (Up in the crowd scene stops here too).
@@ -149,9 +149,9 @@ private:
     float fireAngle = 0.f;
     float collisionMilliseconds = 0.f; // CPU time in findPairsAndRespond, averaged over steps
     float printTimingSeconds = 0.f;
-    StepTiming stepTiming;             // every collision step since the last timing line
-    float secondsSincePrint = 0.f;     // simulated
-    std::size_t replayedContacts = 0;  // the exact tests timed apart (recordStepTime)
+    StepTiming stepTiming;            // every collision step since the last timing line
+    float secondsSincePrint = 0.f;    // simulated
+    std::size_t replayedContacts = 0; // the exact tests timed apart (recordStepTime)
     bool stopWhenTooSlow = false;
     int threads = 2;
 

@@ -17,8 +17,8 @@
 
 int main(int argc, char* argv[])
 {
-    const hitbox::ProgramInfo info{"Lab 8 - Many objects",
-                                   {"--balls", "--method", "--scene", "--print-timing", "--threads"}};
+    const hitbox::ProgramInfo info{
+        "Lab 8 - Many objects", {"--balls", "--method", "--scene", "--print-timing", "--threads"}};
     return hitbox::run(
         argc, argv, info,
         [](const hitbox::Options& options)

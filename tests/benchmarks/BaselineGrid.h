@@ -24,7 +24,6 @@ using hitbox::BroadphaseLayout;
 using hitbox::BroadphaseStats;
 using hitbox::Pair;
 
-
 class BaselineGrid : public Broadphase
 {
 public:

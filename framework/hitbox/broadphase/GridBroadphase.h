@@ -106,7 +106,7 @@ private:
         bool anyRules = false;
         std::vector<std::uint32_t> cursor;      // per cell: this half's count, then where it fills
         std::size_t firstCell = 0, endCell = 0; // the cells this half tests
-        std::unique_ptr<Pair[]> found; // foundRoom pairs; the first foundCount are real
+        std::unique_ptr<Pair[]> found;          // foundRoom pairs; the first foundCount are real
         std::size_t foundRoom = 0;
         std::size_t foundCount = 0;
     };

@@ -28,8 +28,10 @@ double threadCpuSeconds()
     if (GetThreadTimes(GetCurrentThread(), &created, &exited, &kernel, &user))
     {
         // FILETIME counts 100-nanosecond units in two 32-bit halves.
-        auto ticks = [](const FILETIME& time)
-        { return (static_cast<unsigned long long>(time.dwHighDateTime) << 32) | time.dwLowDateTime; };
+        auto ticks = [](const FILETIME& time) {
+            return (static_cast<unsigned long long>(time.dwHighDateTime) << 32) |
+                   time.dwLowDateTime;
+        };
         return static_cast<double>(ticks(kernel) + ticks(user)) * 1e-7;
     }
 #elif defined(HITBOX_THREAD_CPU_POSIX)
