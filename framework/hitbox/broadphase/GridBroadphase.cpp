@@ -457,9 +457,10 @@ void GridBroadphase::testCells(Half& half)
                 const int less = _mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(&boxes[q].minX), query));
                 const bool overlap = less == 0xF;
 #else
-                const Edges& b = boxes[q];
-                const bool overlap = (b.minX < query.minX) & (b.minY < query.minY) &
-                                     (b.negMaxX < query.negMaxX) & (b.negMaxY < query.negMaxY);
+                const Edges& other = boxes[q];
+                const bool overlap = (other.minX < query.minX) & (other.minY < query.minY) &
+                                     (other.negMaxX < query.negMaxX) &
+                                     (other.negMaxY < query.negMaxY);
 #endif
                 // Each pair once: only the top-left cell two boxes share reports them.
                 const std::uint32_t b = items[q];
