@@ -2,7 +2,6 @@
 
 #include "Rules.h"
 
-#include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/broadphase/ThreadCpuTime.h"
@@ -47,9 +46,6 @@ const float pickupDrag = 1.5f; // per second: a knocked pickup slides to a stop
 // [ and ] halve or double the grid's cell, between these multiples of the framework's rule.
 const float smallestGridCellScale = 0.25f;
 const float largestGridCellScale = 4.f;
-
-// What one step may cost to keep up with the fixed step: 1000 / 120 = 8.33 ms.
-const double stepBudgetMilliseconds = 1000.0 / double(hitbox::stepsPerSecond);
 
 hitbox::Vec2 fromAngle(float angle, float length)
 {

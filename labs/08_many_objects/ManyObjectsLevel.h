@@ -15,6 +15,7 @@
 #include "StepTiming.h"
 #include "TimedBroadphase.h"
 
+#include "hitbox/app/App.h"
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/broadphase/Broadphase.h"
@@ -47,6 +48,10 @@ struct LabSettings
     int threads = 2;
     bool stopWhenTooSlow = false; // the wall-clock guard below: for a window, never headless
 };
+
+// What one collision step may cost to keep up with the fixed step: 1000 / 120 = 8.33 ms of
+// CPU time (--print-timing counts the steps over it).
+constexpr double stepBudgetMilliseconds = 1000.0 / double(hitbox::stepsPerSecond);
 
 // The most balls a scene can hold (Up in the crowd scene stops here too).
 constexpr int maxBalls = 100000;
