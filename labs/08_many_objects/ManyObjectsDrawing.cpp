@@ -33,11 +33,6 @@ const hitbox::Box tableArea{660.f, 60.f, 500.f, 500.f};
 // Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
 // that size nobody can tell.
 const float squareBelowRadius = 2.5f;
-// Up to this radius a disc is a hexagon (6 triangles), up to bigDiscRadius 12, above it 32:
-// at 10,000 balls (radius about 3 px) the software renderer under Xvfb spent most of a frame
-// on the balls' triangles, and a 3-pixel hexagon looks round.
-const float hexagonUpToRadius = 5.f;
-const float bigDiscRadius = 15.f;
 // Above this many balls the debug view draws the grid's lines but not its busy cells: at
 // 10,000 balls that is thousands of outlines, most of the grid, and the software renderer
 // drew 4 frames a second instead of 17 (docs/performance.md).
@@ -80,7 +75,7 @@ void addQuad(sf::VertexArray& vertices, const hitbox::Box& box, sf::Color color)
 
 void addDisc(sf::VertexArray& vertices, sf::Vector2f center, float radius, sf::Color color)
 {
-    const int segments = radius > bigDiscRadius ? 32 : radius > hexagonUpToRadius ? 12 : 6;
+    const int segments = radius > 15.f ? 32 : 12;
     const float step = 2.f * hitbox::pi / static_cast<float>(segments);
     sf::Vector2f previous = center + sf::Vector2f(radius, 0.f);
     for (int i = 1; i <= segments; ++i)

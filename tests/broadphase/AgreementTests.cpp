@@ -222,15 +222,15 @@ TEST(GridBroadphase, AgreesWithBruteForceOnBoxesTooSmallToDivideBy)
 namespace
 {
 
-// 40,000 drifting boxes, above the grid's two-thread threshold: one thread and two must give
+// 24,000 drifting boxes, above the grid's two-thread threshold: one thread and two must give
 // the same pairs in the same order (cell order and sorted), every frame, and the same pairs
 // as sort and sweep, an unrelated method.
 TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
 {
     std::mt19937 random(31);
-    std::vector<BroadphaseItem> items = scenes::make(scenes::Kind::Scattered, 40000, false, random);
+    std::vector<BroadphaseItem> items = scenes::make(scenes::Kind::Scattered, 24000, false, random);
     // Spread them out so each box has a few neighbours, as in a game (Scenes packs 120).
-    std::uniform_real_distribution<float> where(0.f, 4000.f);
+    std::uniform_real_distribution<float> where(0.f, 3100.f);
     for (BroadphaseItem& item : items)
         item.box.left = where(random), item.box.top = where(random);
     ASSERT_GE(items.size(), hitbox::kGridTwoThreadsFromItems);
