@@ -13,6 +13,7 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Graphics/Text.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -32,6 +33,10 @@ const hitbox::Box tableArea{660.f, 60.f, 500.f, 500.f};
 // Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
 // that size nobody can tell.
 const float squareBelowRadius = 2.5f;
+// Above this many balls the debug view draws the grid's lines but not its busy cells: at
+// 10,000 balls that is thousands of outlines, most of the grid, and the software renderer
+// drew 4 frames a second instead of 17 (docs/performance.md).
+const std::size_t busyCellsUpToBalls = 3000;
 
 sf::Color colorOf(const Ball& ball)
 {
@@ -229,7 +234,7 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
         lines += "pairs tested: " + withCommas(getPairsTested()) +
                  "    boxes overlapping: " + withCommas(candidatePairs.size()) +
                  "    circles touching: " + withCommas(contacts) + "\n";
-        lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms per step";
+        lines += "collision: " + fixed(collisionMilliseconds, 2) + " ms CPU per step";
         if (stepsMeasured > 1)
             lines += "    real time: " + fixed(realStepMilliseconds, 1) + " ms per step";
         lines += "\n";
@@ -260,10 +265,11 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
 std::string ManyObjectsLevel::timingLine() const
 {
     return "timing: " + std::string(methodLabel(method)) + ", " + std::to_string(balls.size()) +
-           " balls: " + std::to_string(getPairsTested()) + " pairs tested, " +
-           std::to_string(candidatePairs.size()) + " overlapping, collision " +
-           fixed(collisionMilliseconds, 2) + " ms/step, real time " +
-           fixed(realStepMilliseconds, 1) + " ms/step" +
+           " balls, " + std::to_string(threads) + (threads == 1 ? " thread: " : " threads: ") +
+           std::to_string(getPairsTested()) + " pairs tested, " +
+           std::to_string(candidatePairs.size()) + " overlapping; " +
+           describeTiming(getTimingSummary(), stepBudgetMilliseconds) + "; real time " +
+           fixed(realStepMilliseconds, 1) + " ms/step (wall clock)" +
            (bruteForceSkipped ? " (brute force skipped)" : "") +
            (stoppedAsTooSlow ? " (stopped: too slow)" : "");
 }
@@ -271,7 +277,12 @@ std::string ManyObjectsLevel::timingLine() const
 void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     if (scene != Scene::PairTable && !bruteForceSkipped && !stoppedAsTooSlow)
-        hitbox::drawBroadphase(debug, broadphase->layout());
+    {
+        hitbox::BroadphaseLayout layout = broadphase->layout();
+        if (balls.size() > busyCellsUpToBalls)
+            std::fill(layout.boxesPerCell.begin(), layout.boxesPerCell.end(), 0u);
+        hitbox::drawBroadphase(debug, layout);
+    }
     // The boxes the pair loop compares, for the scenes small enough to read them.
     if (balls.size() <= 300)
         for (const Ball& ball : balls)

@@ -4,6 +4,7 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/broadphase/GridBroadphase.h"
+#include "hitbox/broadphase/ThreadCpuTime.h"
 #include "hitbox/geometry/Overlap.h"
 
 #include <algorithm>
@@ -55,7 +56,8 @@ hitbox::Vec2 fromAngle(float angle, float length)
 
 ManyObjectsLevel::ManyObjectsLevel(const LabSettings& settings)
     : method(settings.method), random(settings.seed),
-      printTimingSeconds(settings.printTimingSeconds), stopWhenTooSlow(settings.stopWhenTooSlow)
+      printTimingSeconds(settings.printTimingSeconds), stopWhenTooSlow(settings.stopWhenTooSlow),
+      threads(settings.threads)
 {
     startScene(settings.scene, settings.balls);
 }
@@ -94,9 +96,10 @@ void ManyObjectsLevel::rebuildBroadphase()
 {
     stoppedAsTooSlow = false;
     collisionMilliseconds = 0.f;
+    stepTiming.clear();
     if (method != hitbox::BroadphaseMethod::Grid)
     {
-        broadphase = hitbox::makeBroadphase(method);
+        broadphase = std::make_unique<TimedBroadphase>(hitbox::makeBroadphase(method));
         return;
     }
     // The grid's cell follows the balls' size (the framework's rule, gridCellSizeFor), so a
@@ -108,7 +111,27 @@ void ManyObjectsLevel::rebuildBroadphase()
         widths += 2.f * ball.radius;
     const float averageWidth = balls.empty() ? 10.f : widths / static_cast<float>(balls.size());
     gridCellSize = static_cast<float>(hitbox::gridCellSizeFor(averageWidth)) * gridCellScale;
-    broadphase = std::make_unique<hitbox::GridBroadphase>(gridCellSize);
+    // Pairs in cell order: the lab responds to each pair once and needs no particular order,
+    // and the grid skips sorting them (docs/performance.md).
+    hitbox::GridSettings grid;
+    grid.cellSize = gridCellSize;
+    grid.order = hitbox::PairOrder::CellOrder;
+    grid.threads = threads;
+    broadphase = std::make_unique<TimedBroadphase>(std::make_unique<hitbox::GridBroadphase>(grid));
+    warmUpBroadphase();
+}
+
+// The grid's first frames allocate its buffers (megabytes at 100,000 balls) and choose its
+// shape: done here, when the scene starts, as a game does while loading, so that no step
+// pays for it (the first step cost about 12 ms at 100,000 balls instead of about 4).
+void ManyObjectsLevel::warmUpBroadphase()
+{
+    items.clear();
+    for (const Ball& ball : balls)
+        items.push_back(ball.item());
+    std::vector<hitbox::Pair> unused;
+    for (int frame = 0; frame < 2; ++frame)
+        broadphase->findPairs(items, unused);
 }
 
 Ball ManyObjectsLevel::makeBall(hitbox::Vec2 position, hitbox::Vec2 velocity, float radius,
@@ -307,16 +330,47 @@ void ManyObjectsLevel::measureRealTime()
         realStepMilliseconds +=
             (milliseconds - realStepMilliseconds) / (stepsMeasured < 10 ? 2.f : 30.f);
     ++stepsMeasured;
-    if (printTimingSeconds > 0.f && printClock.getElapsedTime().asSeconds() >= printTimingSeconds)
+}
+
+// One collision step's CPU time. With --print-timing the exact tests are also timed apart:
+// the same circle tests again on this step's pairs, outside the step's own time, because
+// timing each test inside the loop would cost more than the test. Every printTimingSeconds of
+// simulated time, a line with the figures since the last one.
+void ManyObjectsLevel::recordStepTime(double cpuSeconds)
+{
+    StepSample sample;
+    sample.total = cpuSeconds;
+    sample.broadphase = broadphase->lastSeconds();
+    if (printTimingSeconds > 0.f)
     {
-        printClock.restart();
-        std::cout << timingLine() << std::endl;
+        const double begin = hitbox::threadCpuSeconds();
+        std::size_t touching = 0;
+        for (const hitbox::Pair& pair : candidatePairs)
+            touching += hitbox::circleVsCircleContact(balls[pair.first].circle(),
+                                                      balls[pair.second].circle())
+                            .hit;
+        sample.exactTests = hitbox::threadCpuSeconds() - begin;
+        replayedContacts = touching; // kept, so the compiler cannot drop the loop
     }
+    stepTiming.add(sample);
+    collisionMilliseconds += (float(cpuSeconds * 1000.0) - collisionMilliseconds) / 30.f;
+}
+
+TimingSummary ManyObjectsLevel::getTimingSummary() const
+{
+    return stepTiming.summarise(stepBudgetMilliseconds);
 }
 
 void ManyObjectsLevel::update(float dt)
 {
     measureRealTime();
+    secondsSincePrint += dt;
+    if (printTimingSeconds > 0.f && secondsSincePrint >= printTimingSeconds)
+    {
+        secondsSincePrint = 0.f;
+        std::cout << timingLine() << std::endl;
+        stepTiming.clear();
+    }
     if (scene == Scene::Layers)
         applyLayersSceneRules(dt);
     moveBalls(dt);
@@ -338,11 +392,12 @@ void ManyObjectsLevel::update(float dt)
         candidatePairs.clear();
         return;
     }
-    const sf::Clock clock;
+    // CPU time, so the figure does not depend on what else the machine runs; a second grid
+    // thread's time beyond this one's is added (TimedBroadphase).
+    const double begin = hitbox::threadCpuSeconds();
     findPairsAndRespond();
-    // Averaged over about 30 steps so the readout is steady enough to read.
-    const float milliseconds = clock.getElapsedTime().asSeconds() * 1000.f;
-    collisionMilliseconds += (milliseconds - collisionMilliseconds) / 30.f;
+    recordStepTime(hitbox::threadCpuSeconds() - begin + broadphase->lastWorkerExtraSeconds());
+    // collisionMilliseconds is averaged over about 30 steps so the readout is steady enough.
     stoppedAsTooSlow = stopWhenTooSlow && collisionMilliseconds > slowStepMilliseconds;
 }
 

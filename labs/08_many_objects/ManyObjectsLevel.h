@@ -12,7 +12,10 @@
 
 #include "Ball.h"
 #include "PairTable.h"
+#include "StepTiming.h"
+#include "TimedBroadphase.h"
 
+#include "hitbox/app/App.h"
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/broadphase/Broadphase.h"
@@ -38,9 +41,17 @@ struct LabSettings
     int balls = 1000; // crowd: any count; pair table: 2 to 24
     hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
     unsigned seed = 1;
-    float printTimingSeconds = 0.f; // > 0: print a timing line this often (window only)
-    bool stopWhenTooSlow = false;   // the wall-clock guard below: for a window, never headless
+    // > 0: print a timing line every this many simulated seconds (window or --headless).
+    float printTimingSeconds = 0.f;
+    // The grid's threads: 1 or 2 (2 splits it in halves from 20,000 balls, see GridSettings).
+    // Both give the same pairs in the same order, so the same balls step after step.
+    int threads = 2;
+    bool stopWhenTooSlow = false; // the wall-clock guard below: for a window, never headless
 };
+
+// What one collision step may cost to keep up with the fixed step: 1000 / 120 = 8.33 ms of
+// CPU time (--print-timing counts the steps over it).
+constexpr double stepBudgetMilliseconds = 1000.0 / double(hitbox::stepsPerSecond);
 
 // The most balls a scene can hold (Up in the crowd scene stops here too).
 constexpr int maxBalls = 100000;
@@ -56,8 +67,8 @@ constexpr int bruteForceBallLimit = 1000;
 #endif
 
 // In a window (LabSettings::stopWhenTooSlow), any method whose collision step averages more
-// than this stops until the method or the number of balls changes: at 120 steps a second the
-// window would hardly move. Headless runs never look at the clock, so their results are the
+// than this (CPU time) stops until the method or the number of balls changes: at 120 steps a
+// second the window would hardly move. Headless runs never stop, so their results are the
 // same on every machine. (It cannot
 // happen in a test's few steps: the average starts at 0 and needs a dozen slow steps.)
 constexpr float slowStepMilliseconds = 40.f;
@@ -92,6 +103,9 @@ public:
     bool isBruteForceSkipped() const;
     // True when the method was stopped for being too slow (see slowStepMilliseconds).
     bool isStoppedAsTooSlow() const;
+    // CPU time of the collision steps since the last timing line (all of them without
+    // --print-timing), against the budget of one step.
+    TimingSummary getTimingSummary() const;
     // The table your loop filled this step (pair table scene only).
     const PairTable& getPairTable() const;
     // Since the scene started: responses the rules forbid (both must stay 0 with task 3).
@@ -109,6 +123,7 @@ private:
     void applyLayersSceneRules(float dt);
     void moveBalls(float dt);
     void rebuildBroadphase();
+    void warmUpBroadphase();
     void findPairsAndRespond();
     void respond(Ball& a, Ball& b, const hitbox::Contact& contact);
 
@@ -116,12 +131,13 @@ private:
     void drawPairTable(sf::RenderTarget& target) const;
     void drawReadout(sf::RenderTarget& target) const;
     void measureRealTime();
+    void recordStepTime(double cpuSeconds);
     // The readout's numbers on one line, for --print-timing.
     std::string timingLine() const;
 
     Scene scene = Scene::Crowd;
     hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
-    std::unique_ptr<hitbox::Broadphase> broadphase;
+    std::unique_ptr<TimedBroadphase> broadphase; // the method, measuring its own CPU time
     std::mt19937 random;
     std::vector<Ball> balls;
     std::vector<hitbox::BroadphaseItem> items; // balls[i].item(), rebuilt every step
@@ -136,15 +152,18 @@ private:
     float gridCellSize = 0.f;
     float fireTimer = 0.f;
     float fireAngle = 0.f;
-    float collisionMilliseconds = 0.f; // time in findPairsAndRespond, averaged over steps
+    float collisionMilliseconds = 0.f; // CPU time in findPairsAndRespond, averaged over steps
     float printTimingSeconds = 0.f;
+    StepTiming stepTiming;            // every collision step since the last timing line
+    float secondsSincePrint = 0.f;    // simulated
+    std::size_t replayedContacts = 0; // the exact tests timed apart (recordStepTime)
     bool stopWhenTooSlow = false;
+    int threads = 2;
 
     // Real time, measured in update(): the readout shows it, --print-timing prints it.
     sf::Clock stepClock;              // restarted by every update()
     float realStepMilliseconds = 0.f; // real time per simulated step, drawing included
     int stepsMeasured = 0;
-    sf::Clock printClock; // since the last timing line was printed
 
     hitbox::LazyFont font; // read by the first render(): tests need no font file
 };

@@ -4,15 +4,26 @@
 //   ns_per_box  - frame time / N: flat across N means the method scales linearly
 // Box2DTree/<N> is Box2D 2.4.1's b2DynamicTree used the way a Box2D user would: one proxy per
 // box, MoveProxy every frame, then Query each box's AABB and keep each overlapping pair once.
+// BaselineGrid/<N> is the grid as it was before issue 31 (BaselineGrid.h), kept so the new
+// grid's speed-up is a ratio measured in the same run. Grid/<N> is today's grid as the World
+// uses it (pairs sorted, one thread), GridCellOrder/<N> leaves the pairs in cell order and
+// GridTwoThreads/<N> also splits the work over two threads (its CPU time counts both threads;
+// its wall time is the "Time" column). Before timing, each grid's pairs are checked against
+// the baseline's, as a set: a benchmark whose pairs differ stops with an error.
 // Results, machine and the exact command: docs/performance.md.
+#include "BaselineGrid.h"
 #include "MovingBoxes.h"
 
 #include "hitbox/broadphase/Broadphase.h"
+#include "hitbox/broadphase/GridBroadphase.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <ctime>
+#include <memory>
+#include <vector>
 
 #ifdef HITBOX_HAVE_BOX2D
 #include <box2d/b2_dynamic_tree.h>
@@ -42,13 +53,41 @@ private:
     std::clock_t start;
 };
 
-void runBroadphase(benchmark::State& state, hitbox::BroadphaseMethod method)
+// The pairs as a set: sorted, so two lists in different orders compare equal.
+std::vector<std::uint64_t> asSet(const std::vector<hitbox::Pair>& pairs)
+{
+    std::vector<std::uint64_t> keys;
+    keys.reserve(pairs.size());
+    for (const hitbox::Pair& pair : pairs)
+        keys.push_back(std::uint64_t(pair.first) << 32 | pair.second);
+    std::sort(keys.begin(), keys.end());
+    return keys;
+}
+
+void runBroadphase(benchmark::State& state, std::unique_ptr<hitbox::Broadphase> broadphase)
 {
     const std::size_t count = static_cast<std::size_t>(state.range(0));
     MovingBoxes boxes(count, kSeed);
-    std::unique_ptr<hitbox::Broadphase> broadphase = hitbox::makeBroadphase(method);
     std::vector<hitbox::Pair> pairs;
     broadphase->findPairs(boxes.items, pairs); // warm up: buffers reach their size
+    {
+        // Same pairs as the baseline grid, three frames in a row (the grid keeps state).
+        MovingBoxes check(count, kSeed + 1);
+        bench::BaselineGrid baseline;
+        std::vector<hitbox::Pair> expected;
+        for (int frame = 0; frame < 3; ++frame)
+        {
+            check.step();
+            baseline.findPairs(check.items, expected);
+            broadphase->findPairs(check.items, pairs);
+            if (asSet(pairs) != asSet(expected))
+            {
+                state.SkipWithError("pairs differ from BaselineGrid's");
+                return;
+            }
+        }
+        broadphase->findPairs(boxes.items, pairs);
+    }
     std::size_t firstFramePairs = 0;
     FrameClock clock;
     for (auto _ : state)
@@ -65,19 +104,36 @@ void runBroadphase(benchmark::State& state, hitbox::BroadphaseMethod method)
 
 void BruteForce(benchmark::State& state)
 {
-    runBroadphase(state, hitbox::BroadphaseMethod::BruteForce);
+    runBroadphase(state, hitbox::makeBroadphase(hitbox::BroadphaseMethod::BruteForce));
 }
 void SortAndSweep(benchmark::State& state)
 {
-    runBroadphase(state, hitbox::BroadphaseMethod::SortAndSweep);
+    runBroadphase(state, hitbox::makeBroadphase(hitbox::BroadphaseMethod::SortAndSweep));
+}
+void BaselineGrid(benchmark::State& state)
+{
+    runBroadphase(state, std::make_unique<bench::BaselineGrid>());
 }
 void Grid(benchmark::State& state)
 {
-    runBroadphase(state, hitbox::BroadphaseMethod::Grid);
+    runBroadphase(state, hitbox::makeBroadphase(hitbox::BroadphaseMethod::Grid));
+}
+void GridCellOrder(benchmark::State& state)
+{
+    hitbox::GridSettings settings;
+    settings.order = hitbox::PairOrder::CellOrder;
+    runBroadphase(state, std::make_unique<hitbox::GridBroadphase>(settings));
+}
+void GridTwoThreads(benchmark::State& state)
+{
+    hitbox::GridSettings settings;
+    settings.order = hitbox::PairOrder::CellOrder;
+    settings.threads = 2;
+    runBroadphase(state, std::make_unique<hitbox::GridBroadphase>(settings));
 }
 void Quadtree(benchmark::State& state)
 {
-    runBroadphase(state, hitbox::BroadphaseMethod::Quadtree);
+    runBroadphase(state, hitbox::makeBroadphase(hitbox::BroadphaseMethod::Quadtree));
 }
 
 #ifdef HITBOX_HAVE_BOX2D
@@ -158,7 +214,10 @@ void sizes(benchmark::internal::Benchmark* benchmark)
 
 } // namespace
 
+BENCHMARK(BaselineGrid)->Apply(sizes);
 BENCHMARK(Grid)->Apply(sizes);
+BENCHMARK(GridCellOrder)->Apply(sizes);
+BENCHMARK(GridTwoThreads)->Apply(sizes);
 BENCHMARK(SortAndSweep)->Apply(sizes);
 BENCHMARK(Quadtree)->Apply(sizes);
 #ifdef HITBOX_HAVE_BOX2D

@@ -1,8 +1,33 @@
+// The grid's tricks, each named once here and measured in docs/performance.md:
+//   - Negated-max edges: a box is stored as (minX, minY, -maxX, -maxY), so one four-wide
+//     "less than" (SSE) tests a pair on both axes; a scalar version of the same four compares
+//     is compiled where SSE is missing (ARM, 32-bit x86 without SSE2).
+//   - One preparation pass: loading a box, its share of the grid's bounds and average size,
+//     its cells and the count of its cells happen in one walk over the items.
+//   - Last frame's grid: the cells are worked out with last frame's grid and only worked out
+//     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
+//   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
+//   - Split entries: 16 aligned bytes of edges plus a 4-byte item word in a second array.
+//   - Pairs in cell order: no sort when the caller does not need (first, second) order.
+//   - Two halves: with two threads, each half of the items is prepared and filled in by one
+//     thread, and each half of the cells tested by one; the halves never change the result.
 #include "hitbox/broadphase/GridBroadphase.h"
+
+#include "hitbox/broadphase/BoxArrays.h"
+#include "hitbox/broadphase/ThreadCpuTime.h"
+#include "hitbox/geometry/Shapes.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <system_error>
+#include <thread>
+
+#if defined(__SSE2__) || defined(_M_X64) || defined(_M_AMD64)
+#include <emmintrin.h>
+#define HITBOX_GRID_SSE 1
+#endif
 
 namespace hitbox
 {
@@ -14,6 +39,8 @@ namespace
 constexpr double kMaxCellsPerItem = 4.0;
 // Far below anything a game uses, and 1 / this is still a float.
 constexpr double kSmallestCellSize = 1e-30;
+// Last frame's grid is kept while the ideal cell is within this factor of it.
+constexpr double kKeepCellWithin = 1.25;
 
 // Branch-free select: `oneOrZero ? ifOne : ifZero` with bit masks. Where g++ 12 compiles the
 // `?:` to a jump, the CPU has to guess it, and a wrong guess costs more than these three steps.
@@ -24,45 +51,253 @@ inline std::uint32_t selectWithoutBranch(std::uint32_t oneOrZero, std::uint32_t 
     return (ifOne & keep) | (ifZero & ~keep);
 }
 
+// The same for cell numbers.
+inline std::size_t pickWithoutBranch(std::size_t oneOrZero, std::size_t ifOne, std::size_t ifZero)
+{
+    const std::size_t keep = std::size_t(0) - oneOrZero;
+    return (ifOne & keep) | (ifZero & ~keep);
+}
+
+// Resizes `buffer` to `size`, growing its memory by a quarter more than asked when it must
+// grow, so boxes that crowd a little more each frame do not make it copy itself every frame.
+template <typename T>
+void growWithRoom(std::vector<T>& buffer, std::size_t size)
+{
+    if (buffer.capacity() < size)
+        buffer.reserve(size + size / 4);
+    buffer.resize(size);
+}
+
+// Runs work(0) and work(1), on two threads when `twoThreads`, and returns how many CPU seconds
+// the second thread spent beyond the first (0 on one thread). If no thread can be started, the
+// calling thread does both halves: the result is the same.
+template <typename Work>
+double runHalves(bool twoThreads, Work work)
+{
+    if (!twoThreads)
+    {
+        work(0);
+        work(1);
+        return 0.0;
+    }
+    double workerSeconds = 0.0;
+    std::thread worker;
+    try
+    {
+        worker = std::thread(
+            [&work, &workerSeconds]
+            {
+                const double begin = threadCpuSeconds();
+                work(1);
+                workerSeconds = threadCpuSeconds() - begin;
+            });
+    }
+    catch (const std::system_error&)
+    {
+        work(0);
+        work(1);
+        return 0.0;
+    }
+    const double begin = threadCpuSeconds();
+    work(0);
+    const double ownSeconds = threadCpuSeconds() - begin;
+    worker.join();
+    return std::max(0.0, workerSeconds - ownSeconds);
+}
+
+// Calls visit(target, covered, flags) for each cell of the range: target = row * width +
+// column, flags = the entry's kFirstColumnFlag / kFirstRowFlag.
+// Loop-free listing: small boxes get four calls. Most boxes cover one cell, two (side by side
+// or one above the other) or 2 x 2, and all of them get the same four calls, so the caller
+// needs no branch: a call for a column or row the box does not reach has covered = 0 and a
+// target of its own, a dummy counter past the grid's cells (dummies + 0, 1 or 2; the caller
+// keeps three spare counters there). Why: whether the next box crosses a column border (one
+// time in three for an average box) or a row border is unpredictable, and the CPU's wrong
+// guesses cost more than the extra calls. Why dummies rather than naming the box's own cell
+// again: four read-modify-writes of one counter in a row each wait for the one before.
+// Bigger boxes get one call per cell they cover. Measured: docs/performance.md.
+template <typename Range, typename Visit>
+inline void forEachCell(const Range& range, std::size_t width, std::size_t dummies,
+                        std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
+{
+    // 1 if the box reaches the next column (row), 0 if not. Empty-range wrap-around: for an
+    // empty range (x1 = x0 - 1) the unsigned -1 is the largest size_t, so it fails `<= 1` and
+    // takes the loops below, which run zero times: no extra test for empty ranges.
+    const std::size_t right = std::size_t(range.x1 - range.x0);
+    const std::size_t down = std::size_t(range.y1 - range.y0);
+    const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
+    if (right <= 1 && down <= 1)
+    {
+        const std::size_t both = right & down;
+        // The cell below and to the right is covered only if the box reaches both.
+        visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
+        visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
+        visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
+        visit(cell, 1u, firstColumn | firstRow);
+        return;
+    }
+    for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
+        for (int cx = range.x0; cx <= range.x1; ++cx)
+            visit(std::size_t(cy) * width + std::size_t(cx), 1u,
+                  (cx == range.x0 ? firstColumn : 0u) | (cy == range.y0 ? firstRow : 0u));
+}
+
+// The three dummy counters forEachCell uses, after the grid's cells.
+constexpr std::size_t kDummyCounters = 3;
+
 } // namespace
 
-GridBroadphase::GridBroadphase(float cellSize) : fixedCellSize(cellSize) {}
+GridBroadphase::GridBroadphase(float cellSize) : GridBroadphase(GridSettings{cellSize}) {}
 
-void GridBroadphase::chooseGrid()
+GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(settings) {}
+
+// Which cells a box covers under a grid: the grid's numbers copied once into a small struct,
+// so the loops keep them in registers (the compiler cannot tell that writing an entry leaves
+// the members unchanged, and would read them again for every box).
+struct GridBroadphase::CellFinder
 {
-    const std::size_t count = boxes.size();
-    // A box edge can be +-infinity when left + width overflowed; the grid only needs
-    // finite numbers (boxes beyond it land in its edge cells).
+    float originX, originY, scale, lastColumn, lastRow;
+    std::size_t width, cellCount;
+
+    explicit CellFinder(const Shape& shape)
+        : originX(shape.originX), originY(shape.originY), scale(1.f / shape.cell),
+          lastColumn(static_cast<float>(shape.columns - 1)),
+          lastRow(static_cast<float>(shape.rows - 1)), width(std::size_t(shape.columns)),
+          cellCount(width * std::size_t(shape.rows))
+    {
+    }
+    // [slide:grid-cells]
+    // Which cells does a box cover? Divide by the cell size and round down. Clamping to the
+    // grid keeps the answer monotonic (a box further right never gets a smaller column), so
+    // two overlapping boxes always share a cell, even boxes outside the grid.
+    int column(float x) const
+    {
+        return static_cast<int>(std::clamp((x - originX) * scale, 0.f, lastColumn));
+    }
+    int row(float y) const
+    {
+        return static_cast<int>(std::clamp((y - originY) * scale, 0.f, lastRow));
+    }
+    // [/slide]
+    CellRange cellsOf(const Edges& box) const
+    {
+        const bool usable = box.minX <= -box.negMaxX && box.minY <= -box.negMaxY;
+        return usable ? CellRange{column(box.minX), column(-box.negMaxX), row(box.minY),
+                                  row(-box.negMaxY)}
+                      : CellRange{1, 0, 1, 0}; // an empty range: listed in no cell
+    }
+    // [slide:grid-insert]
+    // A counting sort: count each cell's boxes, add up the counts so each cell knows where its
+    // boxes go, then drop each box in. No hashing and no list per cell: one array holds every
+    // cell's boxes back to back, reused every frame.
+    void count(const CellRange& range, std::uint32_t* counts) const
+    {
+        forEachCell(range, width, cellCount, 0u, 0u,
+                    [counts](std::size_t target, std::uint32_t, std::uint32_t)
+                    { ++counts[target]; });
+    }
+    // [/slide]
+};
+
+void GridBroadphase::prepare(Half& half)
+{
+    // One preparation pass: the box the tests use, the grid's bounds and average size, and
+    // (with last frame's grid) the box's cells and their counts, in one walk over the items.
+    const BroadphaseItem* source = currentItems;
+    Edges* out = edges.data();
+    CellRange* outRanges = ranges.data();
+    const CellFinder finder(shape);
+    const bool count = hasShape;
+    if (count)
+        half.cursor.assign(std::size_t(shape.columns) * std::size_t(shape.rows) + kDummyCounters,
+                           0);
+    std::uint32_t* counts = half.cursor.data();
+    const float inf = std::numeric_limits<float>::infinity();
+    // A box edge can be +-infinity when left + width overflowed; the grid only needs finite
+    // numbers (boxes beyond it land in its edge cells).
     const float largest = std::numeric_limits<float>::max();
-    auto finite = [largest](float value) { return std::clamp(value, -largest, largest); };
-    float left = 0.f, top = 0.f, right = 0.f, bottom = 0.f;
+    float left = inf, top = inf, right = -inf, bottom = -inf;
     double sideSum = 0.0;
     std::size_t usable = 0;
-    for (std::size_t i = 0; i < count; ++i)
+    std::uint32_t rules = 0;
+    for (std::size_t i = half.begin; i < half.end; ++i)
     {
-        if (!boxes.isUsable(i))
-            continue;
-        const float minX = finite(boxes.minX[i]), maxX = finite(boxes.maxX[i]);
-        const float minY = finite(boxes.minY[i]), maxY = finite(boxes.maxY[i]);
-        if (usable == 0)
+        const BroadphaseItem& item = source[i];
+        rules |= ~item.mask | std::uint32_t(item.layer == 0);
+        const Box& box = item.box;
+        Edges edge = {inf, inf, inf, inf}; // min = +inf, max = -inf: overlaps nothing
+        // All four finite, in one test: x - x is 0 for a finite x and NaN for NaN or
+        // infinity, and NaN spreads through the sum (four isfinite calls were four branches).
+        const float zeroIfFinite = (box.left - box.left) + (box.top - box.top) +
+                                   (box.width - box.width) + (box.height - box.height);
+        if (zeroIfFinite == 0.f)
         {
-            left = minX;
-            top = minY;
-            right = maxX;
-            bottom = maxY;
+            // The same arithmetic as boxVsBox (normalised(), then left + width), so the
+            // broadphase and the exact test agree to the last bit, even at huge coordinates.
+            const Box upright = normalised(box);
+            const float maxX = upright.left + upright.width;
+            const float maxY = upright.top + upright.height;
+            edge = {upright.left, upright.top, -maxX, -maxY};
+            const float minXFinite = std::clamp(upright.left, -largest, largest);
+            const float minYFinite = std::clamp(upright.top, -largest, largest);
+            const float maxXFinite = std::clamp(maxX, -largest, largest);
+            const float maxYFinite = std::clamp(maxY, -largest, largest);
+            left = std::min(left, minXFinite);
+            top = std::min(top, minYFinite);
+            right = std::max(right, maxXFinite);
+            bottom = std::max(bottom, maxYFinite);
+            sideSum +=
+                0.5 * ((double(maxXFinite) - minXFinite) + (double(maxYFinite) - minYFinite));
+            ++usable;
         }
-        left = std::min(left, minX);
-        top = std::min(top, minY);
-        right = std::max(right, maxX);
-        bottom = std::max(bottom, maxY);
-        sideSum += 0.5 * ((double(maxX) - minX) + (double(maxY) - minY));
-        ++usable;
+        out[i] = edge;
+        if (count)
+        {
+            const CellRange range = finder.cellsOf(edge);
+            outRanges[i] = range;
+            finder.count(range, counts);
+        }
     }
-    originX = left;
-    originY = top;
+    half.left = left;
+    half.top = top;
+    half.right = right;
+    half.bottom = bottom;
+    half.sideSum = sideSum;
+    half.usable = usable;
+    half.anyRules = rules != 0;
+}
+
+void GridBroadphase::countCells(Half& half)
+{
+    // The grid changed: the cells again, with the new grid.
+    half.cursor.assign(std::size_t(shape.columns) * std::size_t(shape.rows) + kDummyCounters, 0);
+    std::uint32_t* counts = half.cursor.data();
+    const CellFinder finder(shape);
+    for (std::size_t i = half.begin; i < half.end; ++i)
+    {
+        ranges[i] = finder.cellsOf(edges[i]);
+        finder.count(ranges[i], counts);
+    }
+}
+
+GridBroadphase::Shape GridBroadphase::idealShape(std::size_t count) const
+{
+    const Half& a = halves[0];
+    const Half& b = halves[1];
+    const std::size_t usable = a.usable + b.usable;
+    // Both halves' sums added in the same order with one or two threads: the same grid.
+    const double sideSum = a.sideSum + b.sideSum;
+    const float left = usable > 0 ? std::min(a.left, b.left) : 0.f;
+    const float top = usable > 0 ? std::min(a.top, b.top) : 0.f;
+    const float right = usable > 0 ? std::max(a.right, b.right) : 0.f;
+    const float bottom = usable > 0 ? std::max(a.bottom, b.bottom) : 0.f;
+    Shape ideal;
+    ideal.originX = left;
+    ideal.originY = top;
     // Work in double: the extent of boxes at +-1e38 does not fit in a float.
     const double width = double(right) - left;
     const double height = double(bottom) - top;
+    const float fixedCellSize = gridSettings.cellSize;
     double cell = fixedCellSize > 0.f ? fixedCellSize
                   : usable > 0        ? gridCellSizeFor(sideSum / double(usable))
                                       : 1.0;
@@ -84,202 +319,212 @@ void GridBroadphase::chooseGrid()
         cellsY = std::max(1.0, std::ceil(height / cell));
     }
     // [/slide]
-    columns = static_cast<int>(std::min(cellsX, maxCells));
-    rows = static_cast<int>(std::min(cellsY, std::floor(maxCells / columns) + 1.0));
-    usedCellSize = static_cast<float>(std::min(cell, double(largest)));
+    ideal.columns = static_cast<int>(std::min(cellsX, maxCells));
+    ideal.rows = static_cast<int>(std::min(cellsY, std::floor(maxCells / ideal.columns) + 1.0));
+    ideal.cell = static_cast<float>(std::min(cell, double(std::numeric_limits<float>::max())));
+    return ideal;
 }
 
-void GridBroadphase::assignCells()
+bool GridBroadphase::keepsShape(const Shape& ideal, std::size_t count) const
 {
-    const std::size_t count = boxes.size();
-    cellRanges.resize(count);
-    const float scale = 1.f / usedCellSize;
-    const float lastColumn = static_cast<float>(columns - 1);
-    const float lastRow = static_cast<float>(rows - 1);
-    // [slide:grid-cells]
-    // Which cells does a box cover? Divide by the cell size and round down. Clamping to the
-    // grid keeps the answer monotonic (a box further right never gets a smaller column), so
-    // two overlapping boxes always share a cell, even boxes outside the grid.
-    auto column = [&](float x)
-    { return static_cast<int>(std::clamp((x - originX) * scale, 0.f, lastColumn)); };
-    auto row = [&](float y)
-    { return static_cast<int>(std::clamp((y - originY) * scale, 0.f, lastRow)); };
-    // [/slide]
-    for (std::size_t i = 0; i < count; ++i)
-    {
-        if (!boxes.isUsable(i))
-            cellRanges[i] = {1, 0, 1, 0}; // an empty range: listed in no cell
-        else
-            cellRanges[i] = {column(boxes.minX[i]), column(boxes.maxX[i]), row(boxes.minY[i]),
-                             row(boxes.maxY[i])};
-    }
+    // Last frame's grid: any grid finds the right pairs (boxes outside it are clamped into its
+    // edge cells), so keep it while it is nearly as good as the ideal one: a cell size within
+    // kKeepCellWithin of the ideal, boxes no more than a cell beyond it, no more than a few
+    // cells per box. Moving boxes then need no second pass to work out their cells again.
+    if (!hasShape)
+        return false;
+    const double cell = shape.cell;
+    const double ratio = cell / double(ideal.cell);
+    if (!(ratio <= kKeepCellWithin && ratio >= 1.0 / kKeepCellWithin))
+        return false;
+    const double cells = double(shape.columns) * double(shape.rows);
+    if (cells > kMaxCellsPerItem * double(count) + 16.0)
+        return false;
+    const double gridRight = double(shape.originX) + cell * shape.columns;
+    const double gridBottom = double(shape.originY) + cell * shape.rows;
+    const double idealRight = double(ideal.originX) + double(ideal.cell) * ideal.columns;
+    const double idealBottom = double(ideal.originY) + double(ideal.cell) * ideal.rows;
+    const bool covers = ideal.originX >= shape.originX - cell &&
+                        ideal.originY >= shape.originY - cell && idealRight <= gridRight + cell &&
+                        idealBottom <= gridBottom + cell;
+    // ...and not much bigger than the boxes need (they gathered in one corner, say).
+    const bool tight = shape.columns <= ideal.columns + 2 + ideal.columns / 4 &&
+                       shape.rows <= ideal.rows + 2 + ideal.rows / 4;
+    return covers && tight;
 }
 
-// Calls visit(cell, covered, flags) for each cell of the range (cell = row * width + column;
-// flags = the entry's kFirstColumnFlag / kFirstRowFlag).
-// Four calls for small boxes: most boxes cover one cell, two (side by side or one above the
-// other) or 2 x 2, and all of them get the same four calls, so the caller needs no branch: a
-// call for a column or row the box does not reach names one of the box's own cells again, with
-// covered = 0 (add nothing, take no place). Why: whether the next box crosses a column border
-// (one time in three for an average box) or a row border is unpredictable, and the CPU's wrong
-// guesses cost more than the extra calls (measured: docs/performance.md).
-// Bigger boxes get one call per cell they cover.
-template <typename Visit>
-void GridBroadphase::forEachCell(const CellRange& range, std::size_t width, Visit visit)
+void GridBroadphase::startCells()
 {
-    // 1 if the box reaches the next column (row), 0 if not. Empty-range wrap-around: for an
-    // empty range (x1 = x0 - 1) the unsigned -1 is the largest size_t, so it fails `<= 1` and
-    // takes the loops below, which run zero times: no extra test for empty ranges.
-    const std::size_t right = std::size_t(range.x1 - range.x0);
-    const std::size_t down = std::size_t(range.y1 - range.y0);
-    const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
-    if (right <= 1 && down <= 1)
-    {
-        // The cell below and to the right is covered only if the box reaches both.
-        visit(cell + down * width + right, std::uint32_t(right & down), 0u);
-        visit(cell + down * width, std::uint32_t(down), kFirstColumnFlag);
-        visit(cell + right, std::uint32_t(right), kFirstRowFlag);
-        visit(cell, 1u, kBothFlags);
-        return;
-    }
-    for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
-        for (int cx = range.x0; cx <= range.x1; ++cx)
-            visit(std::size_t(cy) * width + std::size_t(cx), 1u,
-                  (cx == range.x0 ? kFirstColumnFlag : 0u) | (cy == range.y0 ? kFirstRowFlag : 0u));
-}
-
-void GridBroadphase::listCells()
-{
-    const std::size_t count = boxes.size();
-    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
-    // Local copies: the compiler cannot tell that writing an entry leaves these unchanged, so
-    // it would read them from memory again for every entry.
-    const std::size_t width = std::size_t(columns);
-    const CellRange* ranges = cellRanges.data();
-    const float* minX = boxes.minX.data();
-    const float* maxX = boxes.maxX.data();
-    const float* minY = boxes.minY.data();
-    const float* maxY = boxes.maxY.data();
-    // [slide:grid-insert]
-    // A counting sort: count each cell's boxes, add up the counts so each cell knows where
-    // its boxes end, then drop each box in from the end back. No hashing and no list per
-    // cell: one array holds every cell's boxes back to back, reused every frame.
-    cellStart.assign(cellCount + 1, 0);
-    std::uint32_t* start = cellStart.data();
-    for (std::size_t i = 0; i < count; ++i)
-        forEachCell(ranges[i], width,
-                    [start](std::size_t cell, std::uint32_t covered, std::uint32_t)
-                    { start[cell] += covered; });
-    for (std::size_t c = 1; c <= cellCount; ++c)
-        start[c] += start[c - 1]; // now start[c] = end of cell c
-    // [/slide]
-    // The spare entry: one more at the end, written by the calls with covered = 0, so that
-    // they need no branch either.
-    const std::uint32_t spare = cellStart[cellCount];
-    entries.resize(std::size_t(spare) + 1);
-    Entry* out = entries.data();
-    // Fill from the last box back, each cell from its end back: afterwards start[c] is the
-    // start of cell c, and every cell's boxes are in item order.
-    for (std::size_t i = count; i-- > 0;)
-    {
-        const Entry box = {minX[i], maxX[i], minY[i], maxY[i], std::uint32_t(i)};
-        forEachCell(
-            ranges[i], width,
-            [start, out, spare, &box](std::size_t cell, std::uint32_t covered, std::uint32_t flags)
-            {
-                const std::uint32_t slot = start[cell] - covered;
-                start[cell] = slot;
-                Entry entry = box;
-                entry.itemAndFlags |= flags;
-                out[selectWithoutBranch(covered, slot, spare)] = entry;
-            });
-    }
-}
-
-void GridBroadphase::testCells()
-{
-    std::size_t found = 0;
+    // Where each cell's entries start, and where each half fills them from: half 0's boxes
+    // first, then half 1's, so every cell lists its boxes in item order with any thread count.
+    const std::size_t cellCount = std::size_t(shape.columns) * std::size_t(shape.rows);
+    start.resize(cellCount + 1);
+    std::uint32_t* first = halves[0].cursor.data();
+    std::uint32_t* second = halves[1].cursor.data();
+    std::uint32_t total = 0;
     std::size_t tested = 0;
-    std::vector<Pair>& cellPairs = cellOrderPairs;
-    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
-    for (std::size_t cell = 0; cell < cellCount; ++cell)
+    for (std::size_t c = 0; c < cellCount; ++c)
     {
-        const std::uint32_t begin = cellStart[cell];
-        const std::uint32_t end = cellStart[cell + 1];
+        const std::uint32_t inFirst = first[c];
+        const std::uint32_t inCell = inFirst + second[c];
+        start[c] = total;
+        tested += std::size_t(inCell) * (inCell - (inCell > 0 ? 1u : 0u)) / 2;
+        total += inCell;
+        first[c] = start[c] + inFirst; // each half fills its part from the end back
+        second[c] = total;
+    }
+    start[cellCount] = total;
+    lastStats.pairsTested = tested;
+    // Two spare entries, one per filling thread (forEachCell's covered = 0 calls write there).
+    growWithRoom(cellEdges, std::size_t(total) + 2);
+    growWithRoom(cellItems, std::size_t(total) + 2);
+    // Each half of the cells is tested by one thread: split where half the entries are.
+    const std::size_t middle =
+        std::size_t(std::lower_bound(start.begin(), start.end() - 1, total / 2) - start.begin());
+    halves[0].firstCell = 0;
+    halves[0].endCell = middle;
+    halves[1].firstCell = middle;
+    halves[1].endCell = cellCount;
+    // Room for every pair a half could find (the tests write unchecked). Grows only, with room
+    // to spare and without zeroing or copying: a frame whose boxes crowd a little more than
+    // ever before would otherwise pay for clearing megabytes (measured: 4 ms at 100,000).
+    for (Half& half : halves)
+        if (half.foundRoom < tested + 1)
+        {
+            half.foundRoom = tested + tested / 4 + 64;
+            half.found.reset(new Pair[half.foundRoom]); // trivial type: left uninitialised
+        }
+}
+
+void GridBroadphase::fillCells(Half& half)
+{
+    const std::size_t width = std::size_t(shape.columns);
+    const std::size_t cellCount = width * std::size_t(shape.rows);
+    std::uint32_t* cursor = half.cursor.data();
+    Edges* outEdges = cellEdges.data();
+    std::uint32_t* outItems = cellItems.data();
+    const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
+    const Edges* box = edges.data();
+    const CellRange* range = ranges.data();
+    // From the half's last box back, each cell from its end back: every cell's boxes end up in
+    // item order.
+    for (std::size_t i = half.end; i-- > half.begin;)
+    {
+        const Edges b = box[i];
+        const std::uint32_t item = std::uint32_t(i);
+        forEachCell(range[i], width, cellCount, kFirstColumnFlag, kFirstRowFlag,
+                    [cursor, outEdges, outItems, spare, b,
+                     item](std::size_t target, std::uint32_t covered, std::uint32_t flags)
+                    {
+                        const std::uint32_t slot = --cursor[target];
+                        const std::uint32_t at = selectWithoutBranch(covered, slot, spare);
+                        outEdges[at] = b;
+                        outItems[at] = item | flags;
+                    });
+    }
+}
+
+void GridBroadphase::testCells(Half& half)
+{
+    const Edges* boxes = cellEdges.data();
+    const std::uint32_t* items = cellItems.data();
+    Pair* out = half.found.get(); // sized by startCells
+    std::size_t found = 0;
+    for (std::size_t cell = half.firstCell; cell < half.endCell; ++cell)
+    {
+        const std::uint32_t begin = start[cell];
+        const std::uint32_t end = start[cell + 1];
         if (end - begin < 2)
             continue; // most cells: nothing to test, and no hashing to find that out
-        tested += std::size_t(end - begin) * (end - begin - 1) / 2;
         // [slide:grid-test]
-        for (std::uint32_t p = begin; p < end; ++p)
+        for (std::uint32_t p = begin; p + 1 < end; ++p)
         {
-            const Entry a = entries[p];
-            const std::uint32_t first = itemOf(a);
-            // Room for every pair this row could find (the loop below writes unchecked).
-            if (cellPairs.size() < found + (end - p))
-                cellPairs.resize(std::max(2 * cellPairs.size(), found + (end - p)));
+            const std::uint32_t a = items[p];
+            const std::uint32_t first = a & kItemIndexMask;
+            // Negated-max edges: a's (maxX, maxY, -minX, -minY), so that b overlaps a exactly
+            // when each of b's (minX, minY, -maxX, -maxY) is less: bMin < aMax, -bMax < -aMin.
+#if defined(HITBOX_GRID_SSE)
+            const __m128 signs = _mm_set1_ps(-0.f);
+            const __m128 negated = _mm_xor_ps(_mm_loadu_ps(&boxes[p].minX), signs);
+            const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+#else
+            const Edges query = {-boxes[p].negMaxX, -boxes[p].negMaxY, -boxes[p].minX,
+                                 -boxes[p].minY};
+#endif
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
-                const Entry& b = entries[q];
+#if defined(HITBOX_GRID_SSE)
+                const int less = _mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(&boxes[q].minX), query));
+                const bool overlap = less == 0xF;
+#else
+                const Edges& other = boxes[q];
+                const bool overlap = (other.minX < query.minX) & (other.minY < query.minY) &
+                                     (other.negMaxX < query.negMaxX) &
+                                     (other.negMaxY < query.negMaxY);
+#endif
                 // Each pair once: only the top-left cell two boxes share reports them.
-                const bool reportHere = isTopLeftSharedCell(a, b);
-                const bool overlap = spansOverlap(a.minX, a.maxX, b.minX, b.maxX) &
-                                     spansOverlap(a.minY, a.maxY, b.minY, b.maxY);
+                const std::uint32_t b = items[q];
+                const bool reportHere = ((a | b) & kBothFlags) == kBothFlags;
                 // Branch-free append: always write the pair, move past it only on a hit.
-                cellPairs[found] = {first, itemOf(b)};
+                out[found] = {first, b & kItemIndexMask};
                 found += reportHere & overlap;
             }
         }
         // [/slide]
     }
-    cellPairCount = found;
-    lastStats.pairsTested = tested;
+    half.foundCount = found;
 }
 
-void GridBroadphase::dropPairsLayersForbid()
+void GridBroadphase::gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
 {
+    std::vector<Pair>& gathered = gridSettings.order == PairOrder::Sorted ? cellOrderPairs : pairs;
+    const Pair* first = halves[0].found.get();
+    const Pair* second = halves[1].found.get();
+    gathered.assign(first, first + halves[0].foundCount);
+    gathered.insert(gathered.end(), second, second + halves[1].foundCount);
     // Layers rarely forbid anything (every mask all ones): then skip this pass entirely.
-    const std::size_t count = boxes.size();
-    bool anyRules = false;
-    for (std::size_t i = 0; i < count; ++i)
-        anyRules |= (boxes.mask[i] != 0xFFFFFFFF) | (boxes.layer[i] == 0);
-    if (!anyRules)
-        return;
-    std::size_t kept = 0;
-    for (std::size_t k = 0; k < cellPairCount; ++k)
+    if (halves[0].anyRules || halves[1].anyRules)
     {
-        const Pair pair = cellOrderPairs[k];
-        cellOrderPairs[kept] = pair;
-        kept += boxes.allowed(pair.first, pair.second);
+        std::size_t kept = 0;
+        for (const Pair& pair : gathered)
+        {
+            const BroadphaseItem& a = items[pair.first];
+            const BroadphaseItem& b = items[pair.second];
+            gathered[kept] = pair;
+            kept += layersAllow(a.layer, a.mask, b.layer, b.mask);
+        }
+        gathered.resize(kept);
     }
-    cellPairCount = kept;
+    if (gridSettings.order == PairOrder::Sorted)
+        sortPairs(pairs);
 }
 
 void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
 {
-    // Cells find pairs in space order; the interface promises (first, second) order. A
-    // counting sort by `first` is one pass over the pairs (std::sort needs about 17 at
-    // 100,000 pairs); pairs with the same first come from different cells only when a box
-    // covers several cells, so those few are put in order by insertion sort.
-    const std::size_t count = boxes.size();
+    // Cells find pairs in space order; Sorted promises (first, second) order. A counting sort
+    // by `first` is one pass over the pairs (std::sort needs about 17 at 100,000 pairs); pairs
+    // with the same first come from different cells only when a box covers several cells, so
+    // those few are put in order by insertion sort.
+    const std::size_t count = itemCount;
+    const std::size_t pairCount = cellOrderPairs.size();
     pairStart.assign(count + 1, 0);
     const Pair* cellPairs = cellOrderPairs.data();
-    for (std::size_t k = 0; k < cellPairCount; ++k)
+    for (std::size_t k = 0; k < pairCount; ++k)
         ++pairStart[cellPairs[k].first + 1];
     for (std::size_t i = 0; i < count; ++i)
         pairStart[i + 1] += pairStart[i];
-    pairs.resize(cellPairCount);
-    for (std::size_t k = 0; k < cellPairCount; ++k)
+    pairs.resize(pairCount);
+    for (std::size_t k = 0; k < pairCount; ++k)
         pairs[pairStart[cellPairs[k].first]++] =
             cellPairs[k]; // afterwards pairStart[i] = end of i's pairs
     // Now in order of `first`; the pairs of one box are mostly in order of `second` too. One
     // insertion sort over all the pairs fixes the few that are not: a pass over the pairs
-    // whose "in order?" test is almost always yes (a sort per box was a loop per box, whose
-    // number of rounds the CPU could not guess).
+    // whose "in order?" test is almost always yes.
     // Pair key: (first, second) packed into one 64-bit number, so one comparison orders both.
     auto key = [](const Pair& pair)
     { return std::uint64_t(pair.first) << 32 | std::uint64_t(pair.second); };
     Pair* sorted = pairs.data();
-    for (std::size_t k = 1; k < cellPairCount; ++k)
+    for (std::size_t k = 1; k < pairCount; ++k)
     {
         const Pair moving = sorted[k];
         if (key(moving) > key(sorted[k - 1]))
@@ -293,29 +538,47 @@ void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
 
 void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
 {
-    boxes.load(items);
-    chooseGrid();
-    assignCells();
-    listCells();
-    testCells();
-    dropPairsLayersForbid();
-    sortPairs(pairs);
+    const std::size_t count = items.size();
+    itemCount = count;
+    currentItems = items.data();
+    edges.resize(count);
+    ranges.resize(count);
+    // Always the same two halves, so the sums (and so the grid) do not depend on the threads.
+    halves[0].begin = 0;
+    halves[0].end = count / 2;
+    halves[1].begin = count / 2;
+    halves[1].end = count;
+    const bool twoThreads = gridSettings.threads >= 2 && count >= gridSettings.twoThreadsFromItems;
+    double extra = runHalves(twoThreads, [this](int h) { prepare(halves[h]); });
+    const Shape ideal = idealShape(count);
+    if (!keepsShape(ideal, count))
+    {
+        shape = ideal;
+        hasShape = true;
+        extra += runHalves(twoThreads, [this](int h) { countCells(halves[h]); });
+    }
+    startCells();
+    extra += runHalves(twoThreads, [this](int h) { fillCells(halves[h]); });
+    extra += runHalves(twoThreads, [this](int h) { testCells(halves[h]); });
+    gatherPairs(items, pairs);
+    workerExtraSeconds = extra;
+    currentItems = nullptr;
     lastStats.pairsFound = pairs.size();
 }
 
 BroadphaseLayout GridBroadphase::layout() const
 {
     BroadphaseLayout result;
-    const std::size_t cellCount = std::size_t(columns) * std::size_t(rows);
-    if (cellStart.size() != cellCount + 1)
+    const std::size_t cellCount = std::size_t(shape.columns) * std::size_t(shape.rows);
+    if (!hasShape || start.size() != cellCount + 1)
         return result; // no findPairs yet
-    result.gridOrigin = {originX, originY};
-    result.cellSize = usedCellSize;
-    result.columns = columns;
-    result.rows = rows;
+    result.gridOrigin = {shape.originX, shape.originY};
+    result.cellSize = shape.cell;
+    result.columns = shape.columns;
+    result.rows = shape.rows;
     result.boxesPerCell.resize(cellCount);
     for (std::size_t c = 0; c < cellCount; ++c)
-        result.boxesPerCell[c] = cellStart[c + 1] - cellStart[c];
+        result.boxesPerCell[c] = start[c + 1] - start[c];
     return result;
 }
 

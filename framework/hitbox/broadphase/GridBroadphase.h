@@ -5,10 +5,16 @@
 // so each list is in item order and needs no allocation once warmed up), then test only the
 // boxes that share a cell. A box bigger than a cell is listed in every cell it covers. Two
 // boxes that share several cells are reported once: only in the top-left cell they share.
+// The tricks that make it fast are named in GridBroadphase.cpp and measured in
+// docs/performance.md.
 #pragma once
 
-#include "hitbox/broadphase/BoxArrays.h"
 #include "hitbox/broadphase/Broadphase.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace hitbox
 {
@@ -25,77 +31,122 @@ constexpr double gridCellSizeFor(double averageSide)
     return kGridCellPerAverageSide * averageSide;
 }
 
+// The order GridBroadphase::findPairs reports its pairs in.
+enum class PairOrder
+{
+    // By (first, second), as Broadphase promises: a counting sort after the tests.
+    Sorted,
+    // The order the cells found them: cells row by row, in a cell by item. Every pair still has
+    // first < second; the order is the same every run and with one or two threads, but it
+    // changes when boxes move to other cells. Cheaper: no sort.
+    CellOrder
+};
+
+// Below this many boxes a second thread costs more to start than it saves (a frame of 10,000
+// boxes takes about 0.3 ms, starting a thread tens of microseconds): one thread is used.
+constexpr std::size_t kGridTwoThreadsFromItems = 20000;
+
+struct GridSettings
+{
+    float cellSize = 0.f; // <= 0: gridCellSizeFor(the items' average side), every frame
+    PairOrder order = PairOrder::Sorted;
+    // 1 or 2 (other values: 1 below 2, 2 above). Two threads split the work in halves from
+    // twoThreadsFromItems boxes; the pairs and their order are the same as with one.
+    int threads = 1;
+    std::size_t twoThreadsFromItems = kGridTwoThreadsFromItems; // tests lower it to 0
+};
+
 class GridBroadphase : public Broadphase
 {
 public:
-    // cellSize <= 0: gridCellSizeFor(the items' average side), worked out every frame.
+    // cellSize <= 0: gridCellSizeFor(the items' average side). Worked out every frame, but
+    // last frame's grid is kept while the rule's cell is within 1.25x of it and the boxes stay
+    // within a cell of it (any grid finds the same pairs; this one saves a pass).
     explicit GridBroadphase(float cellSize = 0.f);
+    explicit GridBroadphase(const GridSettings& settings);
 
+    // Every pair once, first < second, in the settings' PairOrder (Sorted unless asked).
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
     const char* name() const override { return "Grid"; }
     BroadphaseStats stats() const override { return lastStats; }
     // The grid (its cellSize: the one the last findPairs used) and how many boxes each cell holds.
     BroadphaseLayout layout() const override;
+    [[nodiscard]] const GridSettings& settings() const { return gridSettings; }
+    // With two threads: CPU seconds the second thread spent in the last findPairs beyond the
+    // calling thread's own share of the same work (0 with one thread). The calling thread's
+    // CPU time plus this is the CPU time of the frame's longest chain of work.
+    [[nodiscard]] double lastWorkerExtraSeconds() const { return workerExtraSeconds; }
 
 private:
-    void chooseGrid();
-    void assignCells();
-    void listCells();
-    void testCells();
+    // A box as the pair test wants it: (minX, minY, -maxX, -maxY), so one four-wide "less
+    // than" against the other box's (maxX, maxY, -minX, -minY) tests both axes (see .cpp).
+    struct alignas(16) Edges
+    {
+        float minX, minY, negMaxX, negMaxY;
+    };
+    // The cells a box covers, inclusive; empty (x0 > x1) for NaN boxes.
+    struct CellRange
+    {
+        int x0, x1, y0, y1;
+    };
+    // The grid: cell (cx, cy) starts at origin + (cx, cy) * cell.
+    struct Shape
+    {
+        float originX = 0.f, originY = 0.f, cell = 1.f;
+        int columns = 1, rows = 1;
+    };
+    // One thread's half of the items (the first or the second half, always split the same way
+    // so sums come out the same with one or two threads) and what it found.
+    struct Half
+    {
+        std::size_t begin = 0, end = 0; // items
+        float left = 0.f, top = 0.f, right = 0.f, bottom = 0.f;
+        double sideSum = 0.0;
+        std::size_t usable = 0;
+        bool anyRules = false;
+        std::vector<std::uint32_t> cursor;      // per cell: this half's count, then where it fills
+        std::size_t firstCell = 0, endCell = 0; // the cells this half tests
+        std::unique_ptr<Pair[]> found;          // foundRoom pairs; the first foundCount are real
+        std::size_t foundRoom = 0;
+        std::size_t foundCount = 0;
+    };
+
+    struct CellFinder;
+    void prepare(Half& half);
+    void countCells(Half& half);
+    [[nodiscard]] Shape idealShape(std::size_t count) const;
+    [[nodiscard]] bool keepsShape(const Shape& ideal, std::size_t count) const;
+    void startCells();
+    void fillCells(Half& half);
+    void testCells(Half& half);
+    void gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs);
     void sortPairs(std::vector<Pair>& pairs);
 
-    void dropPairsLayersForbid();
-
-    // One entry per (cell, box): the box's edges copied next to its cell's other boxes, so
-    // testing a cell reads memory in order. 20 bytes: filling cells in random order costs a
-    // memory write per entry, so smaller entries are faster (layers are checked afterwards,
-    // on the few pairs found, instead of being copied into every entry).
-    struct Entry
-    {
-        float minX, maxX, minY, maxY;
-        // Packed index and flags (one 32-bit word instead of three): the item's index in the
-        // low 30 bits, and two flags in the top two bits saying whether this cell is in the
-        // box's leftmost column (kFirstColumnFlag) and top row (kFirstRowFlag).
-        std::uint32_t itemAndFlags;
-    };
+    // Report-once rule: a pair is reported only in the top-left cell the two boxes share: the
+    // one in the leftmost column of one of them and the top row of one of them. Flags in the
+    // top two bits of an entry's item word.
     static constexpr std::uint32_t kFirstColumnFlag = 1u << 30;
     static constexpr std::uint32_t kFirstRowFlag = 1u << 31;
     static constexpr std::uint32_t kBothFlags = kFirstColumnFlag | kFirstRowFlag;
     static constexpr std::uint32_t kItemIndexMask = ~kBothFlags; // the low 30 bits
 
-    // The item an entry belongs to: its packed word without the flags.
-    static std::uint32_t itemOf(const Entry& entry) { return entry.itemAndFlags & kItemIndexMask; }
-    // Report-once rule: boxes sharing several cells are reported only in the top-left cell they
-    // share, the one in the leftmost column of one of them and the top row of one of them.
-    static bool isTopLeftSharedCell(const Entry& a, const Entry& b)
-    {
-        return ((a.itemAndFlags | b.itemAndFlags) & kBothFlags) == kBothFlags;
-    }
-
-    float fixedCellSize;
-    BoxArrays boxes;
+    GridSettings gridSettings;
     BroadphaseStats lastStats;
-
-    // The grid of the last frame: cell (cx, cy) starts at origin + (cx, cy) * usedCellSize.
-    float originX = 0.f, originY = 0.f, usedCellSize = 1.f;
-    int columns = 1, rows = 1;
-
-    // Per item: the range of cells it covers (inclusive). Empty (x0 > x1) for NaN boxes.
-    // One struct per item, so the two passes over the items read one place per item.
-    struct CellRange
-    {
-        int x0, x1, y0, y1;
-    };
-    // Calls visit(cell, covered, flags) for the cells of a range (see the .cpp).
-    template <typename Visit>
-    static void forEachCell(const CellRange& range, std::size_t width, Visit visit);
-    std::vector<CellRange> cellRanges;
-    // Cell c's boxes are entries [cellStart[c], cellStart[c + 1]), in item order.
-    std::vector<std::uint32_t> cellStart;
-    // The last entry is a spare that listCells writes to instead of branching (forEachCell).
-    std::vector<Entry> entries;
-    std::size_t cellPairCount = 0;
-    std::vector<Pair> cellOrderPairs;     // the pairs in the order the cells found them
+    double workerExtraSeconds = 0.0;
+    bool hasShape = false;
+    Shape shape;
+    Half halves[2];
+    std::size_t itemCount = 0;
+    const BroadphaseItem* currentItems = nullptr; // during findPairs
+    std::vector<Edges> edges;                     // per item
+    std::vector<CellRange> ranges;                // per item
+    std::vector<std::uint32_t> start;             // cell c's entries are [start[c], start[c + 1])
+    // The entries, cell after cell: each box's edges and its item word (index and flags) in
+    // two arrays, so an entry's edges are 16 aligned bytes. The last two entries are spares
+    // the two fill threads write to instead of branching (forEachCell in the .cpp).
+    std::vector<Edges> cellEdges;
+    std::vector<std::uint32_t> cellItems;
+    std::vector<Pair> cellOrderPairs;     // PairOrder::Sorted: the pairs before sorting
     std::vector<std::uint32_t> pairStart; // counting sort of the pairs by `first`
 };
 
