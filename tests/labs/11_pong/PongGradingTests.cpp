@@ -294,8 +294,8 @@ TEST(Task3ReturnOffThePaddle, WhereItHitCountsHalfTheBall)
             << "hit " << offset << " px from the middle, with paddleHeight " << paddleHeight
             << " and ballSize " << ballSize;
     }
-    EXPECT_NEAR(degreesFromHorizontal(returnOffLeftPaddle(reach, {-ballSpeed, 0.f})), maxBounceDegrees,
-                0.2f)
+    EXPECT_NEAR(degreesFromHorizontal(returnOffLeftPaddle(reach, {-ballSpeed, 0.f})),
+                maxBounceDegrees, 0.2f)
         << "a ball clipping the bottom corner leaves at the steepest angle";
 }
 
