@@ -84,6 +84,18 @@ TEST(Task1SubSteps, EachSubStepIsNoLongerThanTheLimit)
     EXPECT_EQ(result.overlapTests, 13);
 }
 
+TEST(Task1SubSteps, StopsTestingAtTheFirstHit)
+{
+    // 100 pixels in 13 sub-steps of 100/13 px, the bullet's right side 20 px before the
+    // wall: the third sub-step reaches it. After that hit the step is over: no more moves,
+    // no more overlap tests (the count is what the level shows as the step's cost).
+    const MoveResult result =
+        subSteppedStep(bulletAt(wall.left - 8.f - 20.f), 12000.f, dt, wall, maxSubStep);
+    EXPECT_TRUE(result.hitWall);
+    EXPECT_EQ(result.bullet.right, wall.left);
+    EXPECT_EQ(result.overlapTests, 3) << "sub-steps 1 and 2 are free, the 3rd hits: then stop";
+}
+
 TEST(Task1SubSteps, TouchingTheWallIsNotAHit)
 {
     // Against the wall and moving away: free. Against it and moving in: it stays there.
