@@ -288,7 +288,9 @@ def check_lab(build, folder, lab, args, commands, equivalents, scratch_root, row
             reason = equivalents.get(mutant.key())
             if outcome == "survived" and reason:
                 outcome = "equivalent"
-            other = sorted(name for task, names in failed.items() if task != mutant.task for name in names)
+            # A test of no task (a Level or helper suite) costs no task's mark: not collateral.
+            other = sorted(name for task, names in failed.items()
+                           if task not in (mutant.task, None) for name in names)
             rows.append({"lab": folder, "file": mutant.file, "task": mutant.task, "line": mutant.line,
                          "kind": mutant.kind, "original": mutant.original, "mutated": mutant.mutated,
                          "occurrence": mutant.occurrence, "outcome": outcome,

@@ -350,6 +350,16 @@ TEST(Task3BounceApartLikeBilliardBalls, BallsAlreadyMovingApartAreNotPulledBack)
     EXPECT_FLOAT_EQ(second.getVelocity().x, testSpeed);
 }
 
+TEST(Task3BounceApartLikeBilliardBalls, OverlappingBallsDriftingApartKeepTheirVelocities)
+{
+    // Overlapping but already separating, however slowly (0.4 px/s): pushed apart, not bounced.
+    Ball first(middle, {-0.2f, 0.f}, sf::Color::White);
+    Ball second(middle + sf::Vector2f{1.4f * radius(), 0.f}, {0.2f, 0.f}, sf::Color::White);
+    bounceApart(first, second);
+    EXPECT_FLOAT_EQ(first.getVelocity().x, -0.2f);
+    EXPECT_FLOAT_EQ(second.getVelocity().x, 0.2f);
+}
+
 TEST(Task3BounceApartLikeBilliardBalls, BallsOnlyTouchingAreLeftAlone)
 {
     // The edge rule: centres exactly 2r apart, closing in: touching is not colliding yet.
