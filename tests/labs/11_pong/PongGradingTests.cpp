@@ -149,6 +149,7 @@ TEST(Task2BounceOffTopAndBottomWalls, PastTheTopItIsPutBackAndSentDown)
     EXPECT_GE(boxOf(ball).top, court.top) << "put back inside the court";
     EXPECT_LE(boxOf(ball).top, court.top + 5.001f) << "put back against the top wall";
     EXPECT_VEC_NEAR(ball.getVelocity(), sf::Vector2f(300.f, 200.f), 1e-3f);
+    EXPECT_FLOAT_EQ(ball.getPosition().x, 500.f) << "put back up or down only, not sideways";
 }
 
 TEST(Task2BounceOffTopAndBottomWalls, PastTheBottomItIsPutBackAndSentUp)
@@ -160,6 +161,7 @@ TEST(Task2BounceOffTopAndBottomWalls, PastTheBottomItIsPutBackAndSentUp)
     EXPECT_GE(hitbox::bottomOf(boxOf(ball)), court.bottom - 5.001f)
         << "put back against the bottom wall";
     EXPECT_VEC_NEAR(ball.getVelocity(), sf::Vector2f(-300.f, -200.f), 1e-3f);
+    EXPECT_FLOAT_EQ(ball.getPosition().x, 500.f) << "put back up or down only, not sideways";
 }
 
 TEST(Task2BounceOffTopAndBottomWalls, TouchingAWallIsNoBounce)
