@@ -50,6 +50,11 @@
 #   Where a rule has an edge (walls, radii, tile bounds), test the touching case. Bound
 #   every loop by a step count: a test takes well under a second on the solution and on the
 #   starter (the grader stops a test after 5 s, as a last resort: scripts/labtool/limits.py).
+#   scripts/check-mutants.py measures how many single-point wrong answers inside each task
+#   block the tests catch (target 90 %, each costing its own task only; equivalent ones are
+#   listed with a reason in tests/labs/equivalent-mutants.txt), and
+#   scripts/check-sheet-numbers.py rebuilds a lab with the numbers its sheet invites students
+#   to change: tests set the numbers they need.
 # - tests/labs-hidden/NN_name/*.cpp (optional): the instructor's hidden variants, the same
 #   behaviour with other numbers; built into <lab>_tests, left out of the handout.
 include_guard(GLOBAL)

@@ -128,9 +128,12 @@ TEST(Task1BounceOffTheWalls, BallSlidingAlongAWallIsNotHittingIt)
     // one touching the left wall), moving along it, never hits it: with <= instead of <
     // it would "hit" every step and flash all the time.
     const float r = radius();
-    const sf::Vector2f starts[] = {{600.f, r}, {r, 300.f}};
-    const sf::Vector2f velocities[] = {{testSpeed, 0.f}, {0.f, testSpeed}};
-    for (int i = 0; i < 2; ++i)
+    const sf::Vector2f world = emptyLevel().getWorldSize();
+    const sf::Vector2f starts[] = {
+        {600.f, r}, {r, 300.f}, {600.f, world.y - r}, {world.x - r, 300.f}};
+    const sf::Vector2f velocities[] = {
+        {testSpeed, 0.f}, {0.f, testSpeed}, {-testSpeed, 0.f}, {0.f, -testSpeed}};
+    for (int i = 0; i < 4; ++i)
     {
         BallsLevel level = emptyLevel();
         level.addBall(starts[i], velocities[i]);
@@ -142,14 +145,67 @@ TEST(Task1BounceOffTheWalls, BallSlidingAlongAWallIsNotHittingIt)
     }
 }
 
+TEST(Task1BounceOffTheWalls, ABallAlreadyOnItsWayBackIsNotTurnedIntoTheWall)
+{
+    // Sticking out past the right (bottom) wall but already moving away from it, e.g. pushed
+    // there by another ball: it must keep moving away. A sign flip (velocity = -velocity)
+    // would turn it back into the wall, where it sticks, shaking.
+    const float r = radius();
+    const sf::Vector2f world = emptyLevel().getWorldSize();
+    const sf::Vector2f starts[] = {{world.x - r + 4.f, 300.f}, {600.f, world.y - r + 4.f}};
+    const sf::Vector2f velocities[] = {{-testSpeed, 0.f}, {0.f, -testSpeed}};
+    for (int i = 0; i < 2; ++i)
+    {
+        BallsLevel level = emptyLevel();
+        level.addBall(starts[i], velocities[i]);
+        hitbox::simulate(level, 1);
+        EXPECT_VEC_NEAR(level.getBall(0).getVelocity(), velocities[i], 0.001f)
+            << "a ball at " << labtesting::text(starts[i]) << " moving away from the wall";
+    }
+}
+
+TEST(Task1BounceOffTheWalls, EachWallBounceIsAHitTheBallIsToldAbout)
+{
+    // collisionResponse(nullptr) once per bounce, so the ball flashes: off a side wall and
+    // off the top.
+    const sf::Vector2f directions[] = {{-1.f, 0.f}, {0.f, -1.f}};
+    for (sf::Vector2f direction : directions)
+    {
+        BallsLevel level = emptyLevel();
+        level.addBall(middle, direction * testSpeed);
+        const sf::Vector2f toWall = level.getWorldSize() / 2.f - sf::Vector2f(radius(), radius());
+        run(level, std::abs(dot(toWall, direction)) / testSpeed + 0.5f);
+        EXPECT_EQ(level.getBall(0).getHitCount(), 1)
+            << "a ball sent towards " << labtesting::text(direction) << " hit one wall once";
+    }
+}
+
+namespace
+{
+// Task 2's tests count hits between balls only: a lone ball far from the others, at rest in
+// the middle, gets every hit that is not another ball's (task 1's walls, right or wrong), and
+// pairHits leaves those out. So a mistake in task 1 never costs task 2.
+void addLoneBall(BallsLevel& level)
+{
+    level.addBall(middle + sf::Vector2f{0.f, 4.f * radius()}, {});
+}
+
+int pairHits(const BallsLevel& level, int ball)
+{
+    return level.getBall(ball).getHitCount() -
+           level.getBall(level.getBallCount() - 1).getHitCount();
+}
+} // namespace
+
 TEST(Task2TestEachPairWithTheBoundingCircle, OverlappingBallsAreBothToldAboutTheHit)
 {
     BallsLevel level = emptyLevel();
     level.addBall(middle, {});
     level.addBall(middle + sf::Vector2f{1.4f, 0.35f} * radius(), {}); // overlapping by ~0.55 r
+    addLoneBall(level);
     hitbox::simulate(level, 1);
-    EXPECT_EQ(level.getBall(0).getHitCount(), 1);
-    EXPECT_EQ(level.getBall(1).getHitCount(), 1);
+    EXPECT_EQ(pairHits(level, 0), 1);
+    EXPECT_EQ(pairHits(level, 1), 1);
 }
 
 TEST(Task2TestEachPairWithTheBoundingCircle, BallsOnlyTouchingAreNotAHit)
@@ -158,9 +214,10 @@ TEST(Task2TestEachPairWithTheBoundingCircle, BallsOnlyTouchingAreNotAHit)
     BallsLevel level = emptyLevel();
     level.addBall(middle, {});
     level.addBall(middle + sf::Vector2f{2.f * radius(), 0.f}, {});
+    addLoneBall(level);
     hitbox::simulate(level, 1);
-    EXPECT_EQ(level.getBall(0).getHitCount(), 0);
-    EXPECT_EQ(level.getBall(1).getHitCount(), 0);
+    EXPECT_EQ(pairHits(level, 0), 0);
+    EXPECT_EQ(pairHits(level, 1), 0);
 }
 
 TEST(Task2TestEachPairWithTheBoundingCircle, DiagonalNeighboursWhoseBoxesOverlapAreNotAHit)
@@ -169,8 +226,9 @@ TEST(Task2TestEachPairWithTheBoundingCircle, DiagonalNeighboursWhoseBoxesOverlap
     BallsLevel level = emptyLevel();
     level.addBall(middle, {});
     level.addBall(middle + sf::Vector2f{1.6f * radius(), 1.6f * radius()}, {});
+    addLoneBall(level);
     hitbox::simulate(level, 1);
-    EXPECT_EQ(level.getBall(0).getHitCount(), 0);
+    EXPECT_EQ(pairHits(level, 0), 0);
 }
 
 TEST(Task2TestEachPairWithTheBoundingCircle, EveryPairIsTested)
@@ -182,11 +240,12 @@ TEST(Task2TestEachPairWithTheBoundingCircle, EveryPairIsTested)
     level.addBall(middle + sf::Vector2f{1.8f * r, 0.f}, {});
     level.addBall(middle + sf::Vector2f{3.6f * r, 0.f}, {});
     level.addBall(middle - sf::Vector2f{3.f * r, 0.f}, {}); // alone
+    addLoneBall(level);
     hitbox::simulate(level, 1);
-    EXPECT_EQ(level.getBall(0).getHitCount(), 1);
-    EXPECT_EQ(level.getBall(1).getHitCount(), 2);
-    EXPECT_EQ(level.getBall(2).getHitCount(), 1);
-    EXPECT_EQ(level.getBall(3).getHitCount(), 0);
+    EXPECT_EQ(pairHits(level, 0), 1);
+    EXPECT_EQ(pairHits(level, 1), 2);
+    EXPECT_EQ(pairHits(level, 2), 1);
+    EXPECT_EQ(pairHits(level, 3), 0);
 }
 
 // Task 3's tests call bounceApart (task 3's code) on their own balls, moved by the test
@@ -289,6 +348,16 @@ TEST(Task3BounceApartLikeBilliardBalls, BallsAlreadyMovingApartAreNotPulledBack)
     bounceApart(first, second);
     EXPECT_FLOAT_EQ(first.getVelocity().x, -testSpeed);
     EXPECT_FLOAT_EQ(second.getVelocity().x, testSpeed);
+}
+
+TEST(Task3BounceApartLikeBilliardBalls, OverlappingBallsDriftingApartKeepTheirVelocities)
+{
+    // Overlapping but already separating, however slowly (0.4 px/s): pushed apart, not bounced.
+    Ball first(middle, {-0.2f, 0.f}, sf::Color::White);
+    Ball second(middle + sf::Vector2f{1.4f * radius(), 0.f}, {0.2f, 0.f}, sf::Color::White);
+    bounceApart(first, second);
+    EXPECT_FLOAT_EQ(first.getVelocity().x, -0.2f);
+    EXPECT_FLOAT_EQ(second.getVelocity().x, 0.2f);
 }
 
 TEST(Task3BounceApartLikeBilliardBalls, BallsOnlyTouchingAreLeftAlone)

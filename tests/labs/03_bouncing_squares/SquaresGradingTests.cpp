@@ -27,6 +27,11 @@ constexpr float overlapTolerance = 0.5f;
 // The speed the tests give their squares (pixels per second): slow enough that a test
 // decides when a square reaches a wall.
 constexpr float testSpeed = 220.f;
+
+float dotOf(sf::Vector2f a, sf::Vector2f b)
+{
+    return a.x * b.x + a.y * b.y;
+}
 // How far a square moves in one step.
 constexpr float stepDistance = testSpeed * hitbox::stepSeconds;
 // The see-through margin on each side of the crate.
@@ -189,6 +194,28 @@ TEST(Task2BounceTheBoxOffTheWalls, SquareComesBackFromEachWallAtTheSameSpeed)
             stepsFor(std::abs(toWall.x * direction.x + toWall.y * direction.y) / testSpeed + 0.3f));
         EXPECT_VEC_NEAR(square.getVelocity(), -direction * testSpeed, 0.01f)
             << "a square sent towards " << labtesting::text(direction);
+        // Put back only across the wall: along it, it stays on its line.
+        const sf::Vector2f along{std::abs(direction.y), std::abs(direction.x)};
+        EXPECT_NEAR(dotOf(square.getPosition() - middle, along), 0.f, 0.001f)
+            << "a square sent straight towards " << labtesting::text(direction) << " left its line";
+        EXPECT_EQ(square.getHitCount(), 1) << "each wall bounce is one hit it is told about";
+    }
+}
+
+TEST(Task2BounceTheBoxOffTheWalls, ASquareAlreadyOnItsWayBackIsNotTurnedIntoTheWall)
+{
+    // Its box 3 px past the right (bottom) wall but already moving away: it keeps going
+    // away. A sign flip (velocity = -velocity) would turn it back into the wall.
+    const sf::Vector2f world = hitbox::defaultWorldSize;
+    const sf::Vector2f starts[] = {{world.x - crateSize / 2.f + 3.f, middle.y},
+                                   {middle.x, world.y - crateSize / 2.f + 3.f}};
+    const sf::Vector2f velocities[] = {{-testSpeed, 0.f}, {0.f, -testSpeed}};
+    for (int i = 0; i < 2; ++i)
+    {
+        Square square = crate(starts[i], velocities[i]);
+        run(square, 1);
+        EXPECT_VEC_NEAR(square.getVelocity(), velocities[i], 0.001f)
+            << "a crate at " << labtesting::text(starts[i]) << " moving away from the wall";
     }
 }
 
@@ -197,9 +224,14 @@ TEST(Task2BounceTheBoxOffTheWalls, SquareSlidingAlongAWallIsNotHittingIt)
     // The edge rule: touching is not colliding. A crate exactly touching the top wall (and
     // one touching the left wall), moving along it, never hits it: with <= instead of < it
     // would "hit" every step and flash all the time.
-    const sf::Vector2f starts[] = {{middle.x, crateSize / 2.f}, {crateSize / 2.f, middle.y}};
-    const sf::Vector2f velocities[] = {{testSpeed, 0.f}, {0.f, testSpeed}};
-    for (int i = 0; i < 2; ++i)
+    const sf::Vector2f world = hitbox::defaultWorldSize;
+    const sf::Vector2f starts[] = {{middle.x, crateSize / 2.f},
+                                   {crateSize / 2.f, middle.y},
+                                   {middle.x, world.y - crateSize / 2.f},
+                                   {world.x - crateSize / 2.f, middle.y}};
+    const sf::Vector2f velocities[] = {
+        {testSpeed, 0.f}, {0.f, testSpeed}, {-testSpeed, 0.f}, {0.f, -testSpeed}};
+    for (int i = 0; i < 4; ++i)
     {
         Square square = crate(starts[i], velocities[i]);
         run(square, stepsFor(0.5f));
@@ -259,6 +291,30 @@ TEST(Task3BounceOffEachOtherBoxAgainstBox, BothSquaresAreToldAboutTheHit)
     bounceApart(first, second);
     EXPECT_EQ(first.getHitCount(), 1);
     EXPECT_EQ(second.getHitCount(), 1);
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, OverlappingCratesArePushedApartUntilTheyJustTouch)
+{
+    // Overlapping by 0.3 crate along x (less than along y): each moves half of it, out along x.
+    Square first = crate(middle, {});
+    Square second = crate(middle + sf::Vector2f{0.7f, 0.1f} * crateSize, {});
+    bounceApart(first, second);
+    const hitbox::Box a = hitbox::toBox(first.getCollisionBox());
+    const hitbox::Box b = hitbox::toBox(second.getCollisionBox());
+    EXPECT_NEAR(b.left - (a.left + a.width), 0.f, 0.01f) << "afterwards the crates just touch";
+    EXPECT_NEAR(first.getPosition().x + second.getPosition().x, 2.f * middle.x + 0.7f * crateSize,
+                0.01f)
+        << "each crate moves half the overlap, so their midpoint stays put";
+}
+
+TEST(Task3BounceOffEachOtherBoxAgainstBox, OverlappingCratesDriftingApartKeepTheirVelocities)
+{
+    // Overlapping but already separating, however slowly (0.4 px/s): pushed apart, not bounced.
+    Square first = crate(middle, {-0.2f, 0.f});
+    Square second = crate(middle + sf::Vector2f{0.7f, 0.1f} * crateSize, {0.2f, 0.f});
+    bounceApart(first, second);
+    EXPECT_FLOAT_EQ(first.getVelocity().x, -0.2f);
+    EXPECT_FLOAT_EQ(second.getVelocity().x, 0.2f);
 }
 
 TEST(Task3BounceOffEachOtherBoxAgainstBox, CratesOnlyTouchingAreLeftAlone)

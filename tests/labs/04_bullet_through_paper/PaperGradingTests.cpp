@@ -109,6 +109,8 @@ TEST(Task3TunnelWarning, StepsAsLongAsBulletPlusWallCanTunnel)
     // unless the step is longer than 486 px.
     EXPECT_FALSE(level.stepCouldTunnel(bullet, {0.f, 400.f}));
     EXPECT_TRUE(level.stepCouldTunnel(bullet, {0.f, 500.f}));
+    EXPECT_TRUE(level.stepCouldTunnel(bullet, {0.f, -500.f})) << "upwards too";
+    EXPECT_TRUE(level.stepCouldTunnel(bullet, {0.f, 486.f})) << "exactly bullet + wall: can tunnel";
 }
 
 TEST(Task3TunnelWarning, FastShotShowsTheWarningSlowShotDoesNot)

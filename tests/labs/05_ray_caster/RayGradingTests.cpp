@@ -197,4 +197,11 @@ TEST(Task3Stuck, ExactlyATenthOfTheWayIsNotStuckJustUnderIs)
     EXPECT_FALSE(isSnagged({4.f, 0.f}, {0.4f, 0.f}));
     EXPECT_FALSE(isSnagged({0.f, -4.f}, {0.f, -0.4f}));
     EXPECT_TRUE(isSnagged({4.f, 0.f}, {0.39f, 0.f}));
+    EXPECT_FALSE(isSnagged({10.f, 0.f}, {1.f, 0.f})) << "1 px of 10 is a tenth: not stuck";
+}
+
+TEST(Task3Stuck, ATinyWantedMoveThatIsBlockedIsStuckToo)
+{
+    // Half a pixel wanted, nothing moved: stuck, however small the step.
+    EXPECT_TRUE(isSnagged({0.5f, 0.f}, {0.f, 0.f}));
 }

@@ -112,6 +112,20 @@ TEST(Task1Shadow, ATurnedSquareCastsItsDiagonal)
     EXPECT_NEAR(onX.max, 10.f * std::sqrt(2.f), 1e-3f);
 }
 
+TEST(Task1Shadow, EveryCornerCountsTheFirstOneToo)
+{
+    // Triangles whose first corner alone is the nearest (then the furthest) along x, all of
+    // them well away from zero: the shadow runs from the smallest to the largest corner.
+    const hitbox::Polygon nearFirst{{{110.f, 0.f}, {120.f, 5.f}, {130.f, -5.f}}};
+    const Shadow a = projectOnto(nearFirst, {1.f, 0.f});
+    EXPECT_NEAR(a.min, 110.f, 1e-4f);
+    EXPECT_NEAR(a.max, 130.f, 1e-4f);
+    const hitbox::Polygon farFirst{{{130.f, 0.f}, {110.f, 5.f}, {120.f, -5.f}}};
+    const Shadow b = projectOnto(farFirst, {1.f, 0.f});
+    EXPECT_NEAR(b.min, 110.f, 1e-4f);
+    EXPECT_NEAR(b.max, 130.f, 1e-4f);
+}
+
 TEST(Task2SeparatingAxis, BoxesWithAGapAreSeparatedAndTheGapIsMeasured)
 {
     const SatResult result =

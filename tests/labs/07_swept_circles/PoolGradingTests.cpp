@@ -61,6 +61,33 @@ TEST(Task1TimeOfImpact, FindsTheFirstOfTwoBallsInTheWay)
     EXPECT_NEAR(event.normal.x, -1.f, 1e-5f);
 }
 
+TEST(Task1TimeOfImpact, TheEarliestWinsInEitherListOrder)
+{
+    // The nearer ball listed first this time: a later hit found afterwards must not replace it.
+    PoolLevel level(
+        {ballAt({100.f, 500.f}, {6000.f, 0.f}), ballAt({250.f, 500.f}), ballAt({400.f, 500.f})},
+        bigTable);
+    const BallEvent event = level.findFirstEvent(0.1f);
+    ASSERT_TRUE(event.hit);
+    EXPECT_EQ(event.second, 1u);
+    EXPECT_NEAR(event.time, 122.f / 600.f, 1e-4f);
+}
+
+TEST(Task1TimeOfImpact, TouchingBallsCountByHowTheyMoveRelativeToEachOther)
+{
+    // Two balls touching (a hair of overlap left by rounding), both moving left. What counts
+    // is their relative velocity: the one behind faster is a hit now; the one in front
+    // faster is already leaving.
+    const hitbox::Vec2 left{300.f, 500.f};
+    const hitbox::Vec2 right{300.f + 2.f * radius - 0.001f, 500.f};
+    PoolLevel catching({ballAt(left, {-100.f, 0.f}), ballAt(right, {-300.f, 0.f})}, bigTable);
+    const BallEvent hit = catching.findFirstEvent(0.01f);
+    EXPECT_TRUE(hit.hit) << "the ball behind is faster: it pushes into the one in front";
+    EXPECT_NEAR(hit.time, 0.f, 1e-4f);
+    PoolLevel leaving({ballAt(left, {-300.f, 0.f}), ballAt(right, {-100.f, 0.f})}, bigTable);
+    EXPECT_FALSE(leaving.findFirstEvent(0.01f).hit) << "the ball in front is faster: they part";
+}
+
 TEST(Task1TimeOfImpact, BothBallsMovingMeetInTheMiddle)
 {
     PoolLevel level({ballAt({100.f, 500.f}, {1000.f, 0.f}), ballAt({300.f, 500.f}, {-1000.f, 0.f})},

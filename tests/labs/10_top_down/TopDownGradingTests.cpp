@@ -65,6 +65,39 @@ TEST(Task1PerAxis, WalkingIntoAWallStopsTheFeetFlushAgainstIt)
     EXPECT_FLOAT_EQ(feet.left + feet.width, 600.f);
 }
 
+TEST(Task1PerAxis, FromEachSideAMoveIntoAWallEndsFlushAgainstIt)
+{
+    // The wall 600..640 x 200..500. From each side, 5 px away (and 0.25 px away with a tiny
+    // move), a move 10 px (0.5 px) into it ends with the feet touching that side.
+    Game game;
+    const hitbox::Box wall{600.f, 200.f, 40.f, 300.f};
+    game.level.addWall(wall);
+    game.level.placePlayer({500.f, 350.f});
+    const Actor start = game.level.getPlayer();
+    const hitbox::Vec2 half = start.hitboxSize / 2.f;
+    struct Case
+    {
+        hitbox::Vec2 feet;
+        hitbox::Vec2 direction;
+        const char* side;
+    };
+    const Case cases[] = {{{wall.left - half.x, 350.f}, {1.f, 0.f}, "left"},
+                          {{wall.left + wall.width + half.x, 350.f}, {-1.f, 0.f}, "right"},
+                          {{620.f, wall.top - half.y}, {0.f, 1.f}, "top"},
+                          {{620.f, wall.top + wall.height + half.y}, {0.f, -1.f}, "bottom"}};
+    for (const Case& c : cases)
+        for (const float distance : {5.f, 0.25f})
+        {
+            Actor actor = start;
+            actor.feet = c.feet - c.direction * distance;
+            game.level.moveAndSlide(actor, c.direction * (2.f * distance));
+            EXPECT_FLOAT_EQ(actor.feet.x, c.feet.x)
+                << "moving into the wall's " << c.side << " side";
+            EXPECT_FLOAT_EQ(actor.feet.y, c.feet.y)
+                << "moving into the wall's " << c.side << " side";
+        }
+}
+
 TEST(Task1PerAxis, WalkingDiagonallyIntoAWallSlidesAlongIt)
 {
     Game game;

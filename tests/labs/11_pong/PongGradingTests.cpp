@@ -149,6 +149,7 @@ TEST(Task2BounceOffTopAndBottomWalls, PastTheTopItIsPutBackAndSentDown)
     EXPECT_GE(boxOf(ball).top, court.top) << "put back inside the court";
     EXPECT_LE(boxOf(ball).top, court.top + 5.001f) << "put back against the top wall";
     EXPECT_VEC_NEAR(ball.getVelocity(), sf::Vector2f(300.f, 200.f), 1e-3f);
+    EXPECT_FLOAT_EQ(ball.getPosition().x, 500.f) << "put back up or down only, not sideways";
 }
 
 TEST(Task2BounceOffTopAndBottomWalls, PastTheBottomItIsPutBackAndSentUp)
@@ -160,6 +161,7 @@ TEST(Task2BounceOffTopAndBottomWalls, PastTheBottomItIsPutBackAndSentUp)
     EXPECT_GE(hitbox::bottomOf(boxOf(ball)), court.bottom - 5.001f)
         << "put back against the bottom wall";
     EXPECT_VEC_NEAR(ball.getVelocity(), sf::Vector2f(-300.f, -200.f), 1e-3f);
+    EXPECT_FLOAT_EQ(ball.getPosition().x, 500.f) << "put back up or down only, not sideways";
 }
 
 TEST(Task2BounceOffTopAndBottomWalls, TouchingAWallIsNoBounce)
@@ -279,6 +281,24 @@ TEST(Task3ReturnOffThePaddle, TheAngleGrowsTowardsTheEndsAndIsNeverVertical)
             << "hit " << offset << " px from the middle: lower hits should leave more downwards";
         previous = angle;
     }
+}
+
+TEST(Task3ReturnOffThePaddle, WhereItHitCountsHalfTheBall)
+{
+    // The sheet's rule: where = offset / (paddleHeight / 2 + ballSize / 2), so a ball whose
+    // centre is level with the paddle's very end has not quite reached the steepest angle
+    // (its half sticks out past the end), and one that only clips the corner has.
+    const float reach = paddleHeight / 2.f + ballSize / 2.f;
+    for (const float offset : {paddleHeight / 4.f, paddleHeight / 2.f, -paddleHeight / 2.f})
+    {
+        const sf::Vector2f out = returnOffLeftPaddle(offset, {-ballSpeed, 0.f});
+        EXPECT_NEAR(degreesFromHorizontal(out), offset / reach * maxBounceDegrees, 0.2f)
+            << "hit " << offset << " px from the middle, with paddleHeight " << paddleHeight
+            << " and ballSize " << ballSize;
+    }
+    EXPECT_NEAR(degreesFromHorizontal(returnOffLeftPaddle(reach, {-ballSpeed, 0.f})),
+                maxBounceDegrees, 0.2f)
+        << "a ball clipping the bottom corner leaves at the steepest angle";
 }
 
 TEST(Task3ReturnOffThePaddle, TheRightPaddleSendsItLeft)
@@ -458,50 +478,97 @@ TEST(Task5SweepTheBallAgainstThePaddles, ABallThatMissesFliesOnTheWholeStep)
                     1e-3f);
 }
 
+TEST(Task5SweepTheBallAgainstThePaddles, AfterAHitTheBallUsesTheRestOfTheStep)
+{
+    // 60 px a step, 20 px in front of the left paddle: a third of the step to reach it, then
+    // (turned round by the response) the other 40 px away from it, all in one step.
+    Paddles paddles;
+    RecordingBall ball;
+    const float face = hitbox::rightOf(boxOf(paddles.left));
+    ball.placeAt({face + 20.f + ballSize / 2.f, paddles.left.getPosition().y}, {-60.f / dt, 0.f});
+    moveBall(ball, paddles.left, paddles.right, dt);
+    ASSERT_EQ(ball.hits.size(), 1u) << "the ball met the left paddle in this step";
+    EXPECT_NEAR(boxOf(ball).left, face + 40.f, 0.01f)
+        << "first up to the paddle (20 px), then the rest of the step (40 px) back: "
+           "move by ballMove * hit.time before the response, then on for what is left";
+}
+
+TEST(Task5SweepTheBallAgainstThePaddles, TwoHitsInOneStepMeetThePaddleWhereItIsThen)
+{
+    // A ball so fast it crosses the court twice a step: a quarter of the step to the left
+    // paddle, half a step across to the right one, which moves down 200 px during the step.
+    // At three quarters of the step it has moved 150 px and is in the ball's way; where it
+    // stood at the start, or only moved by its move over the rest of the step, it would not be.
+    Paddles paddles;
+    RecordingBall ball;
+    const float leftFace = hitbox::rightOf(boxOf(paddles.left));
+    const float rightFace = boxOf(paddles.right).left;
+    const float across = rightFace - leftFace - ballSize; // between the two faces
+    const float ballY = hitbox::bottomOf(boxOf(paddles.right)) + 125.f + ballSize / 2.f;
+    paddles.left.setPosition({paddles.left.getPosition().x, ballY});
+    paddles.right.setPlannedMove({0.f, 200.f});
+    ball.placeAt({leftFace + across / 2.f + ballSize / 2.f, ballY}, {-2.f * across / dt, 0.f});
+    moveBall(ball, paddles.left, paddles.right, dt);
+    ASSERT_EQ(ball.hits.size(), 2u) << "the left paddle, then the right one, in one step";
+    EXPECT_EQ(ball.hits[0], &paddles.left);
+    EXPECT_EQ(ball.hits[1], &paddles.right)
+        << "the right paddle, 3/4 through its move (150 px down), was in the ball's way";
+    EXPECT_NEAR(hitbox::rightOf(boxOf(ball)), rightFace - across / 2.f, 0.05f)
+        << "after the second hit, the last quarter of the step back to the left";
+}
+
+TEST(Task5SweepTheBallAgainstThePaddles, ABallStartingInsideAPaddleIsPushedOut)
+{
+    // A paddle moved into the ball between steps: the ball starts 3 px inside its face.
+    Paddles paddles;
+    RecordingBall ball;
+    const float face = boxOf(paddles.right).left;
+    ball.placeAt({face + 3.f - ballSize / 2.f, paddles.right.getPosition().y}, {30.f / dt, 0.f});
+    moveBall(ball, paddles.left, paddles.right, dt);
+    ASSERT_FALSE(ball.hits.empty()) << "a ball inside the paddle touches it";
+    EXPECT_EQ(ball.hits[0], &paddles.right);
+    EXPECT_LE(hitbox::rightOf(boxOf(ball)), face + 0.01f)
+        << "pushed out along the hit's normal (by its depth) when the hit started inside";
+}
+
 TEST(Task5SweepTheBallAgainstThePaddles, InAMatchOfVeryFastBallsNoneCrossesAPaddle)
 {
-    // Two players, scripted keys, fixed seed. Every half second the test puts the paddles
-    // anywhere in the court and shoots a very fast ball from the middle at one of them. After each
-    // step, a ball whose move met a paddle's front face (the framework's sweep says so) must still
-    // be in front of it.
-    PongLevel level(9);
-    level.setComputerPlaysRight(false);
-    Input input;
+    // The test plays the match itself with moveBall alone (so task 1's paddle code and task
+    // 4's scoring play no part): every half second it puts the paddles anywhere in the court
+    // and shoots a very fast ball from the middle at one of them; each step each paddle
+    // plans a random move up or down. After each step, a ball whose move met a paddle's
+    // front face (the framework's sweep says so) must still be in front of it.
+    Paddles paddles;
+    RecordingBall ball;
     std::mt19937 random(21);
+    std::uniform_real_distribution<float> paddleY(court.top + paddleHeight / 2.f,
+                                                  court.bottom - paddleHeight / 2.f);
+    std::uniform_real_distribution<float> paddleMove(-paddleSpeed * dt, paddleSpeed * dt);
     int faceHits = 0;
     for (int step = 0; step < 30 * 120; ++step)
     {
         if (step % 60 == 0)
         {
-            input.setKeyUp(sf::Keyboard::Key::W);
-            input.setKeyUp(sf::Keyboard::Key::S);
-            input.setKeyUp(sf::Keyboard::Key::Up);
-            input.setKeyUp(sf::Keyboard::Key::Down);
-            input.setKeyDown(random() % 2 ? sf::Keyboard::Key::W : sf::Keyboard::Key::S);
-            input.setKeyDown(random() % 2 ? sf::Keyboard::Key::Up : sf::Keyboard::Key::Down);
-            // Each paddle put somewhere in the court, and the ball shot at one of them.
-            std::uniform_real_distribution<float> paddleY(court.top + paddleHeight / 2.f,
-                                                          court.bottom - paddleHeight / 2.f);
-            for (Paddle* paddle : {&level.getLeftPaddle(), &level.getRightPaddle()})
+            for (Paddle* paddle : {&paddles.left, &paddles.right})
                 paddle->setPosition({paddle->getPosition().x, paddleY(random)});
-            const Paddle& target = random() % 2 ? level.getLeftPaddle() : level.getRightPaddle();
+            const Paddle& target = random() % 2 ? paddles.left : paddles.right;
             const sf::Vector2f from{courtMiddleX, courtMiddleY};
             const sf::Vector2f aim = target.getPosition() - from;
             const float speed = std::uniform_real_distribution<float>(2000.f, 40000.f)(random);
-            level.getBall().placeAt(from, aim / speedOf(aim) * speed);
+            ball.placeAt(from, aim / speedOf(aim) * speed);
         }
-        level.handleInput(input, dt);
-        const hitbox::Box ballBefore = boxOf(level.getBall());
-        const sf::Vector2f move = level.getBall().getVelocity() * dt;
-        const hitbox::Box leftBefore = boxOf(level.getLeftPaddle());
-        const hitbox::Box rightBefore = boxOf(level.getRightPaddle());
-        level.update(dt);
-        input.update();
-        const sf::Vector2f leftMove =
-            level.getLeftPaddle().getPosition() - hitbox::toSfml(hitbox::centerOf(leftBefore));
-        const sf::Vector2f rightMove =
-            level.getRightPaddle().getPosition() - hitbox::toSfml(hitbox::centerOf(rightBefore));
-        const hitbox::Box ballAfter = boxOf(level.getBall());
+        const sf::Vector2f leftMove{0.f, paddleMove(random)};
+        const sf::Vector2f rightMove{0.f, paddleMove(random)};
+        paddles.left.setPlannedMove(leftMove);
+        paddles.right.setPlannedMove(rightMove);
+        const hitbox::Box ballBefore = boxOf(ball);
+        const sf::Vector2f move = ball.getVelocity() * dt;
+        const hitbox::Box leftBefore = boxOf(paddles.left);
+        const hitbox::Box rightBefore = boxOf(paddles.right);
+        moveBall(ball, paddles.left, paddles.right, dt);
+        paddles.left.finishMove();
+        paddles.right.finishMove();
+        const hitbox::Box ballAfter = boxOf(ball);
         if (shouldHitFace(ballBefore, move, leftBefore, leftMove, 1.f))
         {
             ++faceHits;
@@ -555,8 +622,10 @@ TEST(Task6ComputerOpponent, ItReturnsAnEasyBall)
         Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
         Ball ball;
         const float beside = paddleHeight / 2.f + ballSize / 2.f + 40.f;
+        // The test's own speed: time for the paddle to travel three times the 40 px it needs.
+        const float easySpeed = 600.f / (3.f * 40.f / (computerTopSpeed * paddleSpeed));
         ball.placeAt({boxOf(paddle).left - 600.f, paddle.getPosition().y + side * beside},
-                     {ballSpeed, 0.f});
+                     {easySpeed, 0.f});
         float fastest = 0.f;
         EXPECT_TRUE(computerMeets(paddle, ball, fastest))
             << "a flat ball " << beside << " px " << (side < 0 ? "above" : "below")
@@ -585,19 +654,50 @@ TEST(Task6ComputerOpponent, ItIsNeverFasterThanItsTopSpeed)
 
 TEST(Task6ComputerOpponent, AShotPlacedOutOfItsReachBeatsIt)
 {
-    // Its paddle in the middle; a flat ball 300 px away, placed further from the paddle than
-    // it can travel at its top speed before the ball arrives.
+    // Its paddle touching the bottom wall, a flat ball along the top wall 300 px away. The
+    // test picks the ball's speed itself, so the paddle at its top speed covers only half
+    // the gap before the ball arrives, whatever the numbers in Court.h are.
     Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
+    paddle.setPosition({paddle.getPosition().x, court.bottom - paddleHeight / 2.f});
+    const float ballY = court.top + ballSize / 2.f;
+    const float gap = paddle.getPosition().y - ballY - paddleHeight / 2.f - ballSize / 2.f;
+    ASSERT_GT(gap, 0.f) << "Court.h: the court should be taller than a paddle and a ball";
+    const float arrives = (gap / 2.f) / (computerTopSpeed * paddleSpeed);
     Ball ball;
-    const float arrives = 300.f / ballSpeed;
-    const float reach = computerTopSpeed * paddleSpeed * arrives;
-    const float offset = paddleHeight / 2.f + ballSize / 2.f + reach + 20.f;
-    const float ballY = paddle.getPosition().y - offset;
-    ASSERT_GE(ballY - ballSize / 2.f, court.top)
-        << "the numbers in Court.h leave no room for this test";
-    ball.placeAt({boxOf(paddle).left - 300.f - ballSize / 2.f, ballY}, {ballSpeed, 0.f});
+    ball.placeAt({boxOf(paddle).left - 300.f - ballSize / 2.f, ballY}, {300.f / arrives, 0.f});
     float fastest = 0.f;
     EXPECT_FALSE(computerMeets(paddle, ball, fastest))
         << "the computer reached a ball it should not be fast enough to reach";
     EXPECT_GT(fastest, 0.f) << "it did not even try";
+}
+
+TEST(Task6ComputerOpponent, CloseToItsTargetItStopsThereInsteadOfShaking)
+{
+    // The ball comes straight at it, 1 px below the paddle's middle: one step at top speed
+    // would overshoot by more than a pixel, so it moves just the pixel (dividing the distance
+    // by paddleSpeed * dt turns it into a direction).
+    Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
+    const float startY = paddle.getPosition().y;
+    Ball ball;
+    ball.placeAt({paddle.getPosition().x - 400.f, startY + 1.f}, {ballSpeed, 0.f});
+    const float direction = computerDirection(ball, paddle, dt);
+    const float moved = std::clamp(direction, -1.f, 1.f) * paddleSpeed * dt;
+    EXPECT_GE(moved, 0.f) << "the ball is below: it should move down, or not at all";
+    EXPECT_LE(moved, 1.f + 0.01f) << "it moved " << moved << " px towards a target 1 px away";
+}
+
+TEST(Task6ComputerOpponent, WhenTheBallGoesAwayItGoesBackToTheMiddle)
+{
+    for (const float side : {-1.f, 1.f})
+    {
+        Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
+        paddle.setPosition({paddle.getPosition().x, courtMiddleY + side * 100.f});
+        Ball ball;
+        // Going away, level with the paddle (so heading for the ball would mean standing still).
+        ball.placeAt({courtMiddleX, paddle.getPosition().y}, {-ballSpeed, 0.f});
+        const float direction = computerDirection(ball, paddle, dt);
+        EXPECT_LT(direction * side, 0.f)
+            << "100 px " << (side < 0 ? "above" : "below")
+            << " the middle with the ball going away: it should head back to the middle";
+    }
 }

@@ -137,6 +137,18 @@ TEST(Task2UniformGrid, TestsFewerPairsThanBruteForce)
     EXPECT_TRUE(samePairs(search.pairs, bruteForcePairs(boxes).pairs));
     EXPECT_LT(search.exactTests, bruteForcePairs(boxes).exactTests / 20)
         << "boxes along a diagonal share cells only with their neighbours";
+    EXPECT_GE(search.exactTests, static_cast<long long>(search.pairs.size()))
+        << "every pair found was tested exactly, and counted";
+}
+
+TEST(Task2UniformGrid, EachPairSharingCellsIsTestedOnce)
+{
+    // Two overlapping boxes sharing four cells, and a third alone: one exact test, not four.
+    const std::vector<Box> boxes = {
+        {1.f, 1.f, 14.f, 14.f}, {2.f, 2.f, 15.f, 15.f}, {40.f, 40.f, 44.f, 44.f}};
+    const PairSearch search = gridPairs(boxes, 8.f);
+    EXPECT_TRUE(samePairs(search.pairs, {{0, 1}}));
+    EXPECT_EQ(search.exactTests, 1) << "a pair that shares several cells is tested once";
 }
 
 TEST(Task3BoundFirst, FindsTheSameBallPairsAsTheExactTest)

@@ -84,6 +84,26 @@ TEST(Task1SubSteps, EachSubStepIsNoLongerThanTheLimit)
     EXPECT_EQ(result.overlapTests, 13);
 }
 
+TEST(Task1SubSteps, StopsTestingAtTheFirstHit)
+{
+    // 100 pixels in 13 sub-steps of 100/13 px, the bullet's right side 20 px before the
+    // wall: the third sub-step reaches it. After that hit the step is over: no more moves,
+    // no more overlap tests (the count is what the level shows as the step's cost).
+    const MoveResult result =
+        subSteppedStep(bulletAt(wall.left - 8.f - 20.f), 12000.f, dt, wall, maxSubStep);
+    EXPECT_TRUE(result.hitWall);
+    EXPECT_EQ(result.bullet.right, wall.left);
+    EXPECT_EQ(result.overlapTests, 3) << "sub-steps 1 and 2 are free, the 3rd hits: then stop";
+}
+
+TEST(Task1SubSteps, AShortStepIsOneSubStep)
+{
+    // 5 px, shorter than maxSubStep: one move, one overlap test, as a discrete step.
+    const MoveResult result = subSteppedStep(bulletAt(0.f, 200.f), 600.f, dt, wall, maxSubStep);
+    EXPECT_NEAR(result.bullet.left, 5.f, 1e-4f);
+    EXPECT_EQ(result.overlapTests, 1);
+}
+
 TEST(Task1SubSteps, TouchingTheWallIsNotAHit)
 {
     // Against the wall and moving away: free. Against it and moving in: it stays there.
@@ -127,4 +147,32 @@ TEST(Task2SpeculativeContact, OnlyAWallLevelWithTheBulletStopsIt)
     const MoveResult away = speculativeStep(bulletAt(wall.right), 600.f, dt, wall);
     EXPECT_FALSE(away.hitWall);
     EXPECT_NEAR(away.bullet.left, wall.right + 5.f, 1e-3f);
+}
+
+TEST(Task2SpeculativeContact, TheEdgesOfTheRule)
+{
+    // Touching the wall's side and moving in: it stays there, a hit (both sides).
+    MoveResult in = speculativeStep(bulletAt(wall.left - 8.f), 600.f, dt, wall);
+    EXPECT_TRUE(in.hitWall);
+    EXPECT_EQ(in.bullet.right, wall.left);
+    in = speculativeStep(bulletAt(wall.right), -600.f, dt, wall);
+    EXPECT_TRUE(in.hitWall);
+    EXPECT_EQ(in.bullet.left, wall.right);
+    // At rest against either side: touching is not a hit, and nothing moves.
+    for (const float left : {wall.left - 8.f, wall.right})
+    {
+        const MoveResult still = speculativeStep(bulletAt(left), 0.f, dt, wall);
+        EXPECT_FALSE(still.hitWall) << "a bullet at rest touching the wall at left " << left;
+        EXPECT_EQ(still.bullet.left, left);
+    }
+    // A tiny move (0.5 px) from 0.25 px away, from either side: it ends against the wall.
+    const MoveResult tinyRight = speculativeStep(bulletAt(wall.left - 8.25f), 60.f, dt, wall);
+    EXPECT_EQ(tinyRight.bullet.right, wall.left);
+    const MoveResult tinyLeft = speculativeStep(bulletAt(wall.right + 0.25f), -60.f, dt, wall);
+    EXPECT_EQ(tinyLeft.bullet.left, wall.right);
+    // Sliding past just above the wall (the bullet's bottom on the wall's top edge): no wall.
+    const Box above{wall.left - 20.f, wall.top - 4.f, wall.left - 12.f, wall.top};
+    const MoveResult past = speculativeStep(above, 6000.f, dt, wall);
+    EXPECT_FALSE(past.hitWall) << "touching the wall's top edge is not level with it";
+    EXPECT_NEAR(past.bullet.left, above.left + 50.f, 1e-3f);
 }

@@ -171,6 +171,17 @@ TEST(Task2CollectCoins, OnlyThePlayerCollects)
     EXPECT_TRUE(coin.isCollected());
 }
 
+TEST(Task2CollectCoins, ACollectedCoinIsSkippedForTheRestOfTheCheck)
+{
+    // Collected means dead at once (setAlive(false)): the World skips it for the rest of this
+    // checkCollisions, so a second player touching it in the same check finds nothing there.
+    Coin coin(middle);
+    ASSERT_TRUE(coin.isAlive());
+    Player player(middle);
+    coin.collisionResponse(&player);
+    EXPECT_FALSE(coin.isAlive()) << "a collected coin should be set dead (setAlive(false))";
+}
+
 TEST(Task2CollectCoins, CollectedCoinsLeaveTheWorldBeforeTheyAreDestroyed)
 {
     // The World keeps pointers to objects it does not own: a coin destroyed while still in
