@@ -1,6 +1,7 @@
 // Contact events (issue 27, item 1): enter the first step a pair collides, stay every further
 // step, exit the first step it does not - also when one of the two is removed, destroyed,
 // killed or stops being a collider. Checked over every scripted sequence of four steps.
+#include "hitbox/objects/ExplainPair.h"
 #include "hitbox/objects/GameObject.h"
 #include "hitbox/objects/World.h"
 
@@ -271,4 +272,26 @@ TEST(WorldEvents, AHundredThousandObjectsEachEnterOnceAndExitOnce)
         ASSERT_EQ(event.phase, ContactPhase::Exit);
     world.checkCollisions();
     EXPECT_TRUE(world.getEvents().empty());
+}
+
+TEST(ExplainPair, NamesTheObjectsAndSaysWhyDeadOrNotColliderObjectsNeverCollide)
+{
+    GameObject ball, paddle;
+    ball.setName("ball");
+    paddle.setName("paddle");
+    ball.setSize({10.f, 10.f});
+    paddle.setSize({20.f, 80.f});
+    ball.setPosition({100.f, 40.f});
+    paddle.setPosition({95.f, 60.f});
+    const hitbox::Explanation apart = hitbox::explain(ball, paddle);
+    EXPECT_FALSE(apart.collides);
+    EXPECT_EQ(apart.verdict, "'ball' and 'paddle' do not collide: on y they are apart");
+    EXPECT_EQ(apart.steps[1], "y: 'ball' [40, 50] and 'paddle' [60, 140] are 10 apart");
+    ball.setPosition({100.f, 65.f});
+    EXPECT_TRUE(hitbox::explain(ball, paddle).collides);
+    paddle.setCollider(false);
+    EXPECT_EQ(
+        hitbox::explain(ball, paddle).verdict,
+        "'ball' and 'paddle' do not collide: 'paddle' is not a collider (setCollider(false))");
+    EXPECT_FALSE(hitbox::explain(ball, paddle).collides);
 }
