@@ -111,9 +111,20 @@ void DebugRenderer::draw(sf::RenderTarget& target) const
     target.draw(vertices);
 }
 
+void DebugRenderer::panel(const std::vector<std::string>& lines)
+{
+    panelLines.insert(panelLines.end(), lines.begin(), lines.end());
+}
+
+const std::vector<std::string>& DebugRenderer::getPanel() const
+{
+    return panelLines;
+}
+
 void DebugRenderer::clear()
 {
     vertices.clear();
+    panelLines.clear();
 }
 
 const sf::VertexArray& DebugRenderer::getVertices() const

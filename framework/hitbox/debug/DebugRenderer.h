@@ -10,6 +10,9 @@
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
 
+#include <string>
+#include <vector>
+
 class GameObject;
 namespace sf
 {
@@ -47,6 +50,11 @@ public:
     // A contact point and its normal, 24 pixels long.
     void contact(const Contact& contact);
 
+    // Lines of text for the panel in the top-left corner of the window while F1 is on (the
+    // window draws them with its font; e.g. explain's answer). Each call adds lines.
+    void panel(const std::vector<std::string>& lines);
+    [[nodiscard]] const std::vector<std::string>& getPanel() const;
+
     // Draw everything collected, in one call, then keep it (call clear() to start again).
     void draw(sf::RenderTarget& target) const;
     // Forgets everything collected.
@@ -56,6 +64,7 @@ public:
 
 private:
     sf::VertexArray vertices{sf::PrimitiveType::Triangles};
+    std::vector<std::string> panelLines;
 };
 
 } // namespace hitbox

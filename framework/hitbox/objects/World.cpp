@@ -94,6 +94,7 @@ void World::takeFrom(World& other) noexcept
     other.contacts.clear();
     pendingUpdates = std::move(other.pendingUpdates);
     events = std::move(other.events);
+    recentChanges = std::move(other.recentChanges);
     collisions = std::move(other.collisions);
     exactTests = other.exactTests;
     for (std::uint32_t index = 0; index < entries.size(); ++index)
@@ -133,6 +134,20 @@ void World::add(GameObject& object, std::uint32_t layer, std::uint32_t mask, Sha
     entries.push_back({&object, layer, mask, shape, body, nextSerial++, 0, false});
     object.worlds.set(this, static_cast<std::uint32_t>(entries.size() - 1));
     ++liveCount;
+}
+
+PairEvent World::getLastChange() const
+{
+    for (auto it = recentChanges.rbegin(); it != recentChanges.rend(); ++it)
+        if (it->first != nullptr && it->second != nullptr)
+            return *it;
+    return {};
+}
+
+World::Shape World::getShape(const GameObject& object) const
+{
+    const WorldLink* link = object.worlds.find(this);
+    return link != nullptr ? entries[link->index].shape : Shape::Box;
 }
 
 bool World::contains(const GameObject& object) const
@@ -180,6 +195,13 @@ void World::forgetDestroyed(const GameObject& object)
             pair.second = nullptr;
     }
     for (PairEvent& event : events)
+    {
+        if (event.first == &object)
+            event.first = nullptr;
+        if (event.second == &object)
+            event.second = nullptr;
+    }
+    for (PairEvent& event : recentChanges)
     {
         if (event.first == &object)
             event.first = nullptr;
@@ -372,6 +394,12 @@ void World::tell(const ContactRecord& record, ContactPhase phase)
     GameObject* a = entries[record.first].object;
     GameObject* b = entries[record.second].object;
     events.push_back({phase, a, b, record.contact, record.trigger, step});
+    if (phase != ContactPhase::Stay)
+    {
+        if (recentChanges.size() == 16)
+            recentChanges.erase(recentChanges.begin());
+        recentChanges.push_back(events.back());
+    }
     void (GameObject::*hook)(const CollisionEvent&) = &GameObject::onCollisionEnter;
     if (phase == ContactPhase::Stay)
         hook = &GameObject::onCollisionStay;

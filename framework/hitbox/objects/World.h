@@ -120,6 +120,11 @@ public:
     // The enter/stay/exit events of the last checkCollisions(), in the order they were told,
     // plus the exits from remove()/destruction since (cleared at the start of each call).
     [[nodiscard]] const std::vector<PairEvent>& getEvents() const { return events; }
+    // The latest Enter or Exit (of the last 16) whose two objects still exist: the pair "that
+    // changed", which the debug overlay explains. Both pointers nullptr when there is none.
+    [[nodiscard]] PairEvent getLastChange() const;
+    // Which exact test `object` takes part in (Box when it is not in this world).
+    [[nodiscard]] Shape getShape(const GameObject& object) const;
     // How many checkCollisions() calls so far (the step events are stamped with).
     [[nodiscard]] std::uint64_t getStep() const { return step; }
     // What the broadphase did last time, and how many exact tests followed.
@@ -200,6 +205,7 @@ private:
     std::unordered_map<PairKey, ContactRecord, PairKeyHash> contacts;
     std::vector<PendingUpdate> pendingUpdates;
     std::vector<PairEvent> events;
+    std::vector<PairEvent> recentChanges; // the last 16 Enter/Exit events, oldest first
     // Reused every call, so a steady game does not allocate.
     std::vector<BroadphaseItem> items;
     std::vector<std::uint32_t> itemEntry; // items[k] is entries[itemEntry[k]]
