@@ -5,6 +5,7 @@
 // (so no coin is collected and no rule matters), task 2's have no enemies, task 3's no
 // coins. A mistake in one task costs that task alone.
 #include "labs/LabTesting.h"
+#include "support/CollisionMatchers.h"
 
 #include "Pieces.h"
 #include "Rules.h"
@@ -197,6 +198,8 @@ TEST(Task2CollectCoins, CoinOnlyTouchingThePlayerStays)
     // right side, and the two never overlap.
     WorldLevel level = emptyLevel(middle);
     level.addCoin(middle + sf::Vector2f{playerHalf() + coinRadiusNow(), 0.f});
+    EXPECT_THAT(level.getCoin(0),
+                hitbox::testing::NotCollides(level.getPlayer(), hitbox::World::Shape::Circle));
     runSteps(level, 10);
     EXPECT_EQ(level.getScore(), 0);
     EXPECT_EQ(level.getCoinCount(), 1);
