@@ -1,5 +1,6 @@
 // SandboxLevel.h - the framework demo: move a box or a circle with the mouse over a few
-// shapes and watch the tests answer (debug outlines turn red, contact normals appear).
+// shapes and watch the tests answer (F1: outlines turn hatched vermillion where they collide,
+// dashed yellow where edges only touch; contact normals appear).
 #pragma once
 
 #include "hitbox/app/Level.h"
@@ -31,6 +32,8 @@ private:
 
     void addObstacle(sf::Vector2f position, sf::Vector2f size, bool isCircle);
     hitbox::Contact testCursorAgainst(Obstacle& obstacle);
+    // Its box's edges meet another obstacle's box with no shared area (boxes only).
+    bool edgesMeetAnother(const Obstacle& obstacle) const;
 
     std::vector<Obstacle> obstacles;
     GameObject cursor;

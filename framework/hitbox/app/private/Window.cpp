@@ -30,10 +30,13 @@ struct FrameSettings
 
 std::string helpLine(const Level& level, const FrameSettings& settings)
 {
-    std::string line = sharedKeysHelp();
+    // With F1 on, the line starts with what the debug cues mean, where it is never cut off.
+    std::string line = settings.showDebug ? std::string(DebugRenderer::legend) + "   |   " : "";
+    line += sharedKeysHelp();
     const std::string levelKeys = level.getHelpText();
     if (!levelKeys.empty())
         line += "   |   " + levelKeys;
+
     if (settings.framesPerSecond > 0)
         line += "   |   " + std::to_string(settings.framesPerSecond) + " fps";
     return line;
