@@ -61,6 +61,14 @@ bool SandboxLevel::edgesMeetAnother(const Obstacle& obstacle) const
     return false;
 }
 
+// Overlapping the cursor shape; else touching another obstacle; else free.
+hitbox::DebugState SandboxLevel::stateOf(const Obstacle& obstacle) const
+{
+    if (obstacle.touching)
+        return hitbox::DebugState::Overlapping;
+    return edgesMeetAnother(obstacle) ? hitbox::DebugState::Touching : hitbox::DebugState::Free;
+}
+
 void SandboxLevel::handleInput(const Input& input, float)
 {
     if (input.getMousePosition() != lastMouseReading)
@@ -137,13 +145,10 @@ void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
     bool cursorTouching = false;
     for (const Obstacle& obstacle : obstacles)
     {
-        const hitbox::DebugState state = obstacle.touching ? hitbox::DebugState::Overlapping
-                                         : edgesMeetAnother(obstacle) ? hitbox::DebugState::Touching
-                                                                      : hitbox::DebugState::Free;
         if (obstacle.isCircle)
-            debug.objectCircle(obstacle.shape, state);
+            debug.objectCircle(obstacle.shape, stateOf(obstacle));
         else
-            debug.objectBox(obstacle.shape, state);
+            debug.objectBox(obstacle.shape, stateOf(obstacle));
         // The normal says which way the cursor shape would be pushed out.
         debug.contact(obstacle.contact);
         cursorTouching = cursorTouching || obstacle.touching;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "hitbox/app/Level.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/objects/GameObject.h"
 
@@ -34,6 +35,8 @@ private:
     hitbox::Contact testCursorAgainst(Obstacle& obstacle);
     // Its box's edges meet another obstacle's box with no shared area (boxes only).
     bool edgesMeetAnother(const Obstacle& obstacle) const;
+    // What the debug view shows for it (DebugRenderer.h's three states).
+    hitbox::DebugState stateOf(const Obstacle& obstacle) const;
 
     std::vector<Obstacle> obstacles;
     GameObject cursor;
