@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Fuzzes lab 9's level parser and the shared command line with libFuzzer (clang-14, with
+# Fuzzes lab 9's level parser, the shared command line and a World changed from inside its
+# own responses with libFuzzer (clang-14, with
 # AddressSanitizer and UndefinedBehaviorSanitizer) for a fixed time each, then prints the
 # executions per second. Builds in build/fuzz, apart from the g++ builds.
-# Usage: ./scripts/fuzz.sh [SECONDS_PER_TARGET]     (default 30; CI runs 30 + 30)
+# Usage: ./scripts/fuzz.sh [SECONDS_PER_TARGET]     (default 30; CI runs 30 + 30 + 30)
 # A crash stops it with the input's path: copy that file into tests/fuzz/corpus/TARGET/,
 # where every build replays it as a regression test (fuzz.TARGET.ReplaysTheCorpus).
 set -euo pipefail
@@ -19,12 +20,12 @@ mkdir -p build/fuzz
 if ! { cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "${launcher[@]}" -DHITBOX_FUZZ=ON -DHITBOX_BUILD_BENCHMARKS=OFF \
     "-DCMAKE_CXX_FLAGS=-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined" &&
-    cmake --build build/fuzz -j2 --target options_fuzzer level_fuzzer; } >build/fuzz/build.log 2>&1; then
+    cmake --build build/fuzz -j2 --target options_fuzzer level_fuzzer world_fuzzer; } >build/fuzz/build.log 2>&1; then
     tail -n 30 build/fuzz/build.log >&2
     echo "fuzz.sh: the fuzz targets did not build (full log: build/fuzz/build.log)" >&2
     exit 1
 fi
-for target in level options; do
+for target in level options world; do
     # New inputs go to the build folder; the repository's corpus is read only.
     mkdir -p "build/fuzz/corpus-$target"
     log="build/fuzz/$target.log"

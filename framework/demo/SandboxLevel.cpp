@@ -2,6 +2,7 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/geometry/Overlap.h"
 #include "hitbox/objects/Collision.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
@@ -22,6 +23,9 @@ SandboxLevel::SandboxLevel()
     addObstacle({250.f, 460.f}, {90.f, 90.f}, true);
     addObstacle({600.f, 470.f}, {60.f, 180.f}, false);
     addObstacle({950.f, 460.f}, {160.f, 160.f}, true);
+    // Two boxes side by side whose edges meet: the debug view's "touching" state.
+    addObstacle({790.f, 580.f}, {100.f, 60.f}, false);
+    addObstacle({890.f, 580.f}, {100.f, 60.f}, false);
 
     cursor.setSize(cursorSize);
     cursor.setOrigin(cursorSize / 2.f);
@@ -36,6 +40,33 @@ void SandboxLevel::addObstacle(sf::Vector2f position, sf::Vector2f size, bool is
     obstacle.shape.setPosition(position);
     obstacle.isCircle = isCircle;
     obstacles.push_back(obstacle);
+}
+
+// Boxes whose edges meet without sharing area (the edge rule's "touching").
+bool SandboxLevel::edgesMeetAnother(const Obstacle& obstacle) const
+{
+    if (obstacle.isCircle)
+        return false;
+    const hitbox::Box a = hitbox::toBox(obstacle.shape.getCollisionBox());
+    for (const Obstacle& other : obstacles)
+    {
+        if (&other == &obstacle || other.isCircle)
+            continue;
+        const hitbox::Box b = hitbox::toBox(other.shape.getCollisionBox());
+        const bool reachX = a.left <= b.left + b.width && b.left <= a.left + a.width;
+        const bool reachY = a.top <= b.top + b.height && b.top <= a.top + a.height;
+        if (reachX && reachY && !hitbox::boxVsBox(a, b))
+            return true;
+    }
+    return false;
+}
+
+// Overlapping the cursor shape; else touching another obstacle; else free.
+hitbox::DebugState SandboxLevel::stateOf(const Obstacle& obstacle) const
+{
+    if (obstacle.touching)
+        return hitbox::DebugState::Overlapping;
+    return edgesMeetAnother(obstacle) ? hitbox::DebugState::Touching : hitbox::DebugState::Free;
 }
 
 void SandboxLevel::handleInput(const Input& input, float)
@@ -115,9 +146,9 @@ void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
     for (const Obstacle& obstacle : obstacles)
     {
         if (obstacle.isCircle)
-            debug.objectCircle(obstacle.shape, obstacle.touching);
+            debug.objectCircle(obstacle.shape, stateOf(obstacle));
         else
-            debug.objectBox(obstacle.shape, obstacle.touching);
+            debug.objectBox(obstacle.shape, stateOf(obstacle));
         // The normal says which way the cursor shape would be pushed out.
         debug.contact(obstacle.contact);
         cursorTouching = cursorTouching || obstacle.touching;

@@ -1,8 +1,10 @@
 // SandboxLevel.h - the framework demo: move a box or a circle with the mouse over a few
-// shapes and watch the tests answer (debug outlines turn red, contact normals appear).
+// shapes and watch the tests answer (F1: outlines turn hatched vermillion where they collide,
+// dashed yellow where edges only touch; contact normals appear).
 #pragma once
 
 #include "hitbox/app/Level.h"
+#include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/objects/GameObject.h"
 
@@ -31,6 +33,10 @@ private:
 
     void addObstacle(sf::Vector2f position, sf::Vector2f size, bool isCircle);
     hitbox::Contact testCursorAgainst(Obstacle& obstacle);
+    // Its box's edges meet another obstacle's box with no shared area (boxes only).
+    bool edgesMeetAnother(const Obstacle& obstacle) const;
+    // What the debug view shows for it (DebugRenderer.h's three states).
+    hitbox::DebugState stateOf(const Obstacle& obstacle) const;
 
     std::vector<Obstacle> obstacles;
     GameObject cursor;

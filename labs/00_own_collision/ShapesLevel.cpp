@@ -132,16 +132,17 @@ void ShapesLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     auto outline = [&debug](const Shape& shape)
     {
-        const sf::Color color =
-            shape.hit ? hitbox::DebugRenderer::touchingColor : hitbox::DebugRenderer::freeColor;
+        // Colour and line style: hatched when it collides, a plain outline when free.
+        const hitbox::DebugState state =
+            shape.hit ? hitbox::DebugState::Overlapping : hitbox::DebugState::Free;
         if (shape.isCircle)
         {
             const WorldCircle circle = MyCollision::worldCircle(shape.object);
-            debug.circle({hitbox::toVec2(circle.center), circle.radius}, color);
+            debug.circle(hitbox::Circle{hitbox::toVec2(circle.center), circle.radius}, state);
         }
         else
         {
-            debug.box(hitbox::toBox(rectangleOf(MyCollision::worldBox(shape.object))), color);
+            debug.box(hitbox::toBox(rectangleOf(MyCollision::worldBox(shape.object))), state);
         }
     };
     for (const Shape& shape : shapes)

@@ -175,9 +175,8 @@ void PointInBoxLevel::renderDebug(hitbox::DebugRenderer& debug) const
     for (int index = 0; index < getBoxCount(); ++index)
     {
         const sf::FloatRect onScreen = camera.transformRect(boxes[index].getCollisionBox());
-        debug.box(hitbox::toBox(onScreen), index == hoveredBox
-                                               ? hitbox::DebugRenderer::touchingColor
-                                               : hitbox::DebugRenderer::freeColor);
+        debug.box(hitbox::toBox(onScreen),
+                  index == hoveredBox ? hitbox::DebugState::Overlapping : hitbox::DebugState::Free);
     }
     debug.cross(hitbox::toVec2(getCamera().transformPoint(mouseInScene)), 10.f,
                 hitbox::DebugRenderer::hintColor);

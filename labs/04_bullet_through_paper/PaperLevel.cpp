@@ -313,7 +313,7 @@ void PaperLevel::renderDebug(hitbox::DebugRenderer& debug) const
         debug.box(hitbox::toBox(bullet->getLastSweptArea()),
                   bullet->couldTunnel() ? warningColor : hitbox::DebugRenderer::hintColor);
         debug.box(hitbox::toBox(bullet->getCollisionBox()),
-                  bullet->hitTheWall() ? hitbox::DebugRenderer::touchingColor
+                  bullet->hitTheWall() ? hitbox::DebugRenderer::overlappingColor
                                        : hitbox::DebugRenderer::freeColor);
     }
 }

@@ -430,7 +430,7 @@ void RotatedLevel::renderDebug(hitbox::DebugRenderer& debug) const
         }
         debug.box(boundsOf(shapes[i]), hitbox::DebugRenderer::hintColor);
         outline = shapes[i].polygon();
-        const sf::Color color = overlapping[i] ? hitbox::DebugRenderer::touchingColor
+        const sf::Color color = overlapping[i] ? hitbox::DebugRenderer::overlappingColor
                                                : hitbox::DebugRenderer::freeColor;
         for (std::size_t p = 0; p < outline.points.size(); ++p)
             debug.line(outline.points[p], outline.points[(p + 1) % outline.points.size()], color);

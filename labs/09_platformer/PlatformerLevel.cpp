@@ -330,17 +330,17 @@ void PlatformerLevel::renderDebug(hitbox::DebugRenderer& debug) const
                                                     ? DebugRenderer::freeColor
                                                     : DebugRenderer::hintColor);
     for (const hitbox::Box& tile : pushingTiles)
-        debug.box(tile, DebugRenderer::touchingColor);
+        debug.box(tile, hitbox::DebugState::Overlapping);
     debug.box(sweptBounds, DebugRenderer::hintColor);
 
     const hitbox::Box box = player.getBox();
-    debug.box(box, contacts.empty() ? DebugRenderer::freeColor : DebugRenderer::touchingColor);
+    debug.box(box, contacts.empty() ? hitbox::DebugState::Free : hitbox::DebugState::Overlapping);
     debug.arrow(hitbox::centerOf(box), hitbox::centerOf(box) + player.getVelocity() * 0.25f,
                 DebugRenderer::velocityColor);
     // The collision points: red if the point was inside a solid tile this step.
     for (std::size_t index = 0; index < collisionPoints.size(); ++index)
         debug.cross(pointOn(box, collisionPoints[index]), 10.f,
-                    pointWasInside[index] ? DebugRenderer::touchingColor
+                    pointWasInside[index] ? DebugRenderer::overlappingColor
                                           : DebugRenderer::freeColor);
     for (const hitbox::Contact& contact : contacts)
         debug.contact(contact);

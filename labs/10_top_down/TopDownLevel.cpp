@@ -411,13 +411,13 @@ void TopDownLevel::renderDebug(hitbox::DebugRenderer& debug) const
     {
         const Actor& body = enemy.body;
         debug.box(body.spriteBox(), DebugRenderer::hintColor);
-        debug.box(body.hitbox(), body.invulnerable > 0.f ? DebugRenderer::touchingColor
+        debug.box(body.hitbox(), body.invulnerable > 0.f ? DebugRenderer::overlappingColor
                                                          : DebugRenderer::freeColor);
         debug.circle({body.feet, noticeRadius}, enemy.state == EnemyState::Idle
                                                     ? DebugRenderer::hintColor
                                                     : DebugRenderer::velocityColor);
         debug.circle({body.feet, attackRadius}, enemy.state == EnemyState::Attack
-                                                    ? DebugRenderer::touchingColor
+                                                    ? DebugRenderer::overlappingColor
                                                     : DebugRenderer::hintColor);
         if (enemy.state != EnemyState::Idle)
             debug.line(body.feet, player.feet, DebugRenderer::velocityColor);
@@ -425,12 +425,12 @@ void TopDownLevel::renderDebug(hitbox::DebugRenderer& debug) const
             debug.arrow(body.feet, body.feet + body.knockback * 0.1f, DebugRenderer::normalColor);
     }
     debug.box(player.spriteBox(), DebugRenderer::hintColor);
-    debug.box(player.hitbox(),
-              player.invulnerable > 0.f ? DebugRenderer::touchingColor : DebugRenderer::freeColor);
+    debug.box(player.hitbox(), player.invulnerable > 0.f ? DebugRenderer::overlappingColor
+                                                         : DebugRenderer::freeColor);
     if (player.knockback.x != 0.f || player.knockback.y != 0.f)
         debug.arrow(player.feet, player.feet + player.knockback * 0.1f, DebugRenderer::normalColor);
     if (isSwinging())
-        debug.box(swordBox(), DebugRenderer::touchingColor);
+        debug.box(swordBox(), DebugRenderer::overlappingColor);
 }
 
 std::string TopDownLevel::getHelpText() const

@@ -104,7 +104,7 @@ void CrowdLevel::renderDebug(hitbox::DebugRenderer& debug) const
     for (std::size_t index = 0; index < boxes.size(); ++index)
     {
         const Box& box = boxes[index];
-        sf::Color color = overlapping[index] ? hitbox::DebugRenderer::touchingColor
+        sf::Color color = overlapping[index] ? hitbox::DebugRenderer::overlappingColor
                                              : hitbox::DebugRenderer::freeColor;
         if (sweeping && box.left <= sweepLineX && sweepLineX < box.right)
             color = hitbox::DebugRenderer::velocityColor;

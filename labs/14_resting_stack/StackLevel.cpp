@@ -111,7 +111,7 @@ void StackLevel::renderDebug(hitbox::DebugRenderer& debug) const
         {
             const Crate& crate = stack[index];
             debug.box({crate.left, crate.top, crate.size, crate.size},
-                      overlapping[index] ? hitbox::DebugRenderer::touchingColor
+                      overlapping[index] ? hitbox::DebugRenderer::overlappingColor
                                          : hitbox::DebugRenderer::freeColor);
             // The velocity, a tenth of a second ahead.
             const hitbox::Vec2 center{crate.left + crate.size / 2.f, crate.top + crate.size / 2.f};

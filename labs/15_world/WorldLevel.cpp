@@ -3,6 +3,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/debug/ExplainOverlay.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
@@ -36,7 +37,10 @@ void WorldLevel::removeAllButThePlayer()
     coins.clear();
     enemies.clear();
     if (!player)
+    {
         player = std::make_unique<Player>(getWorldSize() / 2.f);
+        player->setName("player");
+    }
     player->setWorldSize(getWorldSize());
     player->setVelocity({});
     const Layers layers = layersFor(Kind::Player);
@@ -49,6 +53,7 @@ void WorldLevel::removeAllButThePlayer()
 void WorldLevel::addCoin(sf::Vector2f center)
 {
     coins.push_back(std::make_unique<Coin>(center));
+    coins.back()->setName("coin");
     const Layers layers = layersFor(Kind::Coin);
     world.add(*coins.back(), layers.layer, layers.mask, hitbox::World::Shape::Circle);
 }
@@ -56,6 +61,7 @@ void WorldLevel::addCoin(sf::Vector2f center)
 void WorldLevel::addEnemy(sf::Vector2f center, sf::Vector2f velocity)
 {
     enemies.push_back(std::make_unique<Enemy>(center, velocity));
+    enemies.back()->setName("enemy");
     enemies.back()->setWorldSize(getWorldSize());
     const Layers layers = layersFor(Kind::Enemy);
     world.add(*enemies.back(), layers.layer, layers.mask, hitbox::World::Shape::Box);
@@ -94,6 +100,7 @@ void WorldLevel::setAutopilot(bool on)
 
 void WorldLevel::handleInput(const Input& input, float)
 {
+    mouse = input.getMousePosition();
     if (input.isPressed(sf::Keyboard::Key::R))
         start();
     if (input.isPressed(sf::Keyboard::Key::A))
@@ -187,6 +194,14 @@ void WorldLevel::renderDebug(hitbox::DebugRenderer& debug) const
     // What the broadphase built (grid cells, quadtree nodes or sweep bars), then every
     // object in the shape its exact test uses, red when it collided this step.
     hitbox::drawBroadphase(debug, world.getBroadphaseLayout());
+    // The panel: why the pair under the mouse (else the last pair that met or parted) does
+    // or does not collide.
+    std::vector<const GameObject*> objects{player.get()};
+    for (const std::unique_ptr<Coin>& coin : coins)
+        objects.push_back(coin.get());
+    for (const std::unique_ptr<Enemy>& enemy : enemies)
+        objects.push_back(enemy.get());
+    hitbox::explainInPanel(debug, world, hitbox::toVec2(mouse), objects);
     const auto collided = [this](const GameObject& object)
     {
         for (const auto& pair : world.getCollisions())

@@ -56,6 +56,7 @@ private:
     void steerPlayer(const Input& input);
 
     std::mt19937 random;
+    sf::Vector2f mouse; // world coordinates: F1 explains the pair under it
     hitbox::World world;
     std::unique_ptr<Player> player;
     std::vector<std::unique_ptr<Coin>> coins;

@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <string>
 #include <vector>
 
 TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
@@ -39,7 +40,7 @@ TEST(BroadphaseDrawing, EachMethodsStructureIsDrawn)
     }
 }
 
-TEST(DebugRenderer, TouchingObjectsUseTheTouchingColourAndShowVelocity)
+TEST(DebugRenderer, CollidingObjectsAreHatchedInTheOverlappingColourAndShowVelocity)
 {
     GameObject object;
     object.setSize({10.f, 10.f});
@@ -47,14 +48,52 @@ TEST(DebugRenderer, TouchingObjectsUseTheTouchingColourAndShowVelocity)
     hitbox::DebugRenderer debug;
     debug.objectBox(object, true);
     const sf::VertexArray& lines = debug.getVertices();
-    EXPECT_EQ(lines[0].color, hitbox::DebugRenderer::touchingColor);
-    // After the 4 box edges: the velocity arrow's shaft, from the centre, a quarter second
-    // long; it is a 2-pixel quad around the line from (5, 5) to (30, 5).
-    const sf::Vertex& shaftStart = lines[24];
-    const sf::Vertex& shaftEnd = lines[26];
-    EXPECT_EQ(shaftStart.position, sf::Vector2f(5.f, 4.f));
-    EXPECT_EQ(shaftEnd.position, sf::Vector2f(30.f, 6.f));
-    EXPECT_EQ(shaftStart.color, hitbox::DebugRenderer::velocityColor);
+    EXPECT_EQ(lines[0].color, hitbox::DebugRenderer::overlappingColor);
+    // Last come the velocity arrow's shaft and its two head strokes (6 vertices a line): the
+    // shaft runs from the centre a quarter second long, a 2-pixel quad around (5, 5)-(30, 5).
+    const std::size_t shaft = lines.getVertexCount() - 3 * 6;
+    EXPECT_EQ(lines[shaft].position, sf::Vector2f(5.f, 4.f));
+    EXPECT_EQ(lines[shaft + 2].position, sf::Vector2f(30.f, 6.f));
+    EXPECT_EQ(lines[shaft].color, hitbox::DebugRenderer::velocityColor);
+}
+
+TEST(DebugRenderer, EachStateHasItsOwnColourAndLineStyle)
+{
+    // Colour is never the only cue: a solid outline is 4 lines, a dashed one more and
+    // shorter ones, a hatched one the 4 edges plus stripes across the box.
+    const hitbox::Box box{0.f, 0.f, 40.f, 40.f};
+    std::size_t lineCount[3] = {};
+    const hitbox::DebugState states[3] = {hitbox::DebugState::Free, hitbox::DebugState::Touching,
+                                          hitbox::DebugState::Overlapping};
+    for (int i = 0; i < 3; ++i)
+    {
+        hitbox::DebugRenderer debug;
+        debug.box(box, states[i]);
+        lineCount[i] = debug.getVertices().getVertexCount() / 6;
+        EXPECT_EQ(debug.getVertices()[0].color, hitbox::DebugRenderer::colorOf(states[i]));
+    }
+    EXPECT_EQ(lineCount[0], 4u);
+    EXPECT_EQ(lineCount[1], 4u * 4u) << "each 40 px edge: dashes of 6 px every 10 px";
+    EXPECT_GT(lineCount[2], 4u + 8u) << "hatching every 7 px across an 80 px diagonal span";
+    EXPECT_NE(hitbox::DebugRenderer::freeColor, hitbox::DebugRenderer::touchingColor);
+    EXPECT_NE(hitbox::DebugRenderer::touchingColor, hitbox::DebugRenderer::overlappingColor);
+    // Circles too: dashed is half the arcs, hatched adds chords.
+    hitbox::DebugRenderer solid, dashed, hatched;
+    solid.circle(hitbox::Circle{{0.f, 0.f}, 20.f}, hitbox::DebugState::Free);
+    dashed.circle(hitbox::Circle{{0.f, 0.f}, 20.f}, hitbox::DebugState::Touching);
+    hatched.circle(hitbox::Circle{{0.f, 0.f}, 20.f}, hitbox::DebugState::Overlapping);
+    EXPECT_EQ(dashed.getVertices().getVertexCount() * 2, solid.getVertices().getVertexCount());
+    EXPECT_GT(hatched.getVertices().getVertexCount(), solid.getVertices().getVertexCount());
+}
+
+TEST(DebugRenderer, ThePanelCollectsLinesUntilCleared)
+{
+    hitbox::DebugRenderer debug;
+    debug.panel({"first", "second"});
+    debug.panel({"third"});
+    EXPECT_EQ(debug.getPanel(), (std::vector<std::string>{"first", "second", "third"}));
+    debug.clear();
+    EXPECT_TRUE(debug.getPanel().empty());
 }
 
 TEST(DebugRenderer, ContactsDrawOnlyWhenHit)

@@ -39,7 +39,7 @@ void drawGrid(DebugRenderer& debug, const BroadphaseLayout& layout)
             continue; // cells with two or more boxes are where the tests happen
         const float x = origin.x + cell * static_cast<float>(c % columns);
         const float y = origin.y + cell * static_cast<float>(c / columns);
-        debug.box({x, y, cell, cell}, DebugRenderer::touchingColor);
+        debug.box({x, y, cell, cell}, DebugRenderer::overlappingColor);
     }
 }
 

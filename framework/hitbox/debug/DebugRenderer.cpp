@@ -9,18 +9,46 @@
 namespace hitbox
 {
 
-const sf::Color DebugRenderer::freeColor{80, 255, 120};
-const sf::Color DebugRenderer::touchingColor{255, 70, 70};
-const sf::Color DebugRenderer::velocityColor{255, 220, 60};
-const sf::Color DebugRenderer::normalColor{80, 200, 255};
-const sf::Color DebugRenderer::hintColor{200, 120, 255};
+// Okabe-Ito's eight colours (https://jfly.uni-koeln.de/color/) on the windows' dark
+// background: the five bright ones, and a neutral grey for hints.
+const sf::Color DebugRenderer::freeColor{86, 180, 233};      // sky blue #56B4E9
+const sf::Color DebugRenderer::touchingColor{240, 228, 66};  // yellow #F0E442
+const sf::Color DebugRenderer::overlappingColor{213, 94, 0}; // vermillion #D55E00
+const sf::Color DebugRenderer::velocityColor{204, 121, 167}; // reddish purple #CC79A7
+const sf::Color DebugRenderer::normalColor{0, 158, 115};     // bluish green #009E73
+const sf::Color DebugRenderer::hintColor{150, 150, 160};     // grey
+const char* const DebugRenderer::legend = "Debug: solid free, dashed touching, hatched overlapping";
 
 namespace
 {
 const float arrowSeconds = 0.25f; // velocity arrows show a quarter of a second of motion
 const float normalLength = 24.f;
-const float lineWidth = 2.f; // pixels
+const float lineWidth = 2.f;  // pixels
+const float dashLength = 6.f; // touching: 6 px drawn, 4 px gap
+const float dashGap = 4.f;
+const float hatchSpacing = 7.f; // overlapping: a 45-degree stripe every 7 px
+const int circleSegments = 32;
+
+Vec2 onCircle(const Circle& shape, int segment)
+{
+    const float angle = 2.f * pi * static_cast<float>(segment) / circleSegments;
+    return shape.center + shape.radius * Vec2(std::cos(angle), std::sin(angle));
+}
 } // namespace
+
+sf::Color DebugRenderer::colorOf(DebugState state)
+{
+    switch (state)
+    {
+    case DebugState::Free:
+        return freeColor;
+    case DebugState::Touching:
+        return touchingColor;
+    case DebugState::Overlapping:
+        return overlappingColor;
+    }
+    return hintColor;
+}
 
 void DebugRenderer::line(Vec2 from, Vec2 to, sf::Color color)
 {
@@ -67,13 +95,74 @@ void DebugRenderer::box(const Box& area, sf::Color color)
 
 void DebugRenderer::circle(const Circle& shape, sf::Color color)
 {
-    const int segments = 32;
-    for (int i = 0; i < segments; ++i)
+    for (int i = 0; i < circleSegments; ++i)
+        line(onCircle(shape, i), onCircle(shape, i + 1), color);
+}
+
+void DebugRenderer::dashed(Vec2 from, Vec2 to, sf::Color color)
+{
+    const Vec2 along = to - from;
+    const float length = std::sqrt(along.x * along.x + along.y * along.y);
+    if (!(length > 0.f))
+        return;
+    const Vec2 unit = along / length;
+    for (float start = 0.f; start < length; start += dashLength + dashGap)
+        line(from + unit * start, from + unit * std::fmin(start + dashLength, length), color);
+}
+
+void DebugRenderer::box(const Box& area, DebugState state)
+{
+    const sf::Color color = colorOf(state);
+    const Box b = normalised(area);
+    const Vec2 corners[4] = {{b.left, b.top},
+                             {b.left + b.width, b.top},
+                             {b.left + b.width, b.top + b.height},
+                             {b.left, b.top + b.height}};
+    for (int i = 0; i < 4; ++i)
     {
-        const float a0 = 2.f * pi * static_cast<float>(i) / segments;
-        const float a1 = 2.f * pi * static_cast<float>(i + 1) / segments;
-        line(shape.center + shape.radius * Vec2(std::cos(a0), std::sin(a0)),
-             shape.center + shape.radius * Vec2(std::cos(a1), std::sin(a1)), color);
+        if (state == DebugState::Touching)
+            dashed(corners[i], corners[(i + 1) % 4], color);
+        else
+            line(corners[i], corners[(i + 1) % 4], color);
+    }
+    if (state != DebugState::Overlapping || !(b.width > 0.f) || !(b.height > 0.f))
+        return;
+    // Hatching: the lines x + y = c that cross the box, each clipped to it.
+    const float first = b.left + b.top;
+    const float last = b.left + b.width + b.top + b.height;
+    const int stripes = static_cast<int>(std::fmin((last - first) / hatchSpacing, 2000.f));
+    for (int k = 1; k <= stripes; ++k)
+    {
+        const float c = first + hatchSpacing * static_cast<float>(k);
+        const float xLow = std::fmax(b.left, c - (b.top + b.height));
+        const float xHigh = std::fmin(b.left + b.width, c - b.top);
+        if (xLow < xHigh)
+            line({xLow, c - xLow}, {xHigh, c - xHigh}, color);
+    }
+}
+
+void DebugRenderer::circle(const Circle& shape, DebugState state)
+{
+    const sf::Color color = colorOf(state);
+    for (int i = 0; i < circleSegments; ++i)
+    {
+        // Dashed: every other one of the 32 arcs.
+        if (state != DebugState::Touching || i % 2 == 0)
+            line(onCircle(shape, i), onCircle(shape, i + 1), color);
+    }
+    if (state != DebugState::Overlapping || !(shape.radius > 0.f))
+        return;
+    // Hatching: 45-degree chords every hatchSpacing pixels.
+    const Vec2 across(std::sqrt(0.5f), -std::sqrt(0.5f)); // steps between chords
+    const Vec2 along(std::sqrt(0.5f), std::sqrt(0.5f));   // direction of each chord
+    const int stripes = static_cast<int>(std::fmin(shape.radius / hatchSpacing, 1000.f));
+    for (int k = -stripes; k <= stripes; ++k)
+    {
+        const float offset = hatchSpacing * static_cast<float>(k);
+        const float half = std::sqrt(std::fmax(0.f, shape.radius * shape.radius - offset * offset));
+        const Vec2 middle = shape.center + across * offset;
+        if (half > 0.f)
+            line(middle - along * half, middle + along * half, color);
     }
 }
 
@@ -83,19 +172,29 @@ void DebugRenderer::cross(Vec2 point, float size, sf::Color color)
     line(point - Vec2(size, -size), point + Vec2(size, -size), color);
 }
 
-void DebugRenderer::objectBox(const GameObject& object, bool touching)
+void DebugRenderer::objectBox(const GameObject& object, DebugState state)
 {
     const Box area = toBox(object.getCollisionBox());
-    box(area, touching ? touchingColor : freeColor);
+    box(area, state);
     const Vec2 middle = centerOf(area);
     arrow(middle, middle + toVec2(object.getVelocity()) * arrowSeconds, velocityColor);
 }
 
-void DebugRenderer::objectCircle(const GameObject& object, bool touching)
+void DebugRenderer::objectCircle(const GameObject& object, DebugState state)
 {
     const Circle shape = object.getBoundingCircle();
-    circle(shape, touching ? touchingColor : freeColor);
+    circle(shape, state);
     arrow(shape.center, shape.center + toVec2(object.getVelocity()) * arrowSeconds, velocityColor);
+}
+
+void DebugRenderer::objectBox(const GameObject& object, bool colliding)
+{
+    objectBox(object, colliding ? DebugState::Overlapping : DebugState::Free);
+}
+
+void DebugRenderer::objectCircle(const GameObject& object, bool colliding)
+{
+    objectCircle(object, colliding ? DebugState::Overlapping : DebugState::Free);
 }
 
 void DebugRenderer::contact(const Contact& found)
@@ -111,9 +210,20 @@ void DebugRenderer::draw(sf::RenderTarget& target) const
     target.draw(vertices);
 }
 
+void DebugRenderer::panel(const std::vector<std::string>& lines)
+{
+    panelLines.insert(panelLines.end(), lines.begin(), lines.end());
+}
+
+const std::vector<std::string>& DebugRenderer::getPanel() const
+{
+    return panelLines;
+}
+
 void DebugRenderer::clear()
 {
     vertices.clear();
+    panelLines.clear();
 }
 
 const sf::VertexArray& DebugRenderer::getVertices() const

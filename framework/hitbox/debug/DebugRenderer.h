@@ -10,6 +10,9 @@
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
 
+#include <string>
+#include <vector>
+
 class GameObject;
 namespace sf
 {
@@ -19,15 +22,33 @@ class RenderTarget;
 namespace hitbox
 {
 
+// What a collision shape is doing this step. Each state has its own colour AND its own line
+// style, so colour is never the only cue (red/green colour blindness affects about 1 man in
+// 12): free - solid outline; touching - dashed outline; overlapping - outline and hatching.
+enum class DebugState
+{
+    Free,       // shares no edge and no area with anything
+    Touching,   // edges meet, no shared area (not a collision: Hitbox's edge rule)
+    Overlapping // shares area with something: a collision
+};
+
 class DebugRenderer
 {
 public:
-    // The colours every program uses, so students learn them once.
-    static const sf::Color freeColor;     // a collider touching nothing
-    static const sf::Color touchingColor; // a collider touching something this step
-    static const sf::Color velocityColor; // velocity arrows
-    static const sf::Color normalColor;   // contact normals
-    static const sf::Color hintColor;     // anything else: rays, swept areas, grids
+    // The colours every program uses, so students learn them once: the Okabe-Ito palette
+    // (Okabe & Ito, "Color Universal Design", 2008), told apart with every common colour
+    // vision deficiency (scripts/check-palette.py simulates three and checks).
+    static const sf::Color freeColor;        // sky blue: a collider touching nothing
+    static const sf::Color touchingColor;    // yellow: edges meet, no shared area
+    static const sf::Color overlappingColor; // vermillion: shares area (collides) this step
+    static const sf::Color velocityColor;    // reddish purple: velocity arrows
+    static const sf::Color normalColor;      // bluish green: contact normals
+    static const sf::Color hintColor;        // grey: anything else (rays, swept areas, grids)
+    // What the cues mean, for every program's help line while F1 is on.
+    static const char* const legend;
+
+    // A state's colour (freeColor, touchingColor or overlappingColor).
+    [[nodiscard]] static sf::Color colorOf(DebugState state);
 
     // A line 2 pixels wide, in world coordinates (one of zero length shows nothing).
     void line(Vec2 from, Vec2 to, sf::Color color);
@@ -37,15 +58,26 @@ public:
     void box(const Box& box, sf::Color color);
     // The outline of `circle`.
     void circle(const Circle& circle, sf::Color color);
+    // A box or circle drawn in its state's colour and line style (solid, dashed, hatched).
+    void box(const Box& box, DebugState state);
+    void circle(const Circle& circle, DebugState state);
     // An x of `size` pixels across, centred on `point`.
     void cross(Vec2 point, float size, sf::Color color);
 
-    // An object's world collision box (or bounding circle) and its velocity arrow, which
-    // shows where the object will be in a quarter of a second.
-    void objectBox(const GameObject& object, bool touching);
-    void objectCircle(const GameObject& object, bool touching);
+    // An object's world collision box (or bounding circle) in its state's style, and its
+    // velocity arrow, which shows where the object will be in a quarter of a second.
+    // `colliding`: true draws DebugState::Overlapping, false DebugState::Free.
+    void objectBox(const GameObject& object, DebugState state);
+    void objectCircle(const GameObject& object, DebugState state);
+    void objectBox(const GameObject& object, bool colliding);
+    void objectCircle(const GameObject& object, bool colliding);
     // A contact point and its normal, 24 pixels long.
     void contact(const Contact& contact);
+
+    // Lines of text for the panel in the top-left corner of the window while F1 is on (the
+    // window draws them with its font; e.g. explain's answer). Each call adds lines.
+    void panel(const std::vector<std::string>& lines);
+    [[nodiscard]] const std::vector<std::string>& getPanel() const;
 
     // Draw everything collected, in one call, then keep it (call clear() to start again).
     void draw(sf::RenderTarget& target) const;
@@ -55,7 +87,10 @@ public:
     const sf::VertexArray& getVertices() const;
 
 private:
+    void dashed(Vec2 from, Vec2 to, sf::Color color);
+
     sf::VertexArray vertices{sf::PrimitiveType::Triangles};
+    std::vector<std::string> panelLines;
 };
 
 } // namespace hitbox

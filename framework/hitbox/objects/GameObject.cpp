@@ -1,6 +1,10 @@
 #include "hitbox/objects/GameObject.h"
 
+#include "hitbox/objects/World.h"
+
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 hitbox::OptionalBox& hitbox::OptionalBox::operator=(const sf::FloatRect& box)
 {
@@ -11,11 +15,42 @@ hitbox::OptionalBox& hitbox::OptionalBox::operator=(const sf::FloatRect& box)
 
 GameObject::GameObject() = default;
 
+GameObject::~GameObject()
+{
+    for (hitbox::World* world : worlds.worlds())
+        world->forgetDestroyed(*this);
+}
+
 void GameObject::handleInput(float) {}
 
 void GameObject::update(float) {}
 
 void GameObject::collisionResponse(GameObject*) {}
+
+void GameObject::onCollisionEnter(const hitbox::CollisionEvent&) {}
+
+void GameObject::onCollisionStay(const hitbox::CollisionEvent&) {}
+
+void GameObject::onCollisionExit(const hitbox::CollisionEvent&) {}
+
+void GameObject::setName(std::string newName)
+{
+    name = std::move(newName);
+}
+
+const std::string& GameObject::getName() const
+{
+    return name;
+}
+
+std::string GameObject::describe() const
+{
+    if (!name.empty())
+        return "'" + name + "'";
+    std::ostringstream text;
+    text << "the object at (" << getPosition().x << ", " << getPosition().y << ")";
+    return text.str();
+}
 
 void GameObject::setVelocity(sf::Vector2f newVelocity)
 {

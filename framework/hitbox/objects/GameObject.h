@@ -10,9 +10,13 @@
 // Until a box is set, the collision box is the whole shape and follows setSize/setOrigin.
 #pragma once
 
+#include "hitbox/objects/ContactEvent.h"
+#include "hitbox/objects/WorldLinks.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
+
+#include <string>
 
 namespace sf
 {
@@ -22,6 +26,7 @@ class Input;
 
 namespace hitbox
 {
+class World;
 // A collision box relative to the origin point, and whether one was given. Old lab code
 // assigns the box directly (`collisionBox = sf::FloatRect(...)`): that counts as given too.
 // Until then it reads as {0, 0, 0, 0}, as in the course's old framework.
@@ -38,7 +43,13 @@ class GameObject : public sf::RectangleShape
 public:
     // Alive, a collider, standing still, its collision box the whole shape.
     GameObject();
-    ~GameObject() override = default;
+    // A copy is a new object: it is in no World until added (copying a level's objects into
+    // a vector does not put the copies into the World).
+    GameObject(const GameObject& other) = default;
+    GameObject& operator=(const GameObject& other) = default;
+    // An object destroyed while still in a World takes itself out (the World's other
+    // objects get their Exit events, with other == nullptr), even from inside a response.
+    ~GameObject() override;
 
     // Override these in your own objects. They do nothing by default.
     virtual void handleInput(float dt);
@@ -48,6 +59,20 @@ public:
     // (a wall, the edge of the screen) rather than another object.
     virtual void collisionResponse(GameObject* other);
     // [/slide]
+    // Contact events from a World (ContactEvent.h): Enter the first step this object collides
+    // with another, Stay every further step, Exit the first step they no longer do (or the
+    // other left the World, died, was destroyed, stopped being a collider). Each is called
+    // after both collisionResponse calls of the step. They do nothing by default.
+    virtual void onCollisionEnter(const hitbox::CollisionEvent& event);
+    virtual void onCollisionStay(const hitbox::CollisionEvent& event);
+    virtual void onCollisionExit(const hitbox::CollisionEvent& event);
+
+    // A name for messages and the debugger ("coin 3"); empty by default, when messages say
+    // where the object is instead.
+    void setName(std::string newName);
+    [[nodiscard]] const std::string& getName() const;
+    // The name, or "the object at (x, y)" when it has none.
+    [[nodiscard]] std::string describe() const;
 
     // In pixels per second. GameObject never moves itself: your update() does.
     void setVelocity(sf::Vector2f newVelocity);
@@ -95,6 +120,9 @@ protected:
     sf::RenderWindow* window = nullptr;
 
 private:
+    friend class hitbox::World;        // keeps `worlds` up to date
+    mutable hitbox::WorldLinks worlds; // the Worlds this object is in (empty in a copy)
+    std::string name;
     bool hasOwnCircle = false; // false: the circle inscribed in the collision box
     sf::Vector2f circleCenter; // relative to the origin point
     float circleRadius = 0.f;

@@ -3,6 +3,7 @@
 // task's code (the constructor's box, Square::update, bounceApart), with whatever else they
 // need set up by the test, so one mistake costs one task.
 #include "labs/LabTesting.h"
+#include "support/CollisionMatchers.h"
 
 #include "Square.h"
 #include "SquaresLevel.h"
@@ -147,12 +148,10 @@ TEST(Task2BounceTheBoxOffTheWalls, SquareNeverLeavesTheWindow)
     for (int step = 0; step < 20 * 120; ++step)
     {
         run(square, 1);
-        const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
-        ASSERT_TRUE(box.left >= -0.01f && box.top >= -0.01f &&
-                    box.left + box.width <= world.x + 0.01f &&
-                    box.top + box.height <= world.y + 0.01f)
-            << "after step " << step << " the collision box " << testing::PrintToString(box)
-            << " sticks out of the window";
+        // The window, 0.01 px larger all round (rounding).
+        ASSERT_THAT(square, hitbox::testing::StaysInside(
+                                {-0.01f, -0.01f, world.x + 0.02f, world.y + 0.02f}))
+            << "after step " << step << " the collision box sticks out of the window";
     }
 }
 

@@ -5,6 +5,7 @@
 // (so no coin is collected and no rule matters), task 2's have no enemies, task 3's no
 // coins. A mistake in one task costs that task alone.
 #include "labs/LabTesting.h"
+#include "support/CollisionMatchers.h"
 
 #include "Pieces.h"
 #include "Rules.h"
@@ -12,6 +13,7 @@
 
 #include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/objects/World.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <gtest/gtest.h>
@@ -86,6 +88,48 @@ TEST(Level, EveryBroadphaseMethodFindsTheSameCollisions)
         EXPECT_EQ(found[method], found[0]) << "method " << method;
 }
 
+// A coin that leaves the World from inside its own response, the moment the player takes it
+// (the way many students write task 2 first). The World must finish the pass as if nothing
+// moved: the player hears of the coin once, the two enemies of each other, and nobody of an
+// object it never touched (issue 25: the next response used to go to the wrong object).
+namespace
+{
+class CoinThatRemovesItself : public Coin
+{
+public:
+    CoinThatRemovesItself(sf::Vector2f center, hitbox::World& world) : Coin(center), world(world) {}
+    void collisionResponse(GameObject* other) override
+    {
+        if (other != nullptr && kindOf(*other) == Kind::Player)
+            world.remove(*this);
+    }
+
+private:
+    hitbox::World& world;
+};
+} // namespace
+
+TEST(Level, ACoinRemovedInsideItsResponseLeavesTheRestOfThePassIntact)
+{
+    for (int method = 0; method < 4; ++method)
+    {
+        hitbox::World world(static_cast<hitbox::BroadphaseMethod>(method));
+        Player player(farCorner);
+        CoinThatRemovesItself coin(farCorner, world);
+        Enemy first(middle, {});
+        Enemy second(middle + sf::Vector2f{5.f, 0.f}, {});
+        world.add(player);
+        world.add(coin, 1, 0xFFFFFFFF, hitbox::World::Shape::Circle);
+        world.add(first);
+        world.add(second);
+        EXPECT_EQ(world.checkCollisions(), 2u) << "player-coin and enemy-enemy, method " << method;
+        EXPECT_EQ(player.getHurtCount(), 0) << "the player never touched an enemy";
+        EXPECT_EQ(first.getBumpCount(), 1);
+        EXPECT_EQ(second.getBumpCount(), 1);
+        EXPECT_EQ(world.size(), 3u) << "the coin left the World";
+    }
+}
+
 TEST(Task1LayersAndMasks, CoinsNeverMeetCoinsOrEnemies)
 {
     const Layers coin = layersFor(Kind::Coin);
@@ -154,6 +198,8 @@ TEST(Task2CollectCoins, CoinOnlyTouchingThePlayerStays)
     // right side, and the two never overlap.
     WorldLevel level = emptyLevel(middle);
     level.addCoin(middle + sf::Vector2f{playerHalf() + coinRadiusNow(), 0.f});
+    EXPECT_THAT(level.getCoin(0),
+                hitbox::testing::NotCollides(level.getPlayer(), hitbox::World::Shape::Circle));
     runSteps(level, 10);
     EXPECT_EQ(level.getScore(), 0);
     EXPECT_EQ(level.getCoinCount(), 1);

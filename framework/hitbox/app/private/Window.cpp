@@ -11,8 +11,10 @@
 
 #include <SFML/Graphics.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace hitbox
 {
@@ -28,13 +30,42 @@ struct FrameSettings
 
 std::string helpLine(const Level& level, const FrameSettings& settings)
 {
-    std::string line = sharedKeysHelp();
+    // With F1 on, the line starts with what the debug cues mean, where it is never cut off.
+    std::string line = settings.showDebug ? std::string(DebugRenderer::legend) + "   |   " : "";
+    line += sharedKeysHelp();
     const std::string levelKeys = level.getHelpText();
     if (!levelKeys.empty())
         line += "   |   " + levelKeys;
+
     if (settings.framesPerSecond > 0)
         line += "   |   " + std::to_string(settings.framesPerSecond) + " fps";
     return line;
+}
+
+// The debug panel (DebugRenderer::panel): text lines on a dark box in the top-left corner.
+void drawPanel(sf::RenderTarget& target, const sf::Font& font,
+               const std::vector<std::string>& lines)
+{
+    if (lines.empty())
+        return;
+    const float lineHeight = 18.f;
+    const float margin = 8.f;
+    std::vector<sf::Text> texts;
+    float width = 0.f;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+    {
+        texts.push_back(makeText(font, lines[i], 14));
+        texts.back().setFillColor(sf::Color(235, 235, 235));
+        texts.back().setPosition({2.f * margin, 2.f * margin + lineHeight * static_cast<float>(i)});
+        width = std::max(width, rectSize(texts.back().getLocalBounds()).x);
+    }
+    sf::RectangleShape box(
+        {width + 2.f * margin, lineHeight * static_cast<float>(lines.size()) + margin});
+    box.setPosition({margin, margin});
+    box.setFillColor(sf::Color(0, 0, 0, 200));
+    target.draw(box);
+    for (const sf::Text& text : texts)
+        target.draw(text);
 }
 
 // Scene, then debug shapes, then the help line: the same picture in the window and in a
@@ -50,6 +81,7 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
         DebugRenderer debug;
         level.renderDebug(debug);
         debug.draw(target);
+        drawPanel(target, font, debug.getPanel());
     }
 
     const float barHeight = 24.f;
