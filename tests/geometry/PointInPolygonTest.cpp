@@ -14,8 +14,14 @@ using hitbox::Vec2;
 namespace
 {
 // A "C" shape, 0..30 wide and 0..30 tall, open on the right between y = 10 and y = 20.
-const Polygon cShape{{{0.f, 0.f}, {30.f, 0.f}, {30.f, 10.f}, {10.f, 10.f}, {10.f, 20.f},
-                      {30.f, 20.f}, {30.f, 30.f}, {0.f, 30.f}}};
+const Polygon cShape{{{0.f, 0.f},
+                      {30.f, 0.f},
+                      {30.f, 10.f},
+                      {10.f, 10.f},
+                      {10.f, 20.f},
+                      {30.f, 20.f},
+                      {30.f, 30.f},
+                      {0.f, 30.f}}};
 const Polygon square{{{0.f, 0.f}, {10.f, 0.f}, {10.f, 10.f}, {0.f, 10.f}}};
 
 Polygon reversed(Polygon polygon)
@@ -129,8 +135,8 @@ TEST(PointInPolygon, ZeroAreaAndTooFewCornersAreNeverInside)
 
 TEST(PointInPolygon, RepeatedCornersAreIgnored)
 {
-    const Polygon doubled{{{0.f, 0.f}, {0.f, 0.f}, {10.f, 0.f}, {10.f, 10.f}, {10.f, 10.f},
-                           {0.f, 10.f}}};
+    const Polygon doubled{
+        {{0.f, 0.f}, {0.f, 0.f}, {10.f, 0.f}, {10.f, 10.f}, {10.f, 10.f}, {0.f, 10.f}}};
     EXPECT_TRUE(pointInPolygon(doubled, {5.f, 5.f}).inside);
     EXPECT_FALSE(pointInPolygon(doubled, {15.f, 5.f}).inside);
     EXPECT_TRUE(pointInPolygon(doubled, {10.f, 10.f}).onEdge);
