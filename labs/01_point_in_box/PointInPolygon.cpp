@@ -11,18 +11,18 @@ bool isInsidePolygon(const std::vector<sf::Vector2f>& corners, sf::Vector2f poin
 {
     // BEGIN TASK 4: point in a polygon
     bool inside = false;
-    for (std::size_t index = 0; index < corners.size(); ++index)
+    const std::size_t count = corners.size();
+    for (std::size_t index = 0; index < count; ++index)
     {
         const sf::Vector2f a = corners[index];
-        const sf::Vector2f b = corners[(index + 1) % corners.size()];
+        const sf::Vector2f b = corners[(index + 1) % count];
         const sf::Vector2f ab = b - a;
         const sf::Vector2f ap = point - a;
-        // On the edge: on the line through a and b (cross product 0) and between them.
-        const bool onLine = ab.x * ap.y - ab.y * ap.x == 0.f;
-        const float along = ab.x * ap.x + ab.y * ap.y; // from 0 at a to |ab|^2 at b
-        if (onLine && along >= 0.f && along <= ab.x * ab.x + ab.y * ab.y)
-            return false; // touching is not colliding
-        if ((a.y > point.y) != (b.y > point.y) && a.x + ap.y * ab.x / ab.y > point.x)
+        const float along = ab.x * ap.x + ab.y * ap.y; // 0 at a, |ab|^2 at b
+        if (ab.x * ap.y == ab.y * ap.x && along >= 0.f && along <= ab.x * ab.x + ab.y * ab.y)
+            return false; // on the edge (or a corner): touching is not colliding
+        const bool crossesLine = (a.y > point.y) != (b.y > point.y);
+        if (crossesLine && a.x + ap.y * ab.x / ab.y > point.x)
             inside = !inside;
     }
     return inside;
