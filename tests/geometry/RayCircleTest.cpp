@@ -16,7 +16,7 @@ namespace
 const Circle unit10{{0.f, 0.f}, 10.f}; // radius 10 about the origin
 }
 
-TEST(SegmentVsCircle, AHeadOnRayEntersAndLeaves)
+TEST(RayCircle, AHeadOnRayEntersAndLeaves)
 {
     // From x = -20 to x = 20 through the middle: enters at x = -10 (t = 0.25), leaves at
     // x = 10 (t = 0.75).
@@ -31,7 +31,7 @@ TEST(SegmentVsCircle, AHeadOnRayEntersAndLeaves)
     EXPECT_FLOAT_EQ(result.normal.y, 0.f);
 }
 
-TEST(SegmentVsCircle, AnOffCentreRayEntersOnASlant)
+TEST(RayCircle, AnOffCentreRayEntersOnASlant)
 {
     // y = 6: the chord runs from x = -8 to x = 8 (a 6-8-10 triangle).
     const RayCircleResult result = segmentVsCircle({-18.f, 6.f}, {22.f, 6.f}, unit10);
@@ -42,7 +42,7 @@ TEST(SegmentVsCircle, AnOffCentreRayEntersOnASlant)
     EXPECT_FLOAT_EQ(result.normal.y, 0.6f);
 }
 
-TEST(SegmentVsCircle, AMissIsNoHit)
+TEST(RayCircle, AMissIsNoHit)
 {
     const RayCircleResult result = segmentVsCircle({-20.f, 11.f}, {20.f, 11.f}, unit10);
     EXPECT_FALSE(result.hit);
@@ -52,14 +52,14 @@ TEST(SegmentVsCircle, AMissIsNoHit)
 }
 
 // Edge rule: touching is not colliding.
-TEST(SegmentVsCircle, AGrazingRayIsNoHit)
+TEST(RayCircle, AGrazingRayIsNoHit)
 {
     EXPECT_FALSE(segmentVsCircle({-20.f, 10.f}, {20.f, 10.f}, unit10).hit);
     EXPECT_FALSE(segmentVsCircle({-20.f, -10.f}, {20.f, -10.f}, unit10).hit);
     EXPECT_TRUE(segmentVsCircle({-20.f, 9.9f}, {20.f, 9.9f}, unit10).hit);
 }
 
-TEST(SegmentVsCircle, ReachingTheRimOnlyAtTheEndIsNoHit)
+TEST(RayCircle, ReachingTheRimOnlyAtTheEndIsNoHit)
 {
     EXPECT_FALSE(segmentVsCircle({-20.f, 0.f}, {-10.f, 0.f}, unit10).hit);
     const RayCircleResult justIn = segmentVsCircle({-20.f, 0.f}, {-9.f, 0.f}, unit10);
@@ -68,7 +68,7 @@ TEST(SegmentVsCircle, ReachingTheRimOnlyAtTheEndIsNoHit)
     EXPECT_GT(justIn.farTime, 1.f); // it leaves beyond the segment's end
 }
 
-TEST(SegmentVsCircle, StartingOnTheRimHitsOnlyHeadingIn)
+TEST(RayCircle, StartingOnTheRimHitsOnlyHeadingIn)
 {
     const RayCircleResult in = segmentVsCircle({-10.f, 0.f}, {10.f, 0.f}, unit10);
     ASSERT_TRUE(in.hit);
@@ -79,7 +79,7 @@ TEST(SegmentVsCircle, StartingOnTheRimHitsOnlyHeadingIn)
     EXPECT_FALSE(segmentVsCircle({-10.f, 0.f}, {-10.f, 5.f}, unit10).hit); // along the tangent
 }
 
-TEST(SegmentVsCircle, StartingInsideHitsAtTimeZero)
+TEST(RayCircle, StartingInsideHitsAtTimeZero)
 {
     const RayCircleResult result = segmentVsCircle({0.f, 0.f}, {20.f, 0.f}, unit10);
     ASSERT_TRUE(result.hit);
@@ -91,21 +91,21 @@ TEST(SegmentVsCircle, StartingInsideHitsAtTimeZero)
     EXPECT_FLOAT_EQ(result.normal.y, 0.f);
 }
 
-TEST(SegmentVsCircle, AZeroLengthSegmentHitsOnlyStrictlyInside)
+TEST(RayCircle, AZeroLengthSegmentHitsOnlyStrictlyInside)
 {
     EXPECT_TRUE(segmentVsCircle({3.f, 4.f}, {3.f, 4.f}, unit10).startedInside);
     EXPECT_FALSE(segmentVsCircle({6.f, 8.f}, {6.f, 8.f}, unit10).hit); // on the rim
     EXPECT_FALSE(segmentVsCircle({20.f, 0.f}, {20.f, 0.f}, unit10).hit);
 }
 
-TEST(SegmentVsCircle, ZeroAndNegativeRadiiAreNeverHit)
+TEST(RayCircle, ZeroAndNegativeRadiiAreNeverHit)
 {
     EXPECT_FALSE(segmentVsCircle({-20.f, 0.f}, {20.f, 0.f}, Circle{{0.f, 0.f}, 0.f}).hit);
     EXPECT_FALSE(segmentVsCircle({-20.f, 0.f}, {20.f, 0.f}, Circle{{0.f, 0.f}, -10.f}).hit);
     EXPECT_FALSE(segmentVsCircle({0.f, 0.f}, {0.f, 0.f}, Circle{{0.f, 0.f}, -10.f}).hit);
 }
 
-TEST(SegmentVsCircle, NegativeCoordinatesWorkLikeAnyOther)
+TEST(RayCircle, NegativeCoordinatesWorkLikeAnyOther)
 {
     const Circle left{{-100.f, -50.f}, 10.f};
     const RayCircleResult result = segmentVsCircle({-100.f, -100.f}, {-100.f, 0.f}, left);
@@ -114,7 +114,7 @@ TEST(SegmentVsCircle, NegativeCoordinatesWorkLikeAnyOther)
     EXPECT_FLOAT_EQ(result.normal.y, -1.f);
 }
 
-TEST(SegmentVsCircle, NaNAndInfinityAreNoHit)
+TEST(RayCircle, NaNAndInfinityAreNoHit)
 {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
@@ -125,7 +125,7 @@ TEST(SegmentVsCircle, NaNAndInfinityAreNoHit)
     EXPECT_FALSE(segmentVsCircle({0.f, 0.f}, {20.f, 0.f}, Circle{{0.f, 0.f}, inf}).hit);
 }
 
-TEST(SegmentVsCircle, HugeIsExactInsideTheRangeAndNoHitBeyondIt)
+TEST(RayCircle, HugeIsExactInsideTheRangeAndNoHitBeyondIt)
 {
     // A 1 px circle near the edge of the range, crossed by a ray 1e6 px long.
     const Circle far{{999000.f, 0.f}, 1.f};
