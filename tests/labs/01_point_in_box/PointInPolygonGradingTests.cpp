@@ -75,6 +75,15 @@ TEST(Task4PointInPolygon, APointOnAnEdgeIsNotInside)
     EXPECT_FALSE(isInsidePolygon(cShape, {10.f, 15.f})); // the notch's back edge
 }
 
+TEST(Task4PointInPolygon, APointOnAnEdgeNextToACornerIsNotInside)
+{
+    // A sixteenth of a pixel from the top-left corner, on the top edge and on the left one.
+    EXPECT_FALSE(isInsidePolygon(square, {0.0625f, 0.f}));
+    EXPECT_FALSE(isInsidePolygon(square, {0.f, 0.0625f}));
+    EXPECT_FALSE(isInsidePolygon(reversed(square), {0.0625f, 0.f}));
+    EXPECT_FALSE(isInsidePolygon(reversed(square), {0.f, 0.0625f}));
+}
+
 TEST(Task4PointInPolygon, ACornerIsNotInside)
 {
     for (const sf::Vector2f corner : square)
