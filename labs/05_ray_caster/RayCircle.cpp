@@ -18,8 +18,9 @@ float rayCircleTime(hitbox::Vec2 from, hitbox::Vec2 to, const hitbox::Circle& ci
     const float discriminant = b * b - a * c;
     if (a == 0.f || b >= 0.f || discriminant <= 0.f)
         return rayMissed; // not moving, heading away, missing, or only grazing
-    const float t = (-b - std::sqrt(discriminant)) / a; // the nearer root: entering
-    return t < 1.f ? t : rayMissed;                     // reaching the rim at `to`: touching
+    // The smaller root is where it enters; reaching the rim only at `to` is touching.
+    const float t = (-b - std::sqrt(discriminant)) / a;
+    return t < 1.f ? t : rayMissed;
     // STARTER TASK 4
     // (void)from;
     // (void)to;
