@@ -18,7 +18,7 @@ float rayCircleTime(hitbox::Vec2 from, hitbox::Vec2 to, const hitbox::Circle& ci
     const float discriminant = b * b - a * c;
     if (a == 0.f || b >= 0.f || discriminant <= 0.f)
         return rayMissed; // not moving, heading away, missing, or only grazing
-    // The smaller root is where it enters; reaching the rim only at `to` is touching.
+    // The smaller root: where it enters (at `to` exactly, it only touches).
     const float t = (-b - std::sqrt(discriminant)) / a;
     return t < 1.f ? t : rayMissed;
     // STARTER TASK 4
