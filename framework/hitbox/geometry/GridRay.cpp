@@ -61,7 +61,6 @@ bool isSolidTile(const TileGrid& grid, int column, int row)
                       static_cast<std::size_t>(column)] != 0;
 }
 
-// [slide:grid-ray-walk]
 GridRayResult castRayInGrid(const TileGrid& grid, Vec2 start, Vec2 end)
 {
     GridRayResult result;
@@ -90,6 +89,8 @@ GridRayResult castRayInGrid(const TileGrid& grid, Vec2 start, Vec2 end)
     double lineY = dy > 0.0 ? std::floor(yStart / size) + 1.0 : std::ceil(yStart / size) - 1.0;
     bool byX = enteredByX; // ties (a corner): the vertical side wins
     const int maxSteps = grid.columns + grid.rows + 4;
+    // [slide:grid-ray-walk]
+    // Step to whichever grid line comes first: tx (the next vertical one) or ty.
     for (int step = 0; t < tEnd && step < maxSteps; ++step)
     {
         const double tx = dx != 0.0 ? (lineX * size - x0) / dx : never;
@@ -122,9 +123,9 @@ GridRayResult castRayInGrid(const TileGrid& grid, Vec2 start, Vec2 end)
             lineY += stepY;
         t = tNext;
     }
+    // [/slide]
     return result;
 }
-// [/slide]
 
 bool hasLineOfSight(const TileGrid& grid, Vec2 from, Vec2 to)
 {
