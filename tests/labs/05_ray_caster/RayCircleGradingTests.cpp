@@ -75,6 +75,20 @@ TEST(Task4RayAgainstCircle, AZeroOrNegativeRadiusIsNeverHit)
     EXPECT_EQ(rayCircleTime({0.f, 0.f}, {20.f, 0.f}, {{0.f, 0.f}, -10.f}), rayMissed);
 }
 
+TEST(Task4RayAgainstCircle, ASmallPillarAndAShortRayWork)
+{
+    // A ray 1 px long against a pillar of radius 1: enters halfway, at x = -1.
+    EXPECT_FLOAT_EQ(rayCircleTime({-1.5f, 0.f}, {-0.5f, 0.f}, {{0.f, 0.f}, 1.f}), 0.5f);
+    EXPECT_FLOAT_EQ(rayCircleTime({-2.f, 0.f}, {2.f, 0.f}, {{0.f, 0.f}, 0.5f}), 0.375f);
+}
+
+TEST(Task4RayAgainstCircle, AShortRayHeadingAwayMisses)
+{
+    // Its line crosses the pillar, but behind the start: no negative times.
+    EXPECT_EQ(rayCircleTime({20.f, 0.f}, {20.03125f, 0.f}, pillar), rayMissed);
+    EXPECT_EQ(rayCircleTime({0.f, 20.f}, {0.f, 20.03125f}, pillar), rayMissed);
+}
+
 TEST(Task4RayAgainstCircle, APillarAnywhereWorks)
 {
     const hitbox::Circle far{{620.f, -320.f}, 30.f};
