@@ -1,5 +1,7 @@
 #include "PointInBoxLevel.h"
 
+#include "PointInPolygon.h"
+
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/objects/Collision.h"
@@ -7,8 +9,10 @@
 #include <SFML/Graphics/CircleShape.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace
@@ -33,6 +37,13 @@ const BoxSetup boxSetups[] = {
     {{800.f, 330.f}, {120.f, 90.f}, {110, 120, 130}},
 };
 
+// The star of task 4: a concave polygon, where a box test would light up its gaps too.
+const sf::Vector2f starCenter{650.f, 255.f};
+const float starOuterRadius = 85.f;
+const float starInnerRadius = 36.f;
+const int starPoints = 5;
+const sf::Color starColor{90, 140, 200};
+
 const sf::Color hoverOutline{255, 255, 255};
 const sf::Color selectedOutline{255, 220, 60};
 } // namespace
@@ -46,6 +57,14 @@ PointInBoxLevel::PointInBoxLevel()
         box.setPosition(setup.position);
         box.setFillColor(setup.color);
         boxes.push_back(box);
+    }
+    // Corners alternate between the outer and inner radius, the first pointing straight up.
+    for (int corner = 0; corner < 2 * starPoints; ++corner)
+    {
+        const float radius = corner % 2 == 0 ? starOuterRadius : starInnerRadius;
+        const float angle = 3.14159265f * (static_cast<float>(corner) / starPoints - 0.5f);
+        star.push_back(starCenter +
+                       sf::Vector2f(radius * std::cos(angle), radius * std::sin(angle)));
     }
     update(0.f); // so the very first frame already shows what the starting mouse points at
 }
@@ -114,6 +133,7 @@ void PointInBoxLevel::update(float)
     mouseInScene = windowToScene(mouseInWindow);
     hoveredBox = findBoxUnder(mouseInScene);
     dragBox(hoveredBox, mouseInScene);
+    starHovered = isInsidePolygon(star, mouseInScene);
 }
 
 void PointInBoxLevel::dragBox(int boxUnderMouse, sf::Vector2f mouse)
@@ -157,6 +177,19 @@ void PointInBoxLevel::render(sf::RenderTarget& target) const
         }
         target.draw(drawn, camera);
     }
+
+    // The star, as a fan of triangles from its middle (it is concave, so sf::ConvexShape
+    // would draw it wrong); brighter while the mouse is inside it.
+    sf::VertexArray starFan(sf::PrimitiveType::TriangleFan);
+    const sf::Color fill =
+        starHovered ? sf::Color(std::min(255, starColor.r + 70), std::min(255, starColor.g + 70),
+                                std::min(255, starColor.b + 55))
+                    : starColor;
+    starFan.append(sf::Vertex{starCenter, fill});
+    for (const sf::Vector2f& corner : star)
+        starFan.append(sf::Vertex{corner, fill});
+    starFan.append(sf::Vertex{star.front(), fill});
+    target.draw(starFan, camera);
 
     // A crosshair where the level thinks the mouse is (screenshots have no mouse pointer).
     sf::CircleShape ring(7.f);
@@ -232,4 +265,14 @@ sf::Transform PointInBoxLevel::getCamera() const
 sf::Vector2f PointInBoxLevel::getMouseInScene() const
 {
     return mouseInScene;
+}
+
+const std::vector<sf::Vector2f>& PointInBoxLevel::getStar() const
+{
+    return star;
+}
+
+bool PointInBoxLevel::isStarHovered() const
+{
+    return starHovered;
 }

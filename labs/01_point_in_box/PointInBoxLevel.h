@@ -42,6 +42,9 @@ public:
     // Scene coordinates to window coordinates: how the boxes are drawn.
     sf::Transform getCamera() const;
     sf::Vector2f getMouseInScene() const;
+    // The star (task 4): its corners in scene coordinates, and whether the mouse is inside it.
+    const std::vector<sf::Vector2f>& getStar() const;
+    bool isStarHovered() const;
 
     // The three steps of update(), one per task (the grading tests call each on its own).
     // Task 1: the index of the top box containing the scene point, or noBox.
@@ -66,5 +69,8 @@ private:
     sf::Vector2f mouseInScene;
     int hoveredBox = noBox;
     int selectedBox = noBox;
+
+    std::vector<sf::Vector2f> star; // a concave polygon (task 4), scene coordinates
+    bool starHovered = false;
     sf::Vector2f grabOffset; // from the mouse to the dragged box's position
 };

@@ -1,5 +1,7 @@
 #include "RayLevel.h"
 
+#include "RayCircle.h"
+
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
@@ -63,7 +65,10 @@ std::vector<hitbox::Box> labField()
 }
 } // namespace
 
-RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f}) {}
+RayLevel::RayLevel() : RayLevel(labField(), {1000.f, 560.f})
+{
+    pillars = {{{140.f, 300.f}, 40.f}, {{620.f, 320.f}, 30.f}};
+}
 
 RayLevel::RayLevel(std::vector<hitbox::Box> solidBoxes, sf::Vector2f playerStart)
     : solids(std::move(solidBoxes)), mouse(760.f, 110.f)
@@ -122,6 +127,11 @@ const GameObject& RayLevel::getPlayer() const
 const std::vector<hitbox::Box>& RayLevel::getSolids() const
 {
     return solids;
+}
+
+const std::vector<hitbox::Circle>& RayLevel::getPillars() const
+{
+    return pillars;
 }
 
 const RayHit& RayLevel::getRay() const
@@ -215,7 +225,26 @@ void RayLevel::update(float dt)
     if (trail.size() > trailLength)
         trail.erase(trail.begin());
 
-    ray = castRay(hitbox::toVec2(player.getPosition() + playerSize / 2.f), hitbox::toVec2(mouse));
+    const hitbox::Vec2 from = hitbox::toVec2(player.getPosition() + playerSize / 2.f);
+    ray = stopAtPillars(castRay(from, hitbox::toVec2(mouse)), hitbox::toVec2(mouse));
+}
+
+RayHit RayLevel::stopAtPillars(RayHit boxHit, hitbox::Vec2 to) const
+{
+    RayHit nearest = boxHit;
+    for (std::size_t i = 0; i < pillars.size(); ++i)
+    {
+        const float time = rayCircleTime(boxHit.start, to, pillars[i]);
+        if (time < 0.f || time >= nearest.time)
+            continue;
+        nearest.hit = true;
+        nearest.time = time;
+        nearest.end = boxHit.start + (to - boxHit.start) * time;
+        nearest.normal = hitbox::unitVectorOr(nearest.end - pillars[i].center, {-1.f, 0.f});
+        nearest.boxIndex = -1;
+        nearest.pillarIndex = static_cast<int>(i);
+    }
+    return nearest;
 }
 
 void RayLevel::render(sf::RenderTarget& target) const
@@ -236,6 +265,16 @@ void RayLevel::render(sf::RenderTarget& target) const
             box.setOutlineThickness(-1.f);
         }
         target.draw(box);
+    }
+
+    for (std::size_t i = 0; i < pillars.size(); ++i)
+    {
+        sf::CircleShape pillar(pillars[i].radius);
+        pillar.setOrigin({pillars[i].radius, pillars[i].radius});
+        pillar.setPosition(hitbox::toSfml(pillars[i].center));
+        pillar.setFillColor(static_cast<int>(i) == ray.pillarIndex ? sf::Color(120, 80, 110)
+                                                                   : solidColor);
+        target.draw(pillar);
     }
 
     sf::VertexArray path(sf::PrimitiveType::LineStrip);
@@ -285,7 +324,7 @@ void RayLevel::renderDebug(hitbox::DebugRenderer& debug) const
         debug.arrow(hit.point, hit.point + hit.normal * 24.f, hitbox::DebugRenderer::normalColor);
     // The swept area of the next quarter second, and the player's velocity.
     debug.objectBox(player, !lastHits.empty());
-    if (ray.hit)
+    if (ray.boxIndex >= 0)
         debug.box(solids[static_cast<std::size_t>(ray.boxIndex)], hitbox::DebugRenderer::hintColor);
     debug.cross(ray.end, 8.f, hitbox::DebugRenderer::normalColor);
 }

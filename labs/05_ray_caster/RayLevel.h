@@ -24,9 +24,10 @@ struct RayHit
     bool hit = false;
     hitbox::Vec2 start;
     hitbox::Vec2 end;
-    hitbox::Vec2 normal; // the surface normal at the hit, unit length when hit
-    float time = 1.f;    // how far along the ray: 0 at the start, 1 at the mouse
-    int boxIndex = -1;   // which of getSolids() it hit, -1 when none
+    hitbox::Vec2 normal;  // the surface normal at the hit, unit length when hit
+    float time = 1.f;     // how far along the ray: 0 at the start, 1 at the mouse
+    int boxIndex = -1;    // which of getSolids() it hit, -1 when none
+    int pillarIndex = -1; // which of getPillars() it hit (task 4), -1 when none
 };
 
 // Task 3: true when a step that wanted to move by `wanted` moved by less than a tenth of
@@ -59,6 +60,8 @@ public:
 
     const GameObject& getPlayer() const;
     const std::vector<hitbox::Box>& getSolids() const;
+    // The round pillars (task 4): only the lab's own field has them.
+    const std::vector<hitbox::Circle>& getPillars() const;
     const RayHit& getRay() const;
     // The hits of the player's last step, in the order moveBoxAndSlide resolved them.
     const std::vector<hitbox::Hit>& getLastHits() const;
@@ -66,10 +69,14 @@ public:
     bool isStuck() const;
 
 private:
+    // `boxHit` (castRay's answer for the ray to `to`), or a pillar the ray meets sooner
+    // (rayCircleTime, task 4).
+    RayHit stopAtPillars(RayHit boxHit, hitbox::Vec2 to) const;
     // Move the player by velocity * dt, sliding along what it runs into (task 2).
     void movePlayer(sf::Vector2f velocity, float dt);
 
     std::vector<hitbox::Box> solids;
+    std::vector<hitbox::Circle> pillars;
     GameObject player;
     sf::Vector2f moveDirection{-1.f, 1.f}; // the demo: down-left along the tiled floor
     bool keyboardControl = false;          // a movement key has been pressed
