@@ -41,7 +41,7 @@ const std::size_t busyCellsUpToBalls = 3000;
 sf::Color colorOf(const Ball& ball)
 {
     if (ball.responses > 0 && ball.kind != BallKind::Bullet)
-        return hitbox::DebugRenderer::touchingColor;
+        return hitbox::DebugRenderer::overlappingColor;
     switch (ball.kind)
     {
     case BallKind::Ship:
@@ -168,7 +168,7 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
             if (!aboveDiagonal || tests > 1)
                 color = cellWasted;
             else if (table.isOverlapping(row, column))
-                color = hitbox::DebugRenderer::touchingColor; // read here: set in another file
+                color = hitbox::DebugRenderer::overlappingColor; // read here: set in another file
             else if (tests == 1)
                 color = cellTested;
             const hitbox::Box box{origin.x + column * cell + 1.f, origin.y + row * cell + 1.f,
@@ -286,6 +286,6 @@ void ManyObjectsLevel::renderDebug(hitbox::DebugRenderer& debug) const
     // The boxes the pair loop compares, for the scenes small enough to read them.
     if (balls.size() <= 300)
         for (const Ball& ball : balls)
-            debug.box(ball.box(), ball.responses > 0 ? hitbox::DebugRenderer::touchingColor
+            debug.box(ball.box(), ball.responses > 0 ? hitbox::DebugRenderer::overlappingColor
                                                      : hitbox::DebugRenderer::freeColor);
 }
