@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # build.sh [BUILD_DIR] [--draft] [--no-pdf] - builds every lecture deck. The one command.
 #
-# 1. installs what it needs: Node.js and npm (Debian's nodejs npm, when missing) and the
-#    pinned Marp CLI (npm ci, from package-lock.json, with npm's cache in
-#    /var/cache/hitbox/npm when that folder can be written, so CI downloads it once);
+# 1. installs what it needs: Node.js and npm, xvfb, ffmpeg, clang-format and (for the PDF)
+#    Chromium, from Debian when missing, and the pinned Marp CLI (npm ci, from
+#    package-lock.json, with npm's cache in /var/cache/hitbox/npm when that folder can be
+#    written, so CI downloads it once);
 # 2. builds the programs that draw figures, and only those, into build/slides (a release
 #    build without the tests and benchmarks), unless BUILD_DIR already holds them;
 # 3. draws the figures with those programs (make-figures.sh, list in figures.txt) and checks
@@ -37,16 +38,24 @@ done
 
 as_root() { if [[ $(id -u) -eq 0 ]]; then "$@"; else sudo "$@"; fi; }
 
-# --- 1. Node.js, npm and Marp -------------------------------------------------------------
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-    echo "== installing Node.js and npm (Debian packages)"
-    as_root apt-get update -qq
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq nodejs npm
-fi
-if ! command -v xvfb-run >/dev/null; then
-    echo "== installing xvfb (the figures are drawn in a virtual display)"
-    as_root apt-get update -qq
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq xvfb xauth
+# --- 1. Node.js, npm, Marp, and the tools the figures need ------------------------------------
+# One apt-get for everything missing (a package whose command is already there is skipped):
+# node/npm (Marp), xvfb-run (figures drawn in a virtual display), ffmpeg (crops, animations,
+# the PDF's frame strips), clang-format (code excerpts formatted to the slide's width), and
+# Chromium when PDFs are wanted (Marp prints them with it). Waits for another apt to finish.
+needed=()
+need() { command -v "$1" >/dev/null || needed+=("${@:2}"); }
+need node nodejs
+need npm npm
+need xvfb-run xvfb xauth
+need ffmpeg ffmpeg
+need clang-format clang-format
+$pdf && [[ -z "${CHROME_PATH:-}" ]] && need chromium chromium
+if [[ ${#needed[@]} -gt 0 ]]; then
+    echo "== installing ${needed[*]} (Debian packages)"
+    as_root apt-get -o DPkg::Lock::Timeout=600 update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq \
+        --no-install-recommends "${needed[@]}" >/dev/null
 fi
 cd "$here"
 # npm ci again only when the lockfile changed since the last install.

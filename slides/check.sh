@@ -20,6 +20,6 @@ here="$(cd "$(dirname "$0")" && pwd)"
 "$here/tests/run.sh"
 "$here/build.sh" "$@" --no-pdf
 node "$here/tools/check-decks.mjs" --decks "$here/build/decks" --dist "$here/dist" \
-    --concepts "$here/concepts.txt" --src "$here/src"
+    --concepts "$here/concepts.txt" --src "$here/src" --figures "$here/figures"
 node "$here/tools/check-layout.mjs" --dist "$here/dist"
 echo "slides: all checks passed"

@@ -180,6 +180,7 @@ void GridBroadphase::listCells()
     Entry* out = entries.data();
     // Fill from the last box back, each cell from its end back: afterwards start[c] is the
     // start of cell c, and every cell's boxes are in item order.
+    // [slide:grid-fill]
     for (std::size_t i = count; i-- > 0;)
     {
         const Entry box = {minX[i], maxX[i], minY[i], maxY[i], std::uint32_t(i)};
@@ -194,6 +195,7 @@ void GridBroadphase::listCells()
                 out[selectWithoutBranch(covered, slot, spare)] = entry;
             });
     }
+    // [/slide]
 }
 
 void GridBroadphase::testCells()
