@@ -124,12 +124,21 @@ echo "== HTML (Marp)"
 "${marp[@]}" --input-dir "$decks" --output "$here/dist" --html
 chrome="${CHROME_PATH:-/usr/bin/chromium}"
 if $pdf && [[ -x "$chrome" ]]; then
-    echo "== PDF with bookmarks, and the speaker notes (Marp + $chrome)"
-    # Local images need --allow-local-files, or they are silently left out of the PDF.
-    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$decks" --output "$here/dist" --pdf \
-        --pdf-outlines --allow-local-files
+    echo "== PDF with bookmarks, the slides as pictures, and the speaker notes (Marp + $chrome)"
+    # The PDF decks carry their images inside (data: URLs): Chromium then reads no local
+    # file, so Marp needs no --allow-local-files (and prints no warning about it).
+    pdf_decks="$here/build/pdf"
+    pictures="$here/build/pictures"
+    rm -rf "$pdf_decks" "$pictures" "$here/build/notes"
+    node "$here/tools/inline-images.mjs" --in "$decks" --out "$pdf_decks"
+    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$pdf_decks" --output "$here/dist" --pdf --pdf-outlines
+    # Each slide as a picture for the notes pages (half size: sharp enough on paper).
+    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$pdf_decks" --output "$pictures" --images png \
+        --image-scale 0.6
+    node "$here/tools/deck-extras.mjs" --decks "$pdf_decks" --notes "$here/build/notes" --dist "$here/dist" \
+        --pictures "$pictures"
     CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$here/build/notes" --output "$here/dist" \
-        --pdf --pdf-outlines --allow-local-files
+        --pdf --pdf-outlines
     "${extras[@]}" --index-only 1 # the index again, now with the PDFs
 elif $pdf; then
     echo "== PDF skipped: no Chromium (apt-get install chromium, or set CHROME_PATH)"

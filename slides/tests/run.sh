@@ -245,6 +245,21 @@ figure_case animation-without-frames "an animation needs frames=FIRST:LAST:STEP"
     "moving.apng programs/painter --debug"
 if command -v ffmpeg >/dev/null; then
     figure_case animation-clean-passes "" "moving.apng programs/painter frames=10:50:20"
+    # The still must be clean frames: one laid over the others (an onion skin) must fail.
+    moving="$work/animation-clean-passes-figures/moving"
+    status=0
+    "$slides/tools/check-stills.sh" "$moving.apng" >/dev/null 2>&1 || status=$?
+    if [[ $status -eq 0 ]]; then pass animation-still-of-clean-frames; else fail "animation-still-of-clean-frames: exit $status"; fi
+    ffmpeg -nostdin -loglevel error -y -i "$moving.apng" -vf "tblend=all_mode=average" -frames:v 1 -update 1 \
+        "$work/onion.png"
+    ffmpeg -nostdin -loglevel error -y -i "$work/onion.png" -vf "pad=iw:ih+24:0:24:white" "$moving.png"
+    status=0
+    output="$("$slides/tools/check-stills.sh" "$moving.apng" 2>&1)" || status=$?
+    if [[ $status -eq 1 && "$output" == *"is not one frame of"* ]]; then
+        pass animation-still-overprinted
+    else
+        fail "animation-still-overprinted: expected a failure naming the panel, got (exit $status): $output"
+    fi
 fi
 
 # Layout: a slide whose content runs below its bottom edge, measured in Chromium.
