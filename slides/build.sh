@@ -112,6 +112,12 @@ for folder in "$decks" "$here/dist" "$here/build/notes"; do
     cp "$here"/figures/*.svg "$folder/figures/"
     cp "$here"/figures/generated/*.png "$here"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
     cp "$here"/figures/generated/interactive-*.svg "$folder/figures/generated/"
+    # Each lab's own screenshot (labs/NN_name/screenshot.png) as figures/labs/NN.png.
+    mkdir -p "$folder/figures/labs"
+    for shot in "$repo"/labs/*/screenshot.png; do
+        lab="$(basename "$(dirname "$shot")")"
+        cp "$shot" "$folder/figures/labs/${lab%%_*}.png"
+    done
 done
 mkdir -p "$here/dist/interactive"
 cp "$here/build/wasm/hitbox-geometry.js" "$here/interactive/figures.js" "$here/dist/interactive/"

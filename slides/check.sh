@@ -20,6 +20,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 "$here/tests/run.sh"
 "$here/build.sh" "$@" --no-pdf
 node "$here/tools/check-decks.mjs" --decks "$here/build/decks" --dist "$here/dist" \
-    --concepts "$here/concepts.txt" --src "$here/src" --figures "$here/figures"
+    --concepts "$here/concepts.txt" --src "$here/src" --figures "$here/figures" \
+    --labs "$here/../labs"
 node "$here/tools/check-layout.mjs" --dist "$here/dist"
 echo "slides: all checks passed"

@@ -6,7 +6,8 @@
 // - a slide's caption and speaker notes name only code its excerpt contains: every code-like
 //   name in them (`inline code`, a camelCase name, a member like hit.time) is in the slide's
 //   code, so a caption cannot promise what the excerpt was cut before;
-// - every figure (figures/*.svg, and every output of figures.txt) is used by a deck;
+// - every figure (figures/*.svg, every output of figures.txt and, with --labs DIR, every
+//   lab's screenshot.png) is used by a deck;
 // - every slide has speaker notes (an HTML comment that is not a Marp directive);
 // - no slide shows more code than fits at lecture-hall size: 16 lines, and no line longer
 //   than the 78 characters that fit at the theme's 24px (code never shrinks or wraps);
@@ -215,6 +216,9 @@ function main() {
   if (fs.existsSync(list))
     for (const line of fs.readFileSync(list, 'utf8').split(/\r?\n/))
       if (line.trim() && !line.startsWith('#')) figures.push(`figures/generated/${line.trim().split(/\s+/)[0]}`);
+  if (options.labs)
+    for (const lab of fs.readdirSync(options.labs))
+      if (fs.existsSync(path.join(options.labs, lab, 'screenshot.png'))) figures.push(`figures/labs/${lab.slice(0, 2)}.png`);
   for (const figure of figures)
     if (!linked.includes(figure)) problems.push(`${figure}: used by no deck (use it on a slide, or remove it)`);
 
