@@ -138,9 +138,13 @@ if $pdf && [[ -x "$chrome" ]]; then
     rm -rf "$pdf_decks" "$pictures" "$here/build/notes"
     node "$here/tools/inline-images.mjs" --in "$decks" --out "$pdf_decks"
     CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$pdf_decks" --output "$here/dist" --pdf --pdf-outlines
-    # Each slide as a picture for the notes pages (half size: sharp enough on paper).
-    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$pdf_decks" --output "$pictures" --images png \
-        --image-scale 0.6
+    # Each slide as a picture for the notes pages (0.6 of full size: sharp enough on paper).
+    # One deck at a time: all at once can time out in Chromium on a busy 2-core machine.
+    mkdir -p "$pictures"
+    for deck in "$pdf_decks"/*.md; do
+        CHROME_PATH="$chrome" "${marp[@]}" "$deck" --output "$pictures/$(basename "${deck%.md}").png" \
+            --images png --image-scale 0.6
+    done
     node "$here/tools/deck-extras.mjs" --decks "$pdf_decks" --notes "$here/build/notes" --dist "$here/dist" \
         --pictures "$pictures"
     CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$here/build/notes" --output "$here/dist" \

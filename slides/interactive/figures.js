@@ -278,8 +278,10 @@
       svg += rect(0, top, panelX - 20, h, 'fill="#7b61ff" fill-opacity="0.08"');
       svg += rect(left, top, w, h, `fill="${colours.b}" fill-opacity="0.25" stroke="${colours.b}" stroke-width="4"`);
       // The whole line through S and E, dashed: where the slab method's times live.
-      svg += line(s.s.x - (s.e.x - s.s.x) * 20, s.s.y - (s.e.y - s.s.y) * 20, s.s.x + (s.e.x - s.s.x) * 20,
-        s.s.y + (s.e.y - s.s.y) * 20, `stroke="${colours.a}" stroke-width="2" stroke-dasharray="6 8" stroke-opacity="0.6"`);
+      // (In a nested <svg>, which clips it: it stays left of the answer text.)
+      svg += `<svg width="${panelX - 20}" height="${height}">` + line(s.s.x - (s.e.x - s.s.x) * 20, s.s.y - (s.e.y - s.s.y) * 20,
+        s.s.x + (s.e.x - s.s.x) * 20, s.s.y + (s.e.y - s.s.y) * 20,
+        `stroke="${colours.a}" stroke-width="2" stroke-dasharray="6 8" stroke-opacity="0.6"`) + '</svg>';
       svg += arrow(s.s.x, s.s.y, s.e.x, s.e.y, colours.a);
       for (const [t, name] of marks) {
         const x = s.s.x + (s.e.x - s.s.x) * t;
