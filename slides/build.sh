@@ -50,6 +50,8 @@ need npm npm
 need xvfb-run xvfb xauth
 need ffmpeg ffmpeg
 need clang-format clang-format
+# The font of the labels ffmpeg draws on the animation strips (make-figures.sh).
+[[ -f /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ]] || needed+=(fonts-dejavu-core)
 $pdf && [[ -z "${CHROME_PATH:-}" ]] && need chromium chromium
 if [[ ${#needed[@]} -gt 0 ]]; then
     echo "== installing ${needed[*]} (Debian packages)"

@@ -277,11 +277,14 @@
       let svg = rect(left, 0, w, height, 'fill="#7b61ff" fill-opacity="0.08"');
       svg += rect(0, top, panelX - 20, h, 'fill="#7b61ff" fill-opacity="0.08"');
       svg += rect(left, top, w, h, `fill="${colours.b}" fill-opacity="0.25" stroke="${colours.b}" stroke-width="4"`);
-      // The whole line through S and E, dashed: where the slab method's times live.
-      // (In a nested <svg>, which clips it: it stays left of the answer text.)
-      svg += `<svg width="${panelX - 20}" height="${height}">` + line(s.s.x - (s.e.x - s.s.x) * 20, s.s.y - (s.e.y - s.s.y) * 20,
-        s.s.x + (s.e.x - s.s.x) * 20, s.s.y + (s.e.y - s.s.y) * 20,
-        `stroke="${colours.a}" stroke-width="2" stroke-dasharray="6 8" stroke-opacity="0.6"`) + '</svg>';
+      // On a miss whose line crosses the box: the line dashed on to where it leaves (or back
+      // from where it enters), so near and far are seen on it.
+      if (!hit && answer[6] === 1) {
+        const at = (t) => [s.s.x + (s.e.x - s.s.x) * t, s.s.y + (s.e.y - s.s.y) * t];
+        const from = at(Math.min(0, answer[7]));
+        const to = at(Math.max(1, answer[8]));
+        svg += line(from[0], from[1], to[0], to[1], `stroke="${colours.a}" stroke-width="2" stroke-dasharray="6 8" stroke-opacity="0.6"`);
+      }
       svg += arrow(s.s.x, s.s.y, s.e.x, s.e.y, colours.a);
       for (const [t, name] of marks) {
         const x = s.s.x + (s.e.x - s.s.x) * t;
