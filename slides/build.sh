@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # build.sh [BUILD_DIR] [--draft] [--no-pdf] - builds every lecture deck. The one command.
 #
-# 1. installs what it needs: Node.js and npm (Debian's nodejs npm, when missing) and the
-#    pinned Marp CLI (npm ci, from package-lock.json, with npm's cache in
-#    /var/cache/hitbox/npm when that folder can be written, so CI downloads it once);
+# 1. installs what it needs: Node.js and npm, xvfb, ffmpeg, clang-format and (for the PDF)
+#    Chromium, from Debian when missing, and the pinned Marp CLI (npm ci, from
+#    package-lock.json, with npm's cache in /var/cache/hitbox/npm when that folder can be
+#    written, so CI downloads it once);
 # 2. builds the programs that draw figures, and only those, into build/slides (a release
 #    build without the tests and benchmarks), unless BUILD_DIR already holds them;
 # 3. draws the figures with those programs (make-figures.sh, list in figures.txt) and checks
@@ -37,16 +38,26 @@ done
 
 as_root() { if [[ $(id -u) -eq 0 ]]; then "$@"; else sudo "$@"; fi; }
 
-# --- 1. Node.js, npm and Marp -------------------------------------------------------------
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-    echo "== installing Node.js and npm (Debian packages)"
-    as_root apt-get update -qq
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq nodejs npm
-fi
-if ! command -v xvfb-run >/dev/null; then
-    echo "== installing xvfb (the figures are drawn in a virtual display)"
-    as_root apt-get update -qq
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq xvfb xauth
+# --- 1. Node.js, npm, Marp, and the tools the figures need ------------------------------------
+# One apt-get for everything missing (a package whose command is already there is skipped):
+# node/npm (Marp), xvfb-run (figures drawn in a virtual display), ffmpeg (crops, animations,
+# the PDF's frame strips), clang-format (code excerpts formatted to the slide's width), and
+# Chromium when PDFs are wanted (Marp prints them with it). Waits for another apt to finish.
+needed=()
+need() { command -v "$1" >/dev/null || needed+=("${@:2}"); }
+need node nodejs
+need npm npm
+need xvfb-run xvfb xauth
+need ffmpeg ffmpeg
+need clang-format clang-format
+# The font of the labels ffmpeg draws on the animation strips (make-figures.sh).
+[[ -f /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf ]] || needed+=(fonts-dejavu-core)
+$pdf && [[ -z "${CHROME_PATH:-}" ]] && need chromium chromium
+if [[ ${#needed[@]} -gt 0 ]]; then
+    echo "== installing ${needed[*]} (Debian packages)"
+    as_root apt-get -o DPkg::Lock::Timeout=600 update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq \
+        --no-install-recommends "${needed[@]}" >/dev/null
 fi
 cd "$here"
 # npm ci again only when the lockfile changed since the last install.
@@ -103,6 +114,12 @@ for folder in "$decks" "$here/dist" "$here/build/notes"; do
     cp "$here"/figures/*.svg "$folder/figures/"
     cp "$here"/figures/generated/*.png "$here"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
     cp "$here"/figures/generated/interactive-*.svg "$folder/figures/generated/"
+    # Each lab's own screenshot (labs/NN_name/screenshot.png) as figures/labs/NN.png.
+    mkdir -p "$folder/figures/labs"
+    for shot in "$repo"/labs/*/screenshot.png; do
+        lab="$(basename "$(dirname "$shot")")"
+        cp "$shot" "$folder/figures/labs/${lab%%_*}.png"
+    done
 done
 mkdir -p "$here/dist/interactive"
 cp "$here/build/wasm/hitbox-geometry.js" "$here/interactive/figures.js" "$here/dist/interactive/"
@@ -115,12 +132,25 @@ echo "== HTML (Marp)"
 "${marp[@]}" --input-dir "$decks" --output "$here/dist" --html
 chrome="${CHROME_PATH:-/usr/bin/chromium}"
 if $pdf && [[ -x "$chrome" ]]; then
-    echo "== PDF with bookmarks, and the speaker notes (Marp + $chrome)"
-    # Local images need --allow-local-files, or they are silently left out of the PDF.
-    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$decks" --output "$here/dist" --pdf \
-        --pdf-outlines --allow-local-files
+    echo "== PDF with bookmarks, the slides as pictures, and the speaker notes (Marp + $chrome)"
+    # The PDF decks carry their images inside (data: URLs): Chromium then reads no local
+    # file, so Marp needs no --allow-local-files (and prints no warning about it).
+    pdf_decks="$here/build/pdf"
+    pictures="$here/build/pictures"
+    rm -rf "$pdf_decks" "$pictures" "$here/build/notes"
+    node "$here/tools/inline-images.mjs" --in "$decks" --out "$pdf_decks"
+    CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$pdf_decks" --output "$here/dist" --pdf --pdf-outlines
+    # Each slide as a picture for the notes pages (0.6 of full size: sharp enough on paper).
+    # One deck at a time: all at once can time out in Chromium on a busy 2-core machine.
+    mkdir -p "$pictures"
+    for deck in "$pdf_decks"/*.md; do
+        CHROME_PATH="$chrome" "${marp[@]}" "$deck" --output "$pictures/$(basename "${deck%.md}").png" \
+            --images png --image-scale 0.6
+    done
+    node "$here/tools/deck-extras.mjs" --decks "$pdf_decks" --notes "$here/build/notes" --dist "$here/dist" \
+        --pictures "$pictures"
     CHROME_PATH="$chrome" "${marp[@]}" --input-dir "$here/build/notes" --output "$here/dist" \
-        --pdf --pdf-outlines --allow-local-files
+        --pdf --pdf-outlines
     "${extras[@]}" --index-only 1 # the index again, now with the PDFs
 elif $pdf; then
     echo "== PDF skipped: no Chromium (apt-get install chromium, or set CHROME_PATH)"

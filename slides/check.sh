@@ -4,11 +4,14 @@
 # 1. tests/run.sh: the checks themselves are shown to catch each mistake they exist for
 #    (a defect planted in a small deck or figure list must fail, a clean one pass).
 # 2. build.sh in strict mode (HTML only): fails when a code region named by a deck does not
-#    exist or lacks its key line, when a figure in figures.txt cannot be drawn, differs
-#    between two runs or does not show what it claims, or when a deck does not convert.
+#    exist, lacks its key line or is not whole (starts or ends mid-statement, in or on a
+#    comment, repeats lines), when a figure in figures.txt cannot be drawn, differs between
+#    two runs or does not show what it claims, when an animation's still is not clean
+#    frames (tools/check-stills.sh), or when a deck does not convert.
 # 3. check-decks.mjs on the built decks: speaker notes on every slide, code that fits at
-#    24px (16 lines of at most 78 characters), balanced brackets in every excerpt, no words
-#    for insiders on the slides, images present, offline HTML, and every concept listed in
+#    24px (16 lines of at most 78 characters), balanced brackets in every excerpt, captions
+#    that name only code their slide shows, no words for insiders on the slides, images
+#    present, every figure used by a deck, offline HTML, and every concept listed in
 #    concepts.txt on at least one slide.
 # 4. check-layout.mjs: in headless Chromium, no slide's content runs below the slide
 #    (skipped, saying so, without Chromium).
@@ -20,6 +23,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 "$here/tests/run.sh"
 "$here/build.sh" "$@" --no-pdf
 node "$here/tools/check-decks.mjs" --decks "$here/build/decks" --dist "$here/dist" \
-    --concepts "$here/concepts.txt" --src "$here/src"
+    --concepts "$here/concepts.txt" --src "$here/src" --figures "$here/figures" \
+    --labs "$here/../labs"
 node "$here/tools/check-layout.mjs" --dist "$here/dist"
 echo "slides: all checks passed"

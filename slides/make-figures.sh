@@ -15,8 +15,9 @@
 #   really drawn (a quadtree figure that looks the same as the default grid fails).
 # An output NAME.apng is an animation: an argument frames=FIRST:LAST:STEP draws the picture
 # after FIRST, FIRST+STEP, ... LAST fixed steps (--frames), and ffmpeg joins them into
-# NAME.apng (for the HTML, looping) and an onion-skin still NAME.png (every frame laid over
-# the others, lightest wins: for the PDF). Both are checked the same way as a picture.
+# NAME.apng (for the HTML, looping) and a still NAME.png for the PDF: three of its frames
+# in a labelled strip (tools/check-stills.sh: each panel is one clean frame). Both are
+# checked the same way as a picture.
 # A missing program, a failed run, an empty PNG or a failed check fails, naming the figure;
 # with --allow-missing (drafts only) they are reported and skipped.
 set -euo pipefail
@@ -70,33 +71,76 @@ draw() {
 }
 
 # animate EXECUTABLE TARGET.apng LOG FRAMES ARGUMENTS...: the frames of an animation, joined
-# into TARGET.apng, and its onion-skin still TARGET.png (same name, .png).
+# into TARGET.apng, and its still for the PDF, TARGET.png (same name, .png): the first, middle
+# and last frames side by side (or one above the other, whichever shows them larger on a
+# slide), each under a label with its number and time. Never frames laid over each other:
+# a handout must show each moment cleanly (tools/check-stills.sh checks every panel is one
+# of the animation's frames, pixel for pixel).
 animate() {
     local executable="$1" target="$2" log="$3" frames="$4"
     shift 4
     local first last step frame count=0 folder="$target.frames"
     IFS=: read -r first last step <<<"$frames"
     rm -rf "$folder" && mkdir -p "$folder"
+    local times=()
     for ((frame = first; frame <= last; frame += step)); do
         draw "$executable" "$folder/$(printf %03d $count).png" "$log" "$@" --frames "$frame" || return 1
+        times+=("$frame")
         count=$((count + 1))
     done
     ffmpeg -nostdin -loglevel error -y -framerate 2 -i "$folder/%03d.png" -plays 0 -f apng "$target" >>"$log" 2>&1 || return 1
-    # Onion skin: each frame blended over the ones before it, the lighter pixel kept.
-    local inputs=() graph="" previous="[0:v]" i
-    for ((i = 0; i < count; i++)); do inputs+=(-i "$folder/$(printf %03d $i).png"); done
-    for ((i = 1; i < count; i++)); do
-        graph+="${previous}[$i:v]blend=all_mode=lighten[m$i];"
-        previous="[m$i]"
-    done
-    if [[ $count -gt 1 ]]; then
-        ffmpeg -nostdin -loglevel error -y "${inputs[@]}" -filter_complex "${graph%;}" -map "$previous" \
-            "${target%.apng}.png" >>"$log" 2>&1 || return 1
-    else
-        cp "$folder/000.png" "${target%.apng}.png"
-    fi
+    strip "$folder" "${target%.apng}.png" "$log" "${times[@]}" || return 1
     rm -rf "$folder"
 }
+
+# strip FOLDER STILL LOG STEPS...: the still of an animation whose frames are FOLDER/000.png...
+# (STEPS: each frame's fixed steps), three labelled panels (one when there is one frame).
+strip() {
+    local folder="$1" still="$2" log="$3"
+    shift 3
+    local steps=("$@") count=$#
+    local picks=(0)
+    [[ $count -ge 3 ]] && picks=(0 $(((count - 1) / 2)) $((count - 1)))
+    [[ $count -eq 2 ]] && picks=(0 1)
+    local size w h
+    size="$(ffprobe -v error -select_streams v:0 -show_entries stream=width,height -of csv=p=0 "$folder/000.png")"
+    IFS=, read -r w h <<<"$size"
+    # The layout that shows the frames larger in a figure slide's 1200x560, and the label size
+    # that is still 28 px there.
+    local n=${#picks[@]} layout font band
+    read -r layout font band < <(python3 -c '
+import math, sys
+w, h, n = (int(a) for a in sys.argv[1:])
+best = None
+for layout in ("h", "v"):
+    font = 40
+    for _ in range(4):
+        band = round(font * 1.5)
+        W, H = (n * w, h + band) if layout == "h" else (w, n * (h + band))
+        scale = min(1200 / W, 560 / H, 1.0)
+        font = max(28, math.ceil(28 / scale))
+    if best is None or scale > best[0]:
+        best = (scale, layout, font, band)
+print(best[1], best[2], best[3])' "$w" "$h" "$n") || return 1
+    local inputs=() graph="" labels="" i=0 pick
+    for pick in "${picks[@]}"; do
+        local label="$folder/label-$i.txt"
+        # The label: the frame's number in the strip and its time (a fixed step is 1/120 s).
+        python3 -c 'import sys; print(f"{sys.argv[1]}   t = {int(sys.argv[2]) / 120:.2f} s", end="")' \
+            "$((i + 1))" "${steps[$pick]}" >"$label"
+        inputs+=(-i "$folder/$(printf %03d "$pick").png")
+        graph+="[$i:v]format=rgb24,pad=$w:$((h + band)):0:$band:white,drawtext=fontfile=$font_file:textfile=$label:fontsize=$font:fontcolor=black:x=(w-text_w)/2:y=($band-text_h)/2[p$i];"
+        labels+="[p$i]"
+        i=$((i + 1))
+    done
+    if [[ $n -gt 1 ]]; then
+        graph+="${labels}$([[ $layout == h ]] && echo hstack || echo vstack)=inputs=$n[out]"
+    else
+        graph+="${labels}null[out]"
+    fi
+    ffmpeg -nostdin -loglevel error -y "${inputs[@]}" -filter_complex "$graph" -map "[out]" "$still" >>"$log" 2>&1
+}
+font_file=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
 
 failures=()
 made=0
@@ -150,6 +194,11 @@ while IFS= read -r line; do
             rm -f "$again"
             continue
         fi
+    fi
+    if [[ "$name" == *.apng ]] && ! "$here/tools/check-stills.sh" "$target" 2>>"$log"; then
+        failures+=("$name: its still ${name%.apng}.png is not made of clean frames (see $log)")
+        rm -f "$again" "${again%.apng}.png"
+        continue
     fi
     rm -f "$again" "$log" "${again%.apng}.png"
     made=$((made + 1))

@@ -6,8 +6,10 @@
 //
 // In a deck:  <div class="interactive" data-figure="boxes"></div>
 // Each figure is an SVG in its own pixels (y down, as in Hitbox), 1160 x 540: the shapes on
-// the left, the answer in large text on the right. Shapes move in whole steps of `snap`
-// pixels, so an edge can be hit exactly (the edge rule is the point of two figures).
+// the left, the answer in large text on the right. A drag moves a shape in whole steps of
+// `snap` pixels, so an edge can be hit exactly (the edge rule is the point of two figures);
+// the arrow keys then move the shape last clicked by 1 pixel (Shift: 10), for a 1-pixel
+// overlap or a graze.
 // build.sh also runs this file in Node (tools/interactive-stills.mjs) to draw each figure's
 // first state as the still picture the PDF shows.
 (function () {
@@ -30,6 +32,13 @@
 
   // --- Drawing helpers (SVG as text, so Node can draw the stills too) ----------------------
   const colours = { a: '#1f6fd1', b: '#e07a10', hit: '#c62828', apart: '#2e7d32', ink: '#222' };
+  // A slab time: beyond the line's reach (figures.cpp's lineReach) it is "for ever".
+  function formatTime(value) {
+    if (value <= -999) return '\u2212\u221e';
+    if (value >= 999) return '+\u221e';
+    return format(value);
+  }
+
   function format(value) {
     const text = String(Number(value.toFixed(2)));
     return text.replace('-', '\u2212');
@@ -250,12 +259,32 @@
           lines.push([`far t = ${format(answer[5])} (leaves)`, colours.ink]);
           marks.push([answer[5], 'far']);
         } else lines.push(['far: after E (t > 1)']);
+      } else if (answer[6] === 1) {
+        // The line through S and E crosses the box, but not between them.
+        lines.push([`near t = ${format(answer[7])} (enters)`, colours.ink]);
+        lines.push([`far t = ${format(answer[8])} (leaves)`, colours.ink]);
+        lines.push(['both outside 0 to 1']);
+        marks.push([answer[7], 'near'], [answer[8], 'far']);
+      } else {
+        // The line misses: the x slab's and the y slab's stretches of t do not overlap.
+        const span = (inside, enter, exit) => (inside === 1 ? `t ${formatTime(enter)} to ${formatTime(exit)}` : 'never');
+        lines.push([`x slab: ${span(answer[9], answer[10], answer[11])}`, colours.ink]);
+        lines.push([`y slab: ${span(answer[12], answer[13], answer[14])}`, colours.ink]);
+        lines.push(['no t inside both']);
       }
       lines.push(['S is t = 0, E is t = 1']);
       // The two slabs: the x band and the y band of the box. Inside both = inside the box.
       let svg = rect(left, 0, w, height, 'fill="#7b61ff" fill-opacity="0.08"');
       svg += rect(0, top, panelX - 20, h, 'fill="#7b61ff" fill-opacity="0.08"');
       svg += rect(left, top, w, h, `fill="${colours.b}" fill-opacity="0.25" stroke="${colours.b}" stroke-width="4"`);
+      // On a miss whose line crosses the box: the line dashed on to where it leaves (or back
+      // from where it enters), so near and far are seen on it.
+      if (!hit && answer[6] === 1) {
+        const at = (t) => [s.s.x + (s.e.x - s.s.x) * t, s.s.y + (s.e.y - s.s.y) * t];
+        const from = at(Math.min(0, answer[7]));
+        const to = at(Math.max(1, answer[8]));
+        svg += line(from[0], from[1], to[0], to[1], `stroke="${colours.a}" stroke-width="2" stroke-dasharray="6 8" stroke-opacity="0.6"`);
+      }
       svg += arrow(s.s.x, s.s.y, s.e.x, s.e.y, colours.a);
       for (const [t, name] of marks) {
         const x = s.s.x + (s.e.x - s.s.x) * t;
@@ -271,7 +300,8 @@
 
   // 6. A box swept against a wall: where along its move it first touches (time of impact).
   figures.sweptBox = {
-    start: { from: { x: 60, y: 220 }, to: { x: 560, y: 140 }, size: [90, 90], wall: [460, 30, 40, 480] },
+    // The wall leaves room above and below it, so the box can pass a corner or graze it.
+    start: { from: { x: 60, y: 220 }, to: { x: 560, y: 140 }, size: [90, 90], wall: [460, 120, 40, 300] },
     question: (s) => ['sweptBoxAnswer',
       [s.from.x, s.from.y, ...s.size, s.to.x - s.from.x, s.to.y - s.from.y, ...s.wall]],
     reach: (s) => [0, s.size[0], 0, s.size[1]],
@@ -326,11 +356,31 @@
     live.className = 'live';
     element.prepend(live);
     let dragging = null; // { handle, last }
+    let selected = null; // the handle the arrow keys move (the last one clicked)
+    live.tabIndex = 0; // focusable: the arrow keys go to the figure, not to the slides
     function update() {
       const { svg, question } = render(name, state);
       live.innerHTML = svg;
       element.dataset.question = JSON.stringify(question); // for the test: what was asked
     }
+    // Moves a handle's point; the shape stays whole inside the drawing, left of the answer.
+    function moveBy(handle, dx, dy) {
+      const point = state[handle];
+      const [left, right, up, down] = figures[name].reach ? figures[name].reach(state, handle) : [0, 0, 0, 0];
+      point.x = Math.min(Math.max(point.x + dx, 20 - left), panelX - 40 - right);
+      point.y = Math.min(Math.max(point.y + dy, 20 - up), height - 20 - down);
+    }
+    const arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+    live.addEventListener('keydown', (event) => {
+      const step = arrows[event.key];
+      // Only handles that are points move by keys (a turning handle is dragged).
+      if (!step || selected === null || !(state[selected] && 'x' in state[selected])) return;
+      const size = event.shiftKey ? snap : 1;
+      moveBy(selected, step[0] * size, step[1] * size);
+      update();
+      event.preventDefault();
+      event.stopPropagation(); // not the next slide
+    });
     // Pointer position in the figure's own pixels, however the slide is scaled.
     function toFigure(event) {
       const box = live.firstChild.getBoundingClientRect();
@@ -340,6 +390,8 @@
       const handle = event.target.closest('[data-handle]');
       if (!handle) return;
       dragging = { handle: handle.dataset.handle, last: toFigure(event) };
+      selected = handle.dataset.handle;
+      live.focus({ preventScroll: true });
       live.setPointerCapture(event.pointerId);
       event.preventDefault();
       event.stopPropagation();
@@ -349,13 +401,9 @@
       const to = toFigure(event);
       if (!(figures[name].drag && figures[name].drag(state, dragging.handle, to))) {
         // Move the handle's point by whole steps of `snap` pixels.
-        const point = state[dragging.handle];
         const dx = Math.round((to.x - dragging.last.x) / snap) * snap;
         const dy = Math.round((to.y - dragging.last.y) / snap) * snap;
-        // The shape stays whole inside the drawing, left of the answer text.
-        const [left, right, up, down] = figures[name].reach ? figures[name].reach(state, dragging.handle) : [0, 0, 0, 0];
-        point.x = Math.min(Math.max(point.x + dx, 20 - left), panelX - 40 - right);
-        point.y = Math.min(Math.max(point.y + dy, 20 - up), height - 20 - down);
+        moveBy(dragging.handle, dx, dy);
         dragging.last = { x: dragging.last.x + dx, y: dragging.last.y + dy };
       }
       update();

@@ -43,17 +43,22 @@ const expected = {
   orientedBoxes: (o) => [o[0] ? 'a separating axis: apart' : 'every axis overlaps: hit', `axis (${fmt(o[1])}, ${fmt(o[2])})`,
     `shadow A ${fmt(o[20])} to ${fmt(o[21])}`, `shadow B ${fmt(o[22])} to ${fmt(o[23])}`,
     o[0] ? `gap ${fmt(o[3])}` : `least overlap ${fmt(-o[3])}`],
-  ray: (o) => (!o[0] ? ['the ray misses'] : ['the ray hits the box', `near t = ${fmt(o[1])}`,
-    o[5] >= 0 ? `far t = ${fmt(o[5])} (leaves)` : 'far: after E']),
+  ray: (o) => (o[0] ? ['the ray hits the box', `near t = ${fmt(o[1])}`,
+    o[5] >= 0 ? `far t = ${fmt(o[5])} (leaves)` : 'far: after E']
+    : o[6] ? ['the ray misses', `near t = ${fmt(o[7])} (enters)`, `far t = ${fmt(o[8])} (leaves)`]
+      : ['the ray misses', 'x slab: ', 'y slab: ', 'no t inside both']),
   sweptBox: (o) => (!o[0] ? ['no hit this step'] : ['hits the wall this step',
     o[2] ? 'started inside: t = 0' : `time of impact t = ${fmt(o[1])}`, `normal (${fmt(o[3])}, ${fmt(o[4])})`]),
 };
 
 // Each figure: its deck, and drags [handle, dx, dy in the figure's pixels, text it must then
-// show because the answer is known by hand (or null)].
+// show because the answer is known by hand (or null), and optionally arrow-key presses on
+// that handle after the drag (1 pixel each: "ArrowRight" or ["ArrowDown", 2])].
 const figures = [
   { name: 'boxes', deck: '01-bounding-volumes', drags: [
     ['a', -40, 0, 'one fails: apart'], // A.right 300 = B.left 300: touching is apart
+    ['a', 0, 0, 'push A by (\u22121, 0)', 'ArrowRight'], // one pixel in: one pixel out
+    ['a', 0, 0, 'one fails: apart', 'ArrowLeft'], // and back to touching
     ['a', 10, 0, 'push A by (\u221210, 0)'], // 10 pixels in: pushed 10 back out
     ['b', 200, 0, null], ['a', 0, 200, null]] },
   { name: 'pointInBox', deck: '01-bounding-volumes', drags: [
@@ -66,10 +71,21 @@ const figures = [
   { name: 'orientedBoxes', deck: '04-oriented-boxes', drags: [
     ['b', -60, 0, 'every axis overlaps: hit'], ['bTurn', 0, 120, null], ['a', 0, 100, null], ['aTurn', -80, 60, null]] },
   { name: 'ray', deck: '06-fast-objects', drags: [
-    ['s', 0, 0, null], ['s', 300, -160, 'near t = 0 (starts inside)'], ['e', -200, 300, null], ['s', -200, 0, null]] },
+    // S (60, 420) to E (160, 360): the line enters the box at x = 240, t = 1.8, after E, and
+    // leaves at x = 460, t = 4: a miss that still shows near and far.
+    ['e', -480, 280, 'near t = 1.8 (enters)'],
+    ['e', 480, -280, null], // back to the start
+    ['s', 0, 0, null], ['s', 300, -160, 'near t = 0 (starts inside)'], ['e', -200, 300, null], ['s', -200, 0, null],
+    ['s', 0, -300, null]] }, // S above the box, the line beside it: the slabs' times shown
   { name: 'sweptBox', deck: '06-fast-objects', drags: [
     ['from', 0, 0, 'time of impact t = 0.62'], // (460 - 150) / 500
-    ['to', -300, 0, 'no hit this step'], ['to', 200, 300, null], ['from', 300, 0, null]] },
+    ['to', -300, 0, 'no hit this step'], ['to', 200, 300, null], ['from', 300, 0, null],
+    // A corner graze: from (210, 40) to (530, 20), size 90. The box's bottom-right corner
+    // (300, 130) reaches x = 460 at t = 0.5, at y = 130 - 20 * 0.5 = 120: exactly the wall's
+    // top-left corner, and rises past it. Touching is not a hit; with the end 1 pixel lower
+    // the corner cuts 0.5 pixels in: a hit at t = 0.5.
+    ['from', -150, -180, null], ['to', 70, -410, 'no hit this step'],
+    ['to', 0, 0, 'time of impact t = 0.5', 'ArrowDown']] },
 ];
 
 const browser = await chromium.launch({
@@ -98,8 +114,8 @@ try {
     await page.goto(`${url}#${number}`);
     await page.waitForTimeout(300);
     const root = page.locator(`.interactive[data-figure="${figure.name}"]`);
-    for (const [handle, dx, dy, known] of figure.drags) {
-      const where = `${figure.name}: after dragging ${handle} by (${dx}, ${dy})`;
+    for (const [handle, dx, dy, known, keys] of figure.drags) {
+      const where = `${figure.name}: after dragging ${handle} by (${dx}, ${dy})${keys ? ` and ${keys}` : ''}`;
       const svg = await root.locator('.live svg').boundingBox();
       const scale = svg.width / 1160; // figure pixels to screen pixels
       const box = await root.locator(`[data-handle="${handle}"]`).boundingBox();
@@ -109,6 +125,10 @@ try {
       await page.mouse.down();
       await page.mouse.move(x + dx * scale, y + dy * scale, { steps: 8 });
       await page.mouse.up();
+      if (keys) {
+        const [key, times] = Array.isArray(keys) ? keys : [keys, 1];
+        for (let i = 0; i < times; i++) await page.keyboard.press(key);
+      }
       const shown = (await root.locator('.answer').allTextContents()).join('\n');
       const question = JSON.parse(await root.getAttribute('data-question'));
       const answer = nativeAnswer(question);

@@ -50,6 +50,19 @@ int sumOf(const int* values, int count)
 }
 // [/slide]
 
+// [slide:split]
+int total(int a, int b)
+{
+    const int sum =
+        a + b;
+    if (sum > 0)
+        return sum;
+    // A comment about the last line,
+    // in two lines.
+    return 0;
+}
+// [/slide]
+
 // [slide:tall]
 void tall()
 {
@@ -78,14 +91,15 @@ CPP
 deck_case() {
     local name="$1" expected="$2" body="$3"
     local dir="$work/$name"
-    mkdir -p "$dir/src" "$dir/decks" "$dir/dist"
+    mkdir -p "$dir/src" "$dir/decks" "$dir/dist" "$dir/figures"
+    [[ -n "${unused_figure:-}" ]] && echo '<svg xmlns="http://www.w3.org/2000/svg"/>' >"$dir/figures/$unused_figure"
     printf -- '---\nmarp: true\ntitle: "Test"\n---\n\n# Test\n\n<!-- notes -->\n\n---\n\n%s\n\n<!--\nNotes.\n-->\n' \
         "$body" >"$dir/src/01-test.md"
     echo '<html></html>' >"$dir/dist/01-test.html"
     local output status=0
     output="$( (node "$slides/tools/include-regions.mjs" --root "$root" --src "$dir/src" --out "$dir/decks" &&
         node "$slides/tools/check-decks.mjs" --decks "$dir/decks" --dist "$dir/dist" \
-            --concepts "$work/concepts.txt" --src "$dir/src") 2>&1)" || status=$?
+            --concepts "$work/concepts.txt" --src "$dir/src" --figures "$dir/figures") 2>&1)" || status=$?
     if [[ -z "$expected" ]]; then
         if [[ $status -eq 0 ]]; then pass "$name"; else fail "$name: expected to pass, got: $output"; fi
     elif [[ $status -ne 0 && "$output" == *"$expected"* ]]; then
@@ -121,6 +135,36 @@ deck_case part-without-key-line 'needs key "TEXT"' '# No key
 deck_case part-with-gap-passes "" '# Parts
 
 <!-- include: src/Example.cpp#function lines 1-3,8-9 key "return sum" -->'
+# An excerpt is a whole thing: it starts and ends on a statement boundary.
+deck_case excerpt-starts-mid-statement "starts mid-statement at line 4" '# Cut at the start
+
+<!-- include: src/Example.cpp#split lines 4-6 key "return sum" -->'
+deck_case excerpt-ends-mid-statement "ends mid-statement at line 5" '# Cut at the end
+
+<!-- include: src/Example.cpp#split lines 3-5 key "if (sum" -->'
+deck_case excerpt-ends-on-a-comment "ends on a comment at line 7" '# Cut after a comment
+
+<!-- include: src/Example.cpp#split lines 3-7 key "sum > 0" -->'
+deck_case excerpt-starts-inside-a-comment "starts inside a comment at line 8" '# Cut in a comment
+
+<!-- include: src/Example.cpp#split lines 8-9 key "return 0" -->'
+deck_case whole-statements-pass "" '# Whole
+
+<!-- include: src/Example.cpp#split lines 3-6 key "return sum" -->'
+deck_case excerpt-repeats-lines "repeats lines 5-6" '# Twice
+
+<!-- include: src/Example.cpp#split lines 3-6 key "return sum" -->
+
+<!-- include: src/Example.cpp#split lines 5-6,9-9 key "return 0" -->'
+deck_case caption-names-code-not-shown "name \"hit.time\", which the slide's code does not contain" '# Promise
+
+<!-- include: src/Example.cpp#short -->
+
+The time of impact is `hit.time`.'
+unused_figure=orphan.svg deck_case figure-used-by-no-deck "figures/orphan.svg: used by no deck" '# No figure
+
+- text'
+
 deck_case seed-in-code "words for insiders" '# Rules
 
 <!-- include: src/Example.cpp#internal -->'
@@ -201,6 +245,21 @@ figure_case animation-without-frames "an animation needs frames=FIRST:LAST:STEP"
     "moving.apng programs/painter --debug"
 if command -v ffmpeg >/dev/null; then
     figure_case animation-clean-passes "" "moving.apng programs/painter frames=10:50:20"
+    # The still must be clean frames: one laid over the others (an onion skin) must fail.
+    moving="$work/animation-clean-passes-figures/moving"
+    status=0
+    "$slides/tools/check-stills.sh" "$moving.apng" >/dev/null 2>&1 || status=$?
+    if [[ $status -eq 0 ]]; then pass animation-still-of-clean-frames; else fail "animation-still-of-clean-frames: exit $status"; fi
+    ffmpeg -nostdin -loglevel error -y -i "$moving.apng" -vf "tblend=all_mode=average" -frames:v 1 -update 1 \
+        "$work/onion.png"
+    ffmpeg -nostdin -loglevel error -y -i "$work/onion.png" -vf "pad=iw:ih+24:0:24:white" "$moving.png"
+    status=0
+    output="$("$slides/tools/check-stills.sh" "$moving.apng" 2>&1)" || status=$?
+    if [[ $status -eq 1 && "$output" == *"is not one frame of"* ]]; then
+        pass animation-still-overprinted
+    else
+        fail "animation-still-overprinted: expected a failure naming the panel, got (exit $status): $output"
+    fi
 fi
 
 # Layout: a slide whose content runs below its bottom edge, measured in Chromium.

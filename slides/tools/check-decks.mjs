@@ -3,6 +3,11 @@
 //
 //     node check-decks.mjs --decks build/decks --dist dist --concepts concepts.txt --src src
 //
+// - a slide's caption and speaker notes name only code its excerpt contains: every code-like
+//   name in them (`inline code`, a camelCase name, a member like hit.time) is in the slide's
+//   code, so a caption cannot promise what the excerpt was cut before;
+// - every figure (figures/*.svg, every output of figures.txt and, with --labs DIR, every
+//   lab's screenshot.png) is used by a deck;
 // - every slide has speaker notes (an HTML comment that is not a Marp directive);
 // - no slide shows more code than fits at lecture-hall size: 16 lines, and no line longer
 //   than the 78 characters that fit at the theme's 24px (code never shrinks or wraps);
@@ -39,7 +44,7 @@ const directive = /^\s*_?(class|paginate|header|footer|theme|style|size|math|hea
 function parseArguments(argv) {
   const options = {};
   for (let i = 0; i < argv.length; i += 2) options[argv[i].replace(/^--/, '')] = argv[i + 1];
-  for (const needed of ['decks', 'dist', 'concepts', 'src'])
+  for (const needed of ['decks', 'dist', 'concepts', 'src', 'figures'])
     if (!options[needed]) throw new Error(`missing --${needed}`);
   return options;
 }
@@ -131,6 +136,29 @@ function codeProblems(text) {
   return problems;
 }
 
+// Code-like names: `inline code`, camelCase names, members (hit.time). Formulas ($...$)
+// and file names are not code. In the notes (membersOnly) only `inline code` and members
+// count: a note may name a function the class met elsewhere, not a variable this excerpt lacks.
+function codeNames(prose, membersOnly) {
+  const text = prose.replace(/\$\$[\s\S]*?\$\$|\$[^$\n]*\$/g, ' ');
+  const names = new Set();
+  for (const m of text.matchAll(/`([^`\n]+)`/g)) names.add(m[1]);
+  const bare = text.replace(/`[^`\n]*`/g, ' ').replace(/\b[\w./-]+\.(?:md|svg|png|apng|cpp|h|html|pdf|txt|sh)\b/g, ' ');
+  if (!membersOnly) for (const m of bare.matchAll(/\b[a-z]+[A-Z]\w*\b/g)) names.add(m[0]);
+  for (const m of bare.matchAll(/\b[a-z]\w*\.[a-z]\w+\b/g)) names.add(m[0]);
+  return [...names];
+}
+
+// Names a code slide's caption or notes use that its code does not contain.
+function namesNotShown(text) {
+  const code = codeBlocks(text).map((b) => b.lines.join('\n')).join('\n');
+  if (!code) return [];
+  const withoutCode = text.replace(/```[\s\S]*?```/g, ' ');
+  const notes = [...withoutCode.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]).join('\n');
+  const names = [...codeNames(visibleText(withoutCode), false), ...codeNames(notes, true)];
+  return [...new Set(names)].filter((name) => !code.includes(name));
+}
+
 function hasNotes(text) {
   const comments = [...text.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]);
   return comments.some((c) => !directive.test(c) && c.trim() !== '');
@@ -152,6 +180,8 @@ function main() {
       const where = `${deck} slide ${slide.number}`;
       if (!hasNotes(slide.text)) problems.push(`${where}: no speaker notes (an HTML comment)`);
       for (const problem of codeProblems(slide.text)) problems.push(`${where}: ${problem}`);
+      for (const name of namesNotShown(slide.text))
+        problems.push(`${where}: the caption or notes name "${name}", which the slide's code does not contain`);
       const visible = visibleText(slide.text);
       for (const word of insiderWords) {
         const found = visible.match(word);
@@ -177,6 +207,20 @@ function main() {
     const remote = page.match(/(?:src|href)\s*=\s*["']https?:[^"']*|url\(\s*["']?https?:[^)]*|@import\s+["']https?:[^"']*/);
     if (remote) problems.push(`${html}: loads from the network: ${remote[0]}`);
   }
+
+  // Every figure is shown by some deck (the sources, before the build adds navigation).
+  const linked = fs.readdirSync(options.src).filter((f) => f.endsWith('.md'))
+    .map((f) => fs.readFileSync(path.join(options.src, f), 'utf8')).join('\n');
+  const figures = fs.readdirSync(options.figures).filter((f) => f.endsWith('.svg')).map((f) => `figures/${f}`);
+  const list = path.join(options.figures, '..', 'figures.txt');
+  if (fs.existsSync(list))
+    for (const line of fs.readFileSync(list, 'utf8').split(/\r?\n/))
+      if (line.trim() && !line.startsWith('#')) figures.push(`figures/generated/${line.trim().split(/\s+/)[0]}`);
+  if (options.labs)
+    for (const lab of fs.readdirSync(options.labs))
+      if (fs.existsSync(path.join(options.labs, lab, 'screenshot.png'))) figures.push(`figures/labs/${lab.slice(0, 2)}.png`);
+  for (const figure of figures)
+    if (!linked.includes(figure)) problems.push(`${figure}: used by no deck (use it on a slide, or remove it)`);
 
   const allText = everything.join('\n');
   let conceptCount = 0;

@@ -6,11 +6,14 @@
 // 1. Each deck gets a last slide linking the previous and the next lecture and the index.
 // 2. Each deck gets a notes deck for the lecturer (build/notes/NN-...-notes.md): one page a
 //    slide, its heading and its speaker notes as text, converted to PDF beside the slides.
+//    With --pictures DIR (the slides as PNG, NAME.001.png..., made by Marp --images) only
+//    the notes decks are written, each page with its slide's picture above the notes.
 // 3. dist/index.html lists every lecture with its outline: each heading links to its slide
 //    (deck.html#N), with the PDF and the notes PDF when they were made (build.sh writes the
 //    index once more after the PDFs, with --index-only 1).
 import fs from 'node:fs';
 import path from 'node:path';
+import { dataUrl } from './inline-images.mjs';
 
 function parseArguments(argv) {
   const options = {};
@@ -47,6 +50,27 @@ const notesOf = (slide) =>
 const escapeHtml = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 const plain = (text) => text.replace(/\$+([^$]*)\$+/g, '$1').replace(/[*`]/g, '');
 
+// The lecturer's notes: one page a slide (a portrait page: the slide's picture when there is
+// one, then its notes).
+function writeNotes(deck, options) {
+  const pictureOf = (number) => {
+    if (!options.pictures) return [];
+    const file = path.join(options.pictures, `${deck.name}.${String(number).padStart(3, '0')}.png`);
+    return fs.existsSync(file) ? [`<img class="slide-picture" src="${dataUrl(file)}" alt="slide ${number}">`, ''] : [];
+  };
+  const pages = deck.slides
+    .map((slide, i) => ({ number: i + 1, heading: headingOf(slide), notes: notesOf(slide) }))
+    .filter((page) => page.heading || page.notes.length);
+  const notes = [
+    '---', 'marp: true', 'theme: hitbox', 'size: notes', 'paginate: false', `title: "${deck.title} · speaker notes"`, '---', '',
+    `<!-- _class: notes -->`, '', `# ${deck.title}: speaker notes`, '',
+    ...pages.flatMap((page) => ['---', '', '<!-- _class: notes -->', '',
+      `## ${page.number}. ${plain(page.heading) || '(no heading)'}`, '', ...pictureOf(page.number),
+      ...page.notes.map((n) => escapeHtml(n).replace(/\n(?!\n)/g, ' ') + '\n')]),
+  ];
+  fs.writeFileSync(path.join(options.notes, `${deck.name}-notes.md`), notes.join('\n'));
+}
+
 function main() {
   const options = parseArguments(process.argv.slice(2));
   fs.mkdirSync(options.notes, { recursive: true });
@@ -56,7 +80,9 @@ function main() {
     return { file, name: file.replace(/\.md$/, ''), markdown, title: titleOf(markdown, file), ...split(markdown) };
   });
 
-  if (!options['index-only']) decks.forEach((deck, index) => {
+  if (options.pictures) {
+    for (const deck of decks) writeNotes(deck, options);
+  } else if (!options['index-only']) decks.forEach((deck, index) => {
     const previous = decks[index - 1];
     const next = decks[index + 1];
     const links = [];
@@ -68,18 +94,7 @@ function main() {
       '<!--', 'The links to the neighbouring lectures and the index (made by the build).', '-->', ''];
     fs.writeFileSync(path.join(options.decks, deck.file), `${deck.markdown.replace(/\s*$/, '\n')}\n---\n${navigation.join('\n')}`);
 
-    // The lecturer's notes: one page a slide.
-    const pages = deck.slides
-      .map((slide, i) => ({ number: i + 1, heading: headingOf(slide), notes: notesOf(slide) }))
-      .filter((page) => page.heading || page.notes.length);
-    const notes = [
-      '---', 'marp: true', 'theme: hitbox', 'paginate: false', `title: "${deck.title} · speaker notes"`, '---', '',
-      `<!-- _class: notes -->`, '', `# ${deck.title}: speaker notes`, '',
-      ...pages.flatMap((page) => ['---', '', '<!-- _class: notes -->', '',
-        `## ${page.number}. ${plain(page.heading) || '(no heading)'}`, '',
-        ...page.notes.map((n) => escapeHtml(n).replace(/\n(?!\n)/g, ' ') + '\n')]),
-    ];
-    fs.writeFileSync(path.join(options.notes, `${deck.name}-notes.md`), notes.join('\n'));
+    writeNotes(deck, options);
   });
 
   // The index: every lecture, its outline linking to the slides.

@@ -87,9 +87,11 @@ function regionsOf(root, file) {
     if (start) {
       if (open) throw new Error(`${file}:${index + 1}: region ${start[1]} starts inside region ${open.name}`);
       if (regions.has(start[1])) throw new Error(`${file}:${index + 1}: region ${start[1]} defined twice`);
-      open = { name: start[1], startLine: index + 1, lines: [] };
+      const before = lines.slice(0, index).reverse().find((l) => l.trim() !== '' && !regionEnd.test(l));
+      open = { name: start[1], startLine: index + 1, lines: [], before: before ?? '' };
     } else if (regionEnd.test(line)) {
       if (!open) throw new Error(`${file}:${index + 1}: [/slide] without a [slide:NAME] before it`);
+      open.after = lines.slice(index + 1).find((l) => l.trim() !== '' && !regionStart.test(l)) ?? '';
       regions.set(open.name, open);
       open = null;
     } else if (open) {
@@ -145,6 +147,71 @@ function languageOf(file) {
   return 'cpp';
 }
 
+// --- An excerpt is a whole thing -------------------------------------------------------------
+// A slide's excerpt (a whole region, or each part of one) must start and end on a statement
+// boundary: what comes before its first line and what its last line ends with are read as
+// C++ statement boundaries. Caught: a first line that continues the line before it (which
+// ends in `=`, `,`, `(`, `&&`, `)` of an `if`...), a first comment line that continues a
+// comment, a first line that is itself a continuation (`.x`, `&& b`, `else`); a last line
+// that ends mid-statement (`if (best.hit)`, `a +`), a last line that is a comment about code
+// the slide does not show, and a last line followed by its `else`. (Bracket balance is
+// check-decks.mjs's.) Allman braces are the project's style, so `)` before a `{` line is a
+// function or statement header: an excerpt may not start at its `{`.
+const commentLine = (l) => /^\s*(\/\/|\/\*|\*)/.test(l);
+// The code of a line without its trailing // comment (strings kept whole).
+function codeOfLine(line) {
+  let inString = null;
+  for (let i = 0; i < line.length; i++) {
+    const c = line[i];
+    if (inString) {
+      if (c === '\\') i++;
+      else if (c === inString) inString = null;
+    } else if (c === '"' || c === "'") inString = c;
+    else if (c === '/' && line[i + 1] === '/') return line.slice(0, i).trim();
+  }
+  return line.trim();
+}
+// True when the line ends a statement (or opens/closes a block, or is a label/preprocessor).
+function endsStatement(line) {
+  const code = codeOfLine(line);
+  if (code === '' || code.startsWith('#')) return true;
+  return /[;{}]$/.test(code) || (/:$/.test(code) && !/::$/.test(code));
+}
+const continuationStart = /^\s*(\.|->|&&|\|\||\?|:(?!:)|\)|\]|[-+*\/%<>=!&|^,]\s|else\b|\{)/;
+function wholeProblems(code, parts, region) {
+  const problems = [];
+  const lineAt = (n) => (n >= 1 && n <= code.length ? code[n - 1] : n < 1 ? region.before : region.after);
+  // The line before line n (blank lines skipped; comment lines too when code is asked for).
+  const previousLine = (n, codeOnly) => {
+    for (let k = n - 1; k >= 1; k--)
+      if (code[k - 1].trim() !== '' && !(codeOnly && commentLine(code[k - 1]))) return { line: code[k - 1], inside: true };
+    return { line: region.before ?? '', inside: false };
+  };
+  const nextLine = (n) => {
+    for (let k = n + 1; k <= code.length; k++) if (code[k - 1].trim() !== '') return code[k - 1];
+    return region.after ?? '';
+  };
+  for (const [first, last] of parts) {
+    const start = lineAt(first);
+    const before = previousLine(first, false);
+    const codeBefore = previousLine(first, true);
+    if (continuationStart.test(start) && !commentLine(start))
+      problems.push(`starts mid-statement at line ${first}: "${start.trim()}"`);
+    else if (!commentLine(codeBefore.line) && !endsStatement(codeBefore.line))
+      problems.push(`starts mid-statement at line ${first}: the line before it ("${codeBefore.line.trim()}") goes on`);
+    else if (before.inside && commentLine(start) && commentLine(before.line))
+      problems.push(`starts inside a comment at line ${first}: "${start.trim()}"`);
+    const end = lineAt(last);
+    if (commentLine(end))
+      problems.push(`ends on a comment at line ${last} ("${end.trim()}"): about code the slide does not show`);
+    else if (!endsStatement(end))
+      problems.push(`ends mid-statement at line ${last}: "${end.trim()}"`);
+    else if (/^\s*else\b/.test(nextLine(last)))
+      problems.push(`ends at line ${last} before its "else"`);
+  }
+  return problems;
+}
+
 class RegionIndex {
   constructor(root) {
     this.root = root;
@@ -188,6 +255,7 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       return;
     }
     let code = dedent(withoutTaskMarkers(found.region.lines));
+    const partList = ranges ? [] : [[1, code.length]];
     if (ranges) {
       if (!key) {
         problems.push(`${where}: part of region ${name} (lines ${ranges}) needs key "TEXT": the line the slide is about`);
@@ -203,6 +271,7 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
           problems.push(`${where}: lines ${ranges} outside region ${name} (${code.length} lines) or out of order`);
           return;
         }
+        partList.push([first, last]);
         if (previous && first > previous + 1) parts.push(null); // the gap
         for (let l = first; l <= last; l++) parts.push(code[l - 1]);
         previous = last;
@@ -216,6 +285,19 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       code = code.map((l, p) => (parts[p] === null ? `${indentOf(code[p + 1] || '')}// ...` : l));
       code = dedent(code);
     }
+    const cut = wholeProblems(dedent(withoutTaskMarkers(found.region.lines)), partList, found.region);
+    if (cut.length) {
+      for (const problem of cut) problems.push(`${where}: the excerpt of ${name} ${problem}`);
+      return;
+    }
+    const shown = options.shownLines.get(name) ?? [];
+    for (const [first, last] of partList) {
+      const again = shown.find((s) => first <= s.last && s.first <= last);
+      if (again)
+        problems.push(`${where}: the excerpt of ${name} repeats lines ${Math.max(first, again.first)}-${Math.min(last, again.last)} already shown at ${again.where}`);
+      shown.push({ first, last, where });
+    }
+    options.shownLines.set(name, shown);
     if (key && !code.some((l) => l.includes(key))) {
       problems.push(`${where}: the excerpt of ${name} does not contain its key line "${key}" (cut too early?)`);
       return;
@@ -238,6 +320,7 @@ function main() {
   const problems = [];
   const listing = [];
   for (const deck of decks) {
+    options.shownLines = new Map(); // region -> the line ranges this deck has shown
     const deckPath = path.join(options.src, deck);
     processDeck(deckPath, path.relative(process.cwd(), deckPath), index, options, problems, listing);
   }
@@ -245,7 +328,7 @@ function main() {
   if (options.list) console.log(listing.join('\n'));
   for (const problem of problems) console.error(problem);
   if (problems.length && !options.allowMissing) {
-    console.error(`include-regions: ${problems.length} region(s) missing`);
+    console.error(`include-regions: ${problems.length} problem(s) (missing regions, excerpts not whole)`);
     process.exit(1);
   }
   console.error(`include-regions: ${decks.length} deck(s), ${listing.length} region(s) included` +

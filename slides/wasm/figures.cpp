@@ -37,6 +37,30 @@ float flag(bool value)
     return value ? 1.f : 0.f;
 }
 
+// How far the figure's ray is extended both ways to stand for the whole line through S and E:
+// far beyond the drawing, yet a float keeps its times to about 1/10000.
+constexpr float lineReach = 1000.f;
+
+// Where the whole line through start and end enters and leaves `box`, in the ray's own time
+// (0 at start, 1 at end): segmentVsBox on the line cut off at -lineReach and +lineReach, run
+// forwards for the entry and backwards for the exit. false when the line misses the box
+// (touching only is a miss: segmentVsBox's edge rule). Entry -lineReach / exit +lineReach
+// mean "inside for the whole line" (a ray along a slab).
+bool lineTimes(hitbox::Vec2 start, hitbox::Vec2 end, const hitbox::Box& box, float& enter,
+               float& exit)
+{
+    const hitbox::Vec2 move = end - start;
+    const hitbox::Vec2 from = start - move * lineReach;
+    const hitbox::Vec2 to = start + move * lineReach;
+    const hitbox::Hit forwards = hitbox::segmentVsBox(from, to, box);
+    const hitbox::Hit backwards = hitbox::segmentVsBox(to, from, box);
+    if (!forwards.hit || !backwards.hit)
+        return false;
+    enter = -lineReach + forwards.time * 2.f * lineReach;
+    exit = lineReach - backwards.time * 2.f * lineReach;
+    return true;
+}
+
 } // namespace
 
 // Two boxes. out: [A.left < B.right, B.left < A.right, A.top < B.bottom, B.top < A.bottom,
@@ -132,6 +156,11 @@ FIGURE_ANSWER void orientedBoxesAnswer(float aX, float aY, float aHalfWidth, flo
 // out: [hit, near time, started inside, normal x, y, far time]. The far time, where the ray
 // leaves the box, is the same test run backwards from the end: 1 - its near time. When the
 // end is inside the box the ray has not left yet: far time -1.
+// On a miss, the slab method's times for the whole line: [6] 1 when the line crosses the box,
+// [7] its near and [8] far time (outside 0..1: the box is before S or after E); and each
+// slab's own entry and exit, [9] 1 and [10], [11] for the x slab, [12] 1 and [13], [14] for the
+// y slab (0: the line runs beside that slab and never enters it); when the line misses, the
+// x and y stretches do not overlap.
 FIGURE_ANSWER void rayAnswer(float startX, float startY, float endX, float endY, float left,
                              float top, float width, float height, float* out)
 {
@@ -144,6 +173,17 @@ FIGURE_ANSWER void rayAnswer(float startX, float startY, float endX, float endY,
     out[3] = forwards.normal.x;
     out[4] = forwards.normal.y;
     out[5] = !forwards.hit ? 0.f : backwards.startedInside ? -1.f : 1.f - backwards.time;
+    if (forwards.hit)
+        return;
+    const hitbox::Vec2 start(startX, startY);
+    const hitbox::Vec2 end(endX, endY);
+    out[6] = flag(lineTimes(start, end, box, out[7], out[8]));
+    // The slabs: the box's x range over every y, and its y range over every x.
+    const float everywhere = 1e6f;
+    const hitbox::Box xSlab(left, -everywhere, width, 2.f * everywhere);
+    const hitbox::Box ySlab(-everywhere, top, 2.f * everywhere, height);
+    out[9] = flag(lineTimes(start, end, xSlab, out[10], out[11]));
+    out[12] = flag(lineTimes(start, end, ySlab, out[13], out[14]));
 }
 
 // A box moving by (moveX, moveY) this step against a wall (sweepBoxVsBox). out: [hit, time of

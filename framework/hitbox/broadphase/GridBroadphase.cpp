@@ -408,6 +408,7 @@ void GridBroadphase::fillCells(Half& half)
     const CellRange* range = ranges.data();
     // From the half's last box back, each cell from its end back: every cell's boxes end up in
     // item order.
+    // [slide:grid-fill]
     for (std::size_t i = half.end; i-- > half.begin;)
     {
         const Edges b = box[i];
@@ -422,6 +423,7 @@ void GridBroadphase::fillCells(Half& half)
                         outItems[at] = item | flags;
                     });
     }
+    // [/slide]
 }
 
 void GridBroadphase::testCells(Half& half)

@@ -82,7 +82,8 @@ Hit sweepBoxVsBox(const Box& moverBox, Vec2 displacement, const Box& targetBox)
         return hit;
 
     hit.hit = true;
-    hit.time = enter > 0.f ? enter : 0.f; // enter can be -0 when starting exactly touching
+    // enter can be -0 when starting exactly touching.
+    hit.time = enter > 0.f ? enter : 0.f;
 
     // The axis entered last is the face that was hit. An exact corner enters both at once:
     // the x axis wins, so the normal is never (0, 0).

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# check-stills.sh NAME.apng... - each animation's still (NAME.png, the PDF's picture) shows
+# clean frames: it is one frame, or a strip of frames side by side or one above the other,
+# each under a label band, and every panel is exactly (pixel for pixel) one of the
+# animation's frames (two may be the same: a snag that stops the mover). A still made by laying frames over each other (an
+# onion skin: three "CAN TUNNEL" lines printed on top of each other) matches no frame and
+# fails, naming it. Needs ffmpeg and ffprobe. Exit 1 on a bad still, 2 on bad arguments.
+set -euo pipefail
+[[ $# -lt 1 ]] && { echo "usage: $0 NAME.apng..." >&2; exit 2; }
+
+# size FILE: "W H"
+size() { ffprobe -v error -select_streams v:0 -show_entries stream=width,height -of csv=p=0 "$1" | tr , ' '; }
+# md5s INPUT [FILTER]: the md5 of every decoded frame (as rgb24), one a line.
+md5s() {
+    local filter=(${2:+-vf "$2"})
+    ffmpeg -nostdin -loglevel error -i "$1" "${filter[@]}" -pix_fmt rgb24 -f framemd5 - | awk '!/^#/ { print $NF }'
+}
+
+problems=0
+for animation in "$@"; do
+    still="${animation%.apng}.png"
+    if [[ ! -s "$animation" || ! -s "$still" ]]; then
+        echo "check-stills: $animation: the animation or its still $still is missing" >&2
+        problems=$((problems + 1))
+        continue
+    fi
+    read -r w h <<<"$(size "$animation")"
+    read -r W H <<<"$(size "$still")"
+    frames="$(md5s "$animation")"
+    # The layouts it may have: n panels of w x (h + band), in a row (W = n w) or a column
+    # (W = w; n = 3, 2 or 1). It passes when, in one of them, every panel is a frame.
+    layouts=()
+    if ((W % w == 0 && W / w > 1 && H >= h)); then
+        layout=""
+        for ((i = 0; i < W / w; i++)); do layout+="crop=$w:$h:$((i * w)):$((H - h)) "; done
+        layouts+=("$layout")
+    elif ((W == w)); then
+        for n in 3 2 1; do
+            ((H % n == 0 && H / n >= h)) || continue
+            layout=""
+            for ((i = 0; i < n; i++)); do layout+="crop=$w:$h:0:$((i * H / n + H / n - h)) "; done
+            layouts+=("$layout")
+        done
+    fi
+    if [[ ${#layouts[@]} -eq 0 ]]; then
+        echo "check-stills: $still (${W}x$H) is not made of ${w}x$h frames of $animation" >&2
+        problems=$((problems + 1))
+        continue
+    fi
+    clean=false
+    for layout in "${layouts[@]}"; do
+        message=""
+        i=0
+        for panel in $layout; do
+            i=$((i + 1))
+            sum="$(md5s "$still" "$panel")"
+            if ! grep -qx "$sum" <<<"$frames"; then
+                message="panel $i is not one frame of $animation (frames laid over each other?)"
+                break
+            fi
+        done
+        [[ -z "$message" ]] && clean=true && break
+    done
+    if ! $clean; then
+        echo "check-stills: $still: $message" >&2
+        problems=$((problems + 1))
+    fi
+done
+[[ $problems -eq 0 ]] || exit 1
