@@ -49,7 +49,7 @@ void simulate(Level& level, long long frames);
 
 // The longest side of a --screenshot picture: a world larger than this (or than the
 // graphics driver's largest texture) is drawn shrunk to fit, whole.
-constexpr unsigned maxPictureSide = 8192;
+constexpr unsigned maxPictureSide = 4096;
 
 // `size` in whole pixels, shrunk (never grown, never stretched) to fit inside `limit`;
 // at least 1 x 1. A zero, negative or NaN side counts as 1 pixel.
