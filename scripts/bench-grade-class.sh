@@ -11,6 +11,7 @@
 # Usage: scripts/bench-grade-class.sh [--lab NAME] [--count N] [WORK_DIR]
 #        (default lab02_bouncing_balls, 30, build/bench-grade-class)
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 lab=lab02_bouncing_balls
@@ -20,7 +21,7 @@ while [[ $# -gt 0 ]]; do
     case $1 in
         --lab) lab=$2; shift 2 ;;
         --count) count=$2; shift 2 ;;
-        *) work=$1; shift ;;
+        *) work=$(from_caller "$1"); shift ;;
     esac
 done
 folder=$(lab_folder "$lab")
