@@ -1,4 +1,5 @@
 // ResponseTest.cpp - slide, bounce, push out and elastic collisions (Response.h).
+#include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Sweep.h"
@@ -86,9 +87,32 @@ TEST(PushOutOffset, MovesAJustClearOfB)
     const hitbox::Box b(100.f, 0.f, 50.f, 50.f);
     const hitbox::Contact contact = hitbox::boxVsBoxContact(a, b);
     const hitbox::Vec2 offset = hitbox::pushOutOffset(contact);
-    EXPECT_EQ(offset, hitbox::Vec2(-5.f, 0.f));
+    // The depth, 5 px, rounded outward by pushOutSlop of the contact's scale (100 px).
+    EXPECT_LE(offset.x, -5.f);
+    EXPECT_NEAR(offset.x, -5.f, 100.f * hitbox::pushOutSlop * 1.01f);
+    EXPECT_EQ(offset.y, 0.f);
     EXPECT_FALSE(hitbox::boxVsBox({a.left + offset.x, a.top + offset.y, a.width, a.height}, b));
     EXPECT_EQ(hitbox::pushOutOffset(hitbox::Contact{}), hitbox::Vec2(0.f, 0.f));
+}
+
+// Issue 25, item 2: a push of exactly the float depth often left the pair overlapping by
+// about 1e-6 px (these two circles), and a circle centred within rounding of a polygon's
+// outline was pushed along a direction made of rounding noise, still 0.02 px inside.
+TEST(PushOutOffset, ThePairNoLongerCollidesAfterIt)
+{
+    const hitbox::Circle a{{-17.f, -11.f}, 16.f};
+    const hitbox::Circle b{{-7.f, -3.f}, 20.f};
+    const hitbox::Contact circles = hitbox::circleVsCircleContact(a, b);
+    ASSERT_TRUE(circles.hit);
+    EXPECT_FALSE(hitbox::circleVsCircleContact({a.center + hitbox::pushOutOffset(circles), a.radius}, b).hit);
+
+    const hitbox::Circle onOutline{{-36.f, 28.f}, 10.f};
+    const hitbox::Polygon box = hitbox::toPolygon(hitbox::OrientedBox{{-49.f, 29.f}, {20.f, 6.f}, 203.f});
+    const hitbox::Contact polygon = hitbox::circleVsPolygon(onOutline, box);
+    ASSERT_TRUE(polygon.hit);
+    const hitbox::Circle moved{onOutline.center + hitbox::pushOutOffset(polygon), onOutline.radius};
+    EXPECT_FALSE(hitbox::circleVsPolygon(moved, box).hit)
+        << "still inside by " << hitbox::circleVsPolygon(moved, box).depth << " px";
 }
 
 TEST(ElasticCollision, EqualMassesSwapTheirSpeedsAlongTheNormal)
