@@ -4,6 +4,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Response.h"
 #include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
@@ -276,7 +277,9 @@ void RotatedLevel::pushHeldOut()
             const PairView view = testPair(held, other);
             if (!view.overlapping)
                 continue;
-            shapes[held].body.center += view.axis * -view.gap;
+            // The MTV, rounded outward (Response.h): exactly axis * depth can stay inside.
+            const hitbox::Contact contact{true, view.axis, -view.gap, shapes[held].body.center};
+            shapes[held].body.center += hitbox::pushOutOffset(contact);
             moved = true;
         }
         if (!moved)
