@@ -80,6 +80,13 @@ for help in --help -h; do
         failures=$((failures + 1)); echo "FAIL: $help: exit $code, stderr: $(cat "$work/err")" >&2
     fi
 done
+# Item 9: angles wrap: 10 s at 720 degrees a second from 25 ends at 25, not 7225 (and a float
+# that only grows stops turning after about 42 simulated hours).
+rows=$((rows + 1))
+spun=$("${nodisplay[@]}" "$lab06" --headless --spin 720 --seconds 10 2>&1)
+if [[ $spun != *"held shape 0 at 25 degrees" ]]; then
+    failures=$((failures + 1)); echo "FAIL: the spinning shape's angle did not wrap: $spun" >&2
+fi
 # Item 24: half a second is 60 steps.
 rows=$((rows + 1))
 if [[ $("${nodisplay[@]}" "$pong" --headless --seconds 0.5 2>&1) != "Pong: 60 frames, 0.5 s simulated |"* ]]; then
