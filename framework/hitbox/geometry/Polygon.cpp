@@ -341,7 +341,10 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
     // edge below instead, a push at most that 1e-5 longer than the exact one.
     const float onOutline =
         1e-5f * std::fmax(1.f, std::fmax(std::fabs(circle.center.x), std::fabs(circle.center.y)));
-    if (!inside && distance > onOutline)
+    bool atVertex = false; // then centre - closest is exact (no projection): keep it
+    for (const Vec2 point : points)
+        atVertex = atVertex || (point.x == closest.x && point.y == closest.y);
+    if (!inside && distance > 0.f && (atVertex || distance > onOutline))
     {
         // Centre outside: like circleVsBoxContact, push along the line from the closest point
         // (made unit in double: for a centre a denormal away, dividing in float is not unit).
