@@ -299,7 +299,8 @@ void PlatformerLevel::respawn()
     // tile: under a solid tile it starts with its head at the top of 'P' instead and falls,
     // never with its head inside the ceiling (the constructor refuses a one-tile gap).
     const hitbox::Vec2 start = map.getPlayerStart();
-    const float top = startsUnderACeiling() ? start.y : start.y + TileMap::tileSize - Player::height;
+    const float top =
+        startsUnderACeiling() ? start.y : start.y + TileMap::tileSize - Player::height;
     placePlayer({start.x + (TileMap::tileSize - Player::width) / 2.f, top});
 }
 

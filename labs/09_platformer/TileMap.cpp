@@ -40,8 +40,8 @@ std::string unknownTile(char tile, std::size_t column)
 // A level too large for exact collision maths (TileMap::maxTilesAcross).
 std::string tooBig(const std::string& direction)
 {
-    return "the level is over " + std::to_string(TileMap::maxTilesAcross) + " tiles " +
-           direction + "; the collision maths is exact to " +
+    return "the level is over " + std::to_string(TileMap::maxTilesAcross) + " tiles " + direction +
+           "; the collision maths is exact to " +
            std::to_string(static_cast<long long>(hitbox::exactRange)) +
            " px (hitbox/geometry/Range.h), so a level may be at most " +
            std::to_string(TileMap::maxTilesAcross) + " tiles wide and tall";

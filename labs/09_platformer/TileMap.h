@@ -3,8 +3,9 @@
 // The file is a picture of the level, one character per tile:
 //     #  solid tile        .  empty        P  where the player starts (an empty tile)
 // Every row must have the same number of tiles, and a level may be at most maxTilesAcross
-// tiles wide and tall, inside the range the collision maths is exact for. A mistake in the file stops the program with
-// ONE line naming the file, the line and what is wrong, so a student can fix it at once.
+// tiles wide and tall, inside the range the collision maths is exact for. A mistake in the file
+// stops the program with ONE line naming the file, the line and what is wrong, so a student can fix
+// it at once.
 #pragma once
 
 #include "hitbox/app/Assets.h"

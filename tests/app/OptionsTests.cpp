@@ -119,9 +119,15 @@ TEST(OptionsShared, HelpHalfSecondsAndConflicts)
 {
     EXPECT_TRUE(parseCommandLine({"--frames", "bogus", "-h"}).help);
     EXPECT_EQ(parseCommandLine({"--seconds", "0.5"}).frames, 60);
-    EXPECT_EQ(messageOf([] { parseCommandLine({"--seed", "1", "--seed", "2"}); }),
+    EXPECT_EQ(messageOf(
+                  [] {
+                      parseCommandLine({"--seed", "1", "--seed", "2"});
+                  }),
               "--seed is given twice; give it once");
-    EXPECT_EQ(messageOf([] { parseCommandLine({"--seconds", "1", "--frames", "2"}); }),
+    EXPECT_EQ(messageOf(
+                  [] {
+                      parseCommandLine({"--seconds", "1", "--frames", "2"});
+                  }),
               "--frames and --seconds both set how long to run; give one of them");
 }
 

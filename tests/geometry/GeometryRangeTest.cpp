@@ -274,7 +274,8 @@ TEST(ConvexHull, AConcavePolygonCollidesAsItsHull)
 TEST(GeometryRange, CirclesAndSegmentsBeyondTheRangeAreNoHit)
 {
     EXPECT_FALSE(hitbox::circleVsCircle({{0.f, 0.f}, 1e20f}, {{3e19f, 0.f}, 1e20f}));
-    const hitbox::Contact huge = hitbox::circleVsCircleContact({{0.f, 0.f}, 2e38f}, {{1.f, 0.f}, 2e38f});
+    const hitbox::Contact huge =
+        hitbox::circleVsCircleContact({{0.f, 0.f}, 2e38f}, {{1.f, 0.f}, 2e38f});
     EXPECT_FALSE(huge.hit) << "depth " << huge.depth;
     EXPECT_FALSE(hitbox::segmentVsBox({-3e38f, 5.f}, {3e38f, 5.f}, {0.f, 0.f, 10.f, 10.f}).hit);
     // Inside the range both still hit.

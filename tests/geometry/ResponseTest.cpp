@@ -1,7 +1,7 @@
 // ResponseTest.cpp - slide, bounce, push out and elastic collisions (Response.h).
-#include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Sweep.h"
 #include "support/Printers.h"
 
@@ -104,10 +104,13 @@ TEST(PushOutOffset, ThePairNoLongerCollidesAfterIt)
     const hitbox::Circle b{{-7.f, -3.f}, 20.f};
     const hitbox::Contact circles = hitbox::circleVsCircleContact(a, b);
     ASSERT_TRUE(circles.hit);
-    EXPECT_FALSE(hitbox::circleVsCircleContact({a.center + hitbox::pushOutOffset(circles), a.radius}, b).hit);
+    EXPECT_FALSE(
+        hitbox::circleVsCircleContact({a.center + hitbox::pushOutOffset(circles), a.radius}, b)
+            .hit);
 
     const hitbox::Circle onOutline{{-36.f, 28.f}, 10.f};
-    const hitbox::Polygon box = hitbox::toPolygon(hitbox::OrientedBox{{-49.f, 29.f}, {20.f, 6.f}, 203.f});
+    const hitbox::Polygon box =
+        hitbox::toPolygon(hitbox::OrientedBox{{-49.f, 29.f}, {20.f, 6.f}, 203.f});
     const hitbox::Contact polygon = hitbox::circleVsPolygon(onOutline, box);
     ASSERT_TRUE(polygon.hit);
     const hitbox::Circle moved{onOutline.center + hitbox::pushOutOffset(polygon), onOutline.radius};

@@ -70,37 +70,34 @@ void expectEveryPushSeparates(const std::string& pair, float range,
                     " px inside";
     }
     EXPECT_GT(hits, casesPerPair / 10) << pair << ": too few cases collide to prove anything";
-    EXPECT_EQ(stillColliding, 0) << pair << " at +-" << range << " px: " << stillColliding
-                                 << " of " << hits << " pushes left the pair colliding; "
-                                 << first;
+    EXPECT_EQ(stillColliding, 0) << pair << " at +-" << range << " px: " << stillColliding << " of "
+                                 << hits << " pushes left the pair colliding; " << first;
 }
 
 void everyPair(float range)
 {
     using hitbox::Vec2;
-    expectEveryPushSeparates("circle-circle", range,
-                             [](CaseMaker& m)
-                             {
-                                 const hitbox::Circle a{m.centre(), m.size()};
-                                 const hitbox::Circle b{m.near(a.center), m.size()};
-                                 return PushCase{hitbox::circleVsCircleContact(a, b), [=](Vec2 o)
-                                                 {
-                                                     return hitbox::circleVsCircleContact(
-                                                         {a.center + o, a.radius}, b);
-                                                 }};
-                             });
-    expectEveryPushSeparates("circle-box", range,
-                             [](CaseMaker& m)
-                             {
-                                 const hitbox::Circle a{m.centre(), m.size()};
-                                 const Vec2 corner = m.near(a.center);
-                                 const hitbox::Box b(corner.x, corner.y, m.size(), m.size());
-                                 return PushCase{hitbox::circleVsBoxContact(a, b), [=](Vec2 o)
-                                                 {
-                                                     return hitbox::circleVsBoxContact(
-                                                         {a.center + o, a.radius}, b);
-                                                 }};
-                             });
+    expectEveryPushSeparates(
+        "circle-circle", range,
+        [](CaseMaker& m)
+        {
+            const hitbox::Circle a{m.centre(), m.size()};
+            const hitbox::Circle b{m.near(a.center), m.size()};
+            return PushCase{hitbox::circleVsCircleContact(a, b), [=](Vec2 o) {
+                                return hitbox::circleVsCircleContact({a.center + o, a.radius}, b);
+                            }};
+        });
+    expectEveryPushSeparates(
+        "circle-box", range,
+        [](CaseMaker& m)
+        {
+            const hitbox::Circle a{m.centre(), m.size()};
+            const Vec2 corner = m.near(a.center);
+            const hitbox::Box b(corner.x, corner.y, m.size(), m.size());
+            return PushCase{hitbox::circleVsBoxContact(a, b), [=](Vec2 o) {
+                                return hitbox::circleVsBoxContact({a.center + o, a.radius}, b);
+                            }};
+        });
     expectEveryPushSeparates("box-box", range,
                              [](CaseMaker& m)
                              {
@@ -108,13 +105,11 @@ void everyPair(float range)
                                  const hitbox::Box a(corner.x, corner.y, m.size(), m.size());
                                  const Vec2 other = m.near(corner);
                                  const hitbox::Box b(other.x, other.y, m.size(), m.size());
-                                 return PushCase{hitbox::boxVsBoxContact(a, b), [=](Vec2 o)
-                                                 {
-                                                     return hitbox::boxVsBoxContact(
-                                                         {a.left + o.x, a.top + o.y, a.width,
-                                                          a.height},
-                                                         b);
-                                                 }};
+                                 return PushCase{
+                                     hitbox::boxVsBoxContact(a, b), [=](Vec2 o) {
+                                         return hitbox::boxVsBoxContact(
+                                             {a.left + o.x, a.top + o.y, a.width, a.height}, b);
+                                     }};
                              });
     expectEveryPushSeparates(
         "orientedbox-orientedbox", range,
@@ -122,8 +117,7 @@ void everyPair(float range)
         {
             const hitbox::OrientedBox a{m.centre(), m.halfSize(), m.angle()};
             const hitbox::OrientedBox b{m.near(a.center), m.halfSize(), m.angle()};
-            return PushCase{hitbox::orientedBoxVsOrientedBox(a, b), [=](Vec2 o)
-                            {
+            return PushCase{hitbox::orientedBoxVsOrientedBox(a, b), [=](Vec2 o) {
                                 return hitbox::orientedBoxVsOrientedBox(
                                     {a.center + o, a.halfSize, a.angleDegrees}, b);
                             }};
@@ -135,8 +129,9 @@ void everyPair(float range)
             const hitbox::Circle a{m.centre(), m.size()};
             const hitbox::Polygon b =
                 hitbox::toPolygon(hitbox::OrientedBox{m.near(a.center), m.halfSize(), m.angle()});
-            return PushCase{hitbox::circleVsPolygon(a, b), [=](Vec2 o)
-                            { return hitbox::circleVsPolygon({a.center + o, a.radius}, b); }};
+            return PushCase{hitbox::circleVsPolygon(a, b), [=](Vec2 o) {
+                                return hitbox::circleVsPolygon({a.center + o, a.radius}, b);
+                            }};
         });
     expectEveryPushSeparates(
         "capsule-circle", range,
@@ -144,8 +139,10 @@ void everyPair(float range)
         {
             const hitbox::Capsule a = m.capsule(m.centre());
             const hitbox::Circle b{m.near(a.start), m.size()};
-            return PushCase{hitbox::capsuleVsCircle(a, b), [=](Vec2 o)
-                            { return hitbox::capsuleVsCircle({a.start + o, a.end + o, a.radius}, b); }};
+            return PushCase{
+                hitbox::capsuleVsCircle(a, b), [=](Vec2 o) {
+                    return hitbox::capsuleVsCircle({a.start + o, a.end + o, a.radius}, b);
+                }};
         });
     expectEveryPushSeparates(
         "capsule-capsule", range,
@@ -153,8 +150,10 @@ void everyPair(float range)
         {
             const hitbox::Capsule a = m.capsule(m.centre());
             const hitbox::Capsule b = m.capsule(m.near(a.start));
-            return PushCase{hitbox::capsuleVsCapsule(a, b), [=](Vec2 o)
-                            { return hitbox::capsuleVsCapsule({a.start + o, a.end + o, a.radius}, b); }};
+            return PushCase{
+                hitbox::capsuleVsCapsule(a, b), [=](Vec2 o) {
+                    return hitbox::capsuleVsCapsule({a.start + o, a.end + o, a.radius}, b);
+                }};
         });
     expectEveryPushSeparates(
         "capsule-polygon", range,
@@ -163,8 +162,10 @@ void everyPair(float range)
             const hitbox::Capsule a = m.capsule(m.centre());
             const hitbox::Polygon b =
                 hitbox::toPolygon(hitbox::OrientedBox{m.near(a.start), m.halfSize(), m.angle()});
-            return PushCase{hitbox::capsuleVsPolygon(a, b), [=](Vec2 o)
-                            { return hitbox::capsuleVsPolygon({a.start + o, a.end + o, a.radius}, b); }};
+            return PushCase{
+                hitbox::capsuleVsPolygon(a, b), [=](Vec2 o) {
+                    return hitbox::capsuleVsPolygon({a.start + o, a.end + o, a.radius}, b);
+                }};
         });
 }
 } // namespace

@@ -242,9 +242,9 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
             options.frames = toWholeNumber(option, value(), 0, maxSeconds * framesPerSecond);
         else if (option == "--seconds")
             // Rounded to the nearest whole step: 0.5 s is 60 steps.
-            options.frames = std::llround(
-                toNumber(option, value(), 0.0, static_cast<double>(maxSeconds)) *
-                static_cast<double>(framesPerSecond));
+            options.frames =
+                std::llround(toNumber(option, value(), 0.0, static_cast<double>(maxSeconds)) *
+                             static_cast<double>(framesPerSecond));
         else if (option == "--screenshot")
         {
             options.screenshotPath = value();

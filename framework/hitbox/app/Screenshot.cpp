@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <system_error>
 
@@ -55,8 +55,9 @@ fs::path temporaryFor(const fs::path& target)
 {
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
     char hash[24] = {};
-    std::snprintf(hash, sizeof(hash), "%016llx",
-                  static_cast<unsigned long long>(std::hash<std::string>{}(target.filename().string())));
+    std::snprintf(
+        hash, sizeof(hash), "%016llx",
+        static_cast<unsigned long long>(std::hash<std::string>{}(target.filename().string())));
     return folder / (".hitbox-" + std::string(hash) + ".writing" + target.extension().string());
 }
 

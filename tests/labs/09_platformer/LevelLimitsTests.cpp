@@ -77,8 +77,7 @@ TEST(PlayerStart, AOneTileGapAroundTheStartIsRefused)
     }
     catch (const std::invalid_argument& error)
     {
-        EXPECT_NE(std::string(error.what()).find("solid tiles above and below"),
-                  std::string::npos)
+        EXPECT_NE(std::string(error.what()).find("solid tiles above and below"), std::string::npos)
             << error.what();
     }
 }

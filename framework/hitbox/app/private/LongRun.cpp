@@ -82,7 +82,8 @@ private:
 std::string progressLine(const std::string& title, long long done, long long total,
                          double elapsedSeconds)
 {
-    const double fraction = total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
+    const double fraction =
+        total > 0 ? static_cast<double>(done) / static_cast<double>(total) : 1.0;
     char percent[32] = {};
     std::snprintf(percent, sizeof(percent), "%.1f", 100.0 * fraction);
     std::string line = title + ": " + std::to_string(done) + " of " + std::to_string(total) +

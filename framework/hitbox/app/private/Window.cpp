@@ -85,10 +85,10 @@ sf::VideoMode windowMode(sf::Vector2f world)
 {
     const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
     const sf::Vector2u screen = videoModeSize(desktop);
-    const sf::Vector2u room =
-        screen.x > 0 && screen.y > 0
-            ? sf::Vector2u{screen.x / 10 * 9, screen.y / 10 * 9} // room for the title bar
-            : sf::Vector2u{1920u, 1080u};
+    const sf::Vector2u room = screen.x > 0 && screen.y > 0
+                                  ? sf::Vector2u{screen.x / 10 * 9, screen.y / 10 * 9}
+                                  // room for the title bar
+                                  : sf::Vector2u{1920u, 1080u};
     const sf::Vector2u size = fitInside(world, room);
     return videoMode(size.x, size.y);
 }
