@@ -334,17 +334,7 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
     const Vec2 fromPolygon = circle.center - closest;
     const float distance = length(fromPolygon);
 
-    // A centre within rounding of the outline (1e-5 of its coordinates: ten times the 1e-6
-    // Range.h states) is ON it: the line from the closest point would be rounding noise
-    // pointing anywhere, and a push along it need not separate (issue 25: a circle pushed
-    // 10 px along such a line still overlapped by 0.02 px). It leaves through the nearest
-    // edge below instead, a push at most that 1e-5 longer than the exact one.
-    const float onOutline =
-        1e-5f * std::fmax(1.f, std::fmax(std::fabs(circle.center.x), std::fabs(circle.center.y)));
-    bool atVertex = false; // then centre - closest is exact (no projection): keep it
-    for (const Vec2 point : points)
-        atVertex = atVertex || (point.x == closest.x && point.y == closest.y);
-    if (!inside && distance > 0.f && (atVertex || distance > onOutline))
+    if (!inside && distance > 0.f)
     {
         // Centre outside: like circleVsBoxContact, push along the line from the closest point
         // (made unit in double: for a centre a denormal away, dividing in float is not unit).
