@@ -7,6 +7,7 @@
 # Usage: scripts/check-exercises.sh [BUILD_DIR]     (default build/debug, already configured)
 # Builds the test programs it needs, prints a table, exits 1 naming every lab/task that fails.
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 
@@ -15,6 +16,7 @@ if [[ ${1:-} == -h || ${1:-} == --help || $# -gt 1 ]]; then
     exit 2
 fi
 build_dir=${1:-build/debug}
+if [[ $# -ge 1 ]]; then build_dir=$(from_caller "$1"); fi
 if [[ ! -f $build_dir/CMakeCache.txt ]]; then
     echo "check-exercises: $build_dir is not a configured build folder." >&2
     echo "Fix: cmake --preset debug   (or give the build folder as the argument)" >&2
@@ -81,7 +83,7 @@ for lab in "${labs[@]}"; do
     # Suites named for a task the sources do not mark are probably a typo.
     for suite_task in $(awk '{ s = $2; sub(/\..*/, "", s); if (match(s, /^Task[0-9]+/)) print substr(s, 5, RLENGTH - 4) }' \
         "$work/$lab.solution" | sort -n -u); do
-        if ! printf '%s\n' "${tasks[@]}" | grep -qx "$suite_task"; then
+        if ! is_one_of "$suite_task" "${tasks[@]}"; then
             problems+=("$lab: tests for task $suite_task, but no '// BEGIN TASK $suite_task:' in $folder")
         fi
     done

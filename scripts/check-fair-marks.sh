@@ -8,6 +8,7 @@
 #   WORK_DIR default build/check-fair-marks; --build DIR the instructor's build to grade
 #   with (default build/grading; CI passes build/debug, already built)
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 chosen=()
@@ -17,8 +18,8 @@ while [[ $# -gt 0 ]]; do
     case $1 in
         --lab) chosen+=("$2"); shift 2 ;;
         --lab=*) chosen+=("${1#--lab=}"); shift ;;
-        --build) build_options=(--build "$2"); shift 2 ;;
-        *) work=$1; shift ;;
+        --build) build_options=(--build "$(from_caller "$2")"); shift 2 ;;
+        *) work=$(from_caller "$1"); shift ;;
     esac
 done
 mapfile -t labs < <(lab_names)

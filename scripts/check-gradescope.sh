@@ -9,9 +9,10 @@
 #         debootstrap --variant=minbase bookworm ROOT http://deb.debian.org/debian
 #   LAB   default lab02_bouncing_balls
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
-root=$(realpath -m "${1:?usage: $0 ROOT [LAB]}")
+root=$(realpath -m "$(from_caller "${1:?usage: $0 ROOT [LAB]}")")
 lab=${2:-lab02_bouncing_balls}
 folder=$(lab_folder "$lab")
 if [[ ! -x $root/bin/bash ]]; then

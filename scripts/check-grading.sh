@@ -11,14 +11,15 @@
 # Usage: scripts/check-grading.sh [--build DIR] [WORK_DIR]    (default build/check-grading)
 #   --build DIR  the instructor's build to grade with (default build/grading; CI: build/debug)
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 work=build/check-grading
 build_options=()
 while [[ $# -gt 0 ]]; do
     case $1 in
-        --build) build_options=(--build "$2"); shift 2 ;;
-        *) work=$1; shift ;;
+        --build) build_options=(--build "$(from_caller "$2")"); shift 2 ;;
+        *) work=$(from_caller "$1"); shift ;;
     esac
 done
 rm -rf "$work/grades"

@@ -10,6 +10,7 @@
 #   --out DIR   where to write the handout (default build/handout-check; replaced)
 # Uses ccache when it is installed. Exit status 0 when every check passed.
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 repo=$(pwd)
@@ -23,7 +24,7 @@ out=build/handout-check
 while [[ $# -gt 0 ]]; do
     case $1 in
         --lab) [[ $# -ge 2 ]] || usage; chosen+=("$2"); shift 2 ;;
-        --out) [[ $# -ge 2 ]] || usage; out=$2; shift 2 ;;
+        --out) [[ $# -ge 2 ]] || usage; out=$(from_caller "$2"); shift 2 ;;
         -h | --help) usage ;;
         *) echo "check-handout: unknown option '$1'" >&2; usage ;;
     esac
@@ -33,7 +34,7 @@ export ALSOFT_DRIVERS=null
 mapfile -t labs < <(lab_names)
 if [[ ${#chosen[@]} -gt 0 ]]; then
     for lab in "${chosen[@]}"; do
-        printf '%s\n' "${labs[@]}" | grep -qx "$lab" || { echo "check-handout: no lab '$lab'" >&2; exit 2; }
+        is_one_of "$lab" "${labs[@]}" || { echo "check-handout: no lab '$lab'" >&2; exit 2; }
     done
     labs=("${chosen[@]}")
 fi

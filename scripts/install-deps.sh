@@ -9,8 +9,10 @@ packages=(g++ make cmake pkg-config libsfml-dev libgtest-dev libgmock-dev libben
 
 missing=()
 for package in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
-        missing+=("$package")
+    # The status read whole, then matched: `dpkg-query | grep -q` under pipefail can fail
+    # when grep exits first (SIGPIPE), calling an installed package missing.
+    status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)
+    [[ $status == *"install ok installed"* ]] || missing+=("$package")
 done
 [[ ${#missing[@]} -eq 0 ]] && exit 0
 

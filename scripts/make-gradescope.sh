@@ -6,6 +6,7 @@
 # students).
 # Usage: scripts/make-gradescope.sh LAB OUT.zip     e.g. lab02_bouncing_balls autograder.zip
 set -euo pipefail
+HITBOX_CALLER=$PWD # relative paths on the command line are the caller's (from_caller)
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 if [[ $# -ne 2 ]]; then
@@ -13,9 +14,9 @@ if [[ $# -ne 2 ]]; then
     exit 2
 fi
 lab=$1
-out=$(realpath -m "$2")
+out=$(realpath -m "$(from_caller "$2")")
 mapfile -t labs < <(lab_names)
-if ! printf '%s\n' "${labs[@]}" | grep -qx "$lab"; then
+if ! is_one_of "$lab" "${labs[@]}"; then
     echo "make-gradescope: no lab called '$lab'; the labs: $(lab_names | paste -sd' ' -)" >&2
     exit 2
 fi

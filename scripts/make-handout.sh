@@ -3,7 +3,8 @@
 # every lab (task blocks replaced by "// TASK n: ... — see README.md" and the starter code),
 # the lab sheets, the grading tests and scripts/grade.sh. No solution code goes in it.
 #
-# Usage: scripts/make-handout.sh OUT_DIR      (OUT_DIR must not exist, or be empty)
+# Usage: scripts/make-handout.sh OUT_DIR      (OUT_DIR must not exist, or be empty; a relative
+# OUT_DIR is taken from the folder you run it in)
 #
 # (HANDOUT_SOLVED_TASKS=1,2 in the environment keeps those tasks solved: only for testing
 # that the leak check below catches solution code.)
@@ -12,6 +13,7 @@
 # builds the student's program, <lab>_tests tests the student's code, and
 # `./scripts/grade.sh` grades it. scripts/check-handout.sh checks all of that.
 set -euo pipefail
+HITBOX_CALLER=$PWD # OUT_DIR is the caller's: resolved from here (from_caller), not the repository
 cd "$(dirname "$0")/.."
 source scripts/lab-tests.sh
 
@@ -19,11 +21,30 @@ if [[ $# -ne 1 || $1 == -h || $1 == --help ]]; then
     echo "usage: $0 OUT_DIR" >&2
     exit 2
 fi
-out=$1
+out=$(from_caller "$1")
 if [[ -e $out && -n $(ls -A "$out" 2>/dev/null) ]]; then
     echo "make-handout: $out exists and is not empty; give a new folder (or delete it first)." >&2
     exit 2
 fi
+
+# Any failure (a write error on a full disk, a tool that fails) ends the run with ONE line
+# and leaves no half-written handout: the folder is removed if this run made it or filled it.
+solution_lines=
+finished=0
+existed=0
+[[ -e $out ]] && existed=1
+on_exit() {
+    [[ -n $solution_lines ]] && rm -f "$solution_lines"
+    [[ $finished -eq 1 ]] && return
+    if [[ $existed -eq 1 ]]; then
+        find "$out" -mindepth 1 -delete 2>/dev/null # it was empty: empty again
+    else
+        rm -rf "$out"
+    fi
+    echo "make-handout: FAILED (see the line above: a write error? is the disk full?);" \
+        "nothing was left in $out" >&2
+}
+trap on_exit EXIT
 generator=framework/cmake/HitboxMakeExercise.cmake
 
 # The files of this tree (tracked or new, not ignored), so a lab being written is included.
@@ -54,11 +75,12 @@ keep() {
 # a student: they are left out of every C++ file of the handout.
 slide_marker='^[[:space:]]*//[[:space:]]*\[(slide:[^]]*|/slide)\][[:space:]]*\r?$'
 strip_slide_markers() {
-    local stripped
-    stripped=$(mktemp)
-    grep -Ev "$slide_marker" "$1" >"$stripped" || true # (grep fails on a file of markers only)
-    cat "$stripped" >"$1"
-    rm -f "$stripped"
+    local stripped=$1.stripping status=0
+    # Written beside the file and moved over it: a write error stops here, and never leaves
+    # the file empty. grep's 1 is "no line left" (a file of markers only); 2 is an error.
+    grep -Ev "$slide_marker" "$1" >"$stripped" || status=$?
+    [[ $status -le 1 ]] || return 1
+    mv -f "$stripped" "$1"
 }
 
 mkdir -p "$out"
@@ -81,6 +103,12 @@ for file in "${files[@]}"; do
     case $file in
         *.cpp | *.h | *.hpp) strip_slide_markers "$out/$file" ;;
     esac
+    # A writer that lost its data without failing (cmake -P on a full disk) leaves a short
+    # file: a source with text must give a handout file with text.
+    if [[ -s $file && ! -s $out/$file ]]; then
+        echo "make-handout: $out/$file was written empty" >&2
+        exit 1
+    fi
 done
 
 # Tells HitboxLab.cmake that the lab folders hold the student's code: one version per lab.
@@ -209,7 +237,7 @@ done
 # Every target the handout's text names must exist there.
 mapfile -t named < <(grep -ohE '\blab[0-9]{2}_[A-Za-z0-9_]+' "$out/README.md" "$out"/labs/*/README.md | sort -u)
 for target in "${named[@]}"; do
-    if ! printf '%s\n' "${labs[@]/%/_tests}" "${labs[@]}" | grep -qx "$target"; then
+    if ! is_one_of "$target" "${labs[@]/%/_tests}" "${labs[@]}"; then
         echo "make-handout: the handout names a target it does not have: $target" >&2
         grep -ln "$target" "$out/README.md" "$out"/labs/*/README.md >&2
         exit 1
@@ -221,7 +249,6 @@ done
 # handout's labs/. Whole lines are compared, blanks around them ignored.
 leaks=0
 solution_lines=$(mktemp)
-trap 'rm -f "$solution_lines"' EXIT
 mapfile -t sources < <(find labs -path 'labs/[0-9][0-9]_*' -type f \( -name '*.cpp' -o -name '*.h' -o -name '*.hpp' \))
 if [[ ${#sources[@]} -gt 0 ]]; then
     awk '
@@ -256,9 +283,10 @@ if grep -rqE --include='*.cpp' --include='*.h' --include='*.hpp' "$slide_marker"
     leaks=$((leaks + 1))
 fi
 if [[ $leaks -gt 0 ]]; then
-    echo "make-handout: FAILED: solution code in $out (see above); do not hand it out." >&2
+    echo "make-handout: solution code in the handout (see above)" >&2
     exit 1
 fi
+finished=1
 
 echo "make-handout: wrote $out: ${#labs[@]} labs (${labs[*]}), $generated exercise sources," \
     "$copied other files; $checked solution-only lines checked absent"

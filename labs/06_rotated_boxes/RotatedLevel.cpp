@@ -4,6 +4,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Response.h"
 #include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
@@ -18,6 +19,14 @@
 
 namespace
 {
+// An angle kept in [0, 360): a float that only grows loses its fraction (at 432,000 degrees
+// a step of 6 degrees a frame is already rounded) and stops turning after about 42 hours.
+float wrapDegrees(float degrees)
+{
+    const float wrapped = std::fmod(degrees, 360.f);
+    return wrapped < 0.f ? wrapped + 360.f : wrapped;
+}
+
 const int pushOutRounds = 4; // pushing out of one shape can push into another: retry
 
 const sf::Color shapeColor{70, 110, 170};
@@ -246,7 +255,8 @@ void RotatedLevel::setSpin(float degreesPerSecond)
 void RotatedLevel::update(float dt)
 {
     if (!shapes.empty())
-        shapes[held].body.angleDegrees += spinDegreesPerSecond * dt;
+        shapes[held].body.angleDegrees =
+            wrapDegrees(shapes[held].body.angleDegrees + spinDegreesPerSecond * dt);
     pairs.clear();
     overlapping.assign(shapes.size(), false);
     for (std::size_t i = 0; i < shapes.size(); ++i)
@@ -276,7 +286,9 @@ void RotatedLevel::pushHeldOut()
             const PairView view = testPair(held, other);
             if (!view.overlapping)
                 continue;
-            shapes[held].body.center += view.axis * -view.gap;
+            // The MTV, rounded outward (Response.h): exactly axis * depth can stay inside.
+            const hitbox::Contact contact{true, view.axis, -view.gap, shapes[held].body.center};
+            shapes[held].body.center += hitbox::pushOutOffset(contact);
             moved = true;
         }
         if (!moved)

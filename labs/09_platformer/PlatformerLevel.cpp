@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace
 {
@@ -95,6 +97,15 @@ hitbox::Contact PlatformerLevel::pushOut(const CollisionPoint& point, hitbox::Ve
 
 PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
 {
+    const hitbox::Vec2 start = map.getPlayerStart();
+    const int column = static_cast<int>(start.x / TileMap::tileSize);
+    const int row = static_cast<int>(start.y / TileMap::tileSize);
+    if (startsUnderACeiling() && map.isSolid(column, row + 1))
+        throw std::invalid_argument(
+            "the player start 'P' (column " + std::to_string(column + 1) + ", row " +
+            std::to_string(row + 1) +
+            ") has solid tiles above and below it; the player is taller than one tile, so "
+            "leave the tile above or below 'P' empty");
     respawn();
     for (int row = 0; row < map.getRows(); ++row)
         for (int column = 0; column < map.getColumns(); ++column)
@@ -284,10 +295,20 @@ void PlatformerLevel::placePlayer(hitbox::Vec2 topLeft)
 
 void PlatformerLevel::respawn()
 {
-    // Stand on the bottom of the 'P' tile, in the middle of it.
+    // Stand on the bottom of the 'P' tile, in the middle of it. The player is taller than a
+    // tile: under a solid tile it starts with its head at the top of 'P' instead and falls,
+    // never with its head inside the ceiling (the constructor refuses a one-tile gap).
     const hitbox::Vec2 start = map.getPlayerStart();
-    placePlayer({start.x + (TileMap::tileSize - Player::width) / 2.f,
-                 start.y + TileMap::tileSize - Player::height});
+    const float top =
+        startsUnderACeiling() ? start.y : start.y + TileMap::tileSize - Player::height;
+    placePlayer({start.x + (TileMap::tileSize - Player::width) / 2.f, top});
+}
+
+bool PlatformerLevel::startsUnderACeiling() const
+{
+    const hitbox::Vec2 start = map.getPlayerStart();
+    return map.isSolid(static_cast<int>(start.x / TileMap::tileSize),
+                       static_cast<int>(start.y / TileMap::tileSize) - 1);
 }
 
 void PlatformerLevel::render(sf::RenderTarget& target) const

@@ -49,6 +49,8 @@ public:
     // Katy Coe, "2D Platform Games Part 1: Collision Detection for Dummies").
     static constexpr int maxResolvePasses = 3;
 
+    // Throws std::invalid_argument when 'P' has solid tiles both above and below it: the
+    // player, taller than a tile, could not start anywhere without a tile inside it.
     explicit PlatformerLevel(TileMap map);
 
     void handleInput(const Input& input, float dt) override;
@@ -101,6 +103,8 @@ private:
     // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
     hitbox::Hit firstHitAlong(const hitbox::Box& box, hitbox::Vec2 move) const;
     void respawn();
+    // True when the tile above 'P' is solid: the player (taller than a tile) starts lower.
+    bool startsUnderACeiling() const;
 
     TileMap map;
     Player player;

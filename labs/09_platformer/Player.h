@@ -35,6 +35,8 @@ public:
     // The speed cap against tunnelling: in one step the player may move less
     // than one tile, so it cannot jump over a tile between two steps.
     static constexpr float maxFallSpeed = 2250.f; // px/s
+    // PlatformerLevel starts the player in the 'P' tile and the empty one above or below it.
+    static_assert(height <= 2.f * TileMap::tileSize, "the player must fit in two tiles");
     static_assert(maxFallSpeed * hitbox::stepSeconds < TileMap::tileSize,
                   "the speed cap must keep every step shorter than a tile");
 

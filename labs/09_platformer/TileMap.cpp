@@ -1,6 +1,7 @@
 #include "TileMap.h"
 
 #include "hitbox/app/Options.h"
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <algorithm>
@@ -17,13 +18,13 @@ namespace
 // "levels/x.txt line 4: ..." - every complaint about a file starts the same way.
 LevelFileError errorAt(const std::string& source, int line, const std::string& what)
 {
-    return LevelFileError("Hitbox: level file '" + hitbox::printable(source, 200) + "' line " +
+    return LevelFileError("level file '" + hitbox::printable(source, 200) + "' line " +
                           std::to_string(line) + ": " + what);
 }
 
 LevelFileError fileError(const std::string& path, const std::string& what)
 {
-    return LevelFileError("Hitbox: level file '" + hitbox::printable(path, 200) + "' " + what);
+    return LevelFileError("level file '" + hitbox::printable(path, 200) + "' " + what);
 }
 
 // Why a tile character is wrong, with the fix for the usual cause.
@@ -35,6 +36,15 @@ std::string unknownTile(char tile, std::size_t column)
         return what + " (a line ends in a lone carriage return: save the file with Unix or "
                       "Windows line ends)";
     return what + " (use # for solid, . for empty, P for the player start)";
+}
+// A level too large for exact collision maths (TileMap::maxTilesAcross).
+std::string tooBig(const std::string& direction)
+{
+    return "the level is over " + std::to_string(TileMap::maxTilesAcross) + " tiles " + direction +
+           "; the collision maths is exact to " +
+           std::to_string(static_cast<long long>(hitbox::exactRange)) +
+           " px (hitbox/geometry/Range.h), so a level may be at most " +
+           std::to_string(TileMap::maxTilesAcross) + " tiles wide and tall";
 }
 } // namespace
 
@@ -58,7 +68,11 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
             continue; // blank lines (usually at the end of the file) are not rows
 
         if (map.tiles.empty())
+        {
+            if (line.size() > static_cast<std::size_t>(maxTilesAcross))
+                throw errorAt(sourceName, lineNumber, tooBig("wide"));
             map.columns = static_cast<int>(line.size());
+        }
         else if (static_cast<int>(line.size()) != map.columns)
             throw errorAt(sourceName, lineNumber,
                           "this row has " + std::to_string(line.size()) +
@@ -85,6 +99,8 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
         }
         map.tiles.push_back(line);
         // [/slide]
+        if (map.tiles.size() > static_cast<std::size_t>(maxTilesAcross))
+            throw errorAt(sourceName, lineNumber, tooBig("tall"));
     }
 
     if (map.tiles.empty())

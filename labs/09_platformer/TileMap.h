@@ -2,8 +2,10 @@
 //
 // The file is a picture of the level, one character per tile:
 //     #  solid tile        .  empty        P  where the player starts (an empty tile)
-// Every row must have the same number of tiles. A mistake in the file stops the program with
-// ONE line naming the file, the line and what is wrong, so a student can fix it at once.
+// Every row must have the same number of tiles, and a level may be at most maxTilesAcross
+// tiles wide and tall, inside the range the collision maths is exact for. A mistake in the file
+// stops the program with ONE line naming the file, the line and what is wrong, so a student can fix
+// it at once.
 #pragma once
 
 #include "hitbox/app/Assets.h"
@@ -12,8 +14,8 @@
 #include <string>
 #include <vector>
 
-// A level file that cannot be read as a level. An AssetError, so hitbox::run prints the
-// message and exits with code 1 like any other broken asset.
+// A level file that cannot be read as a level. An AssetError; lab 9's main() turns it (and
+// a missing --level file) into bad input, so hitbox::run prints it and exits with code 2.
 class LevelFileError : public hitbox::AssetError
 {
 public:
@@ -42,6 +44,12 @@ public:
 
     // A level file may be at most this big (1 MiB: a 1000 x 1000 tile level fits).
     static constexpr long long maxFileBytes = 1 << 20;
+
+    // The most tiles a level may have across or down: 20000 tiles are 960000 px, inside
+    // hitbox::exactRange (1e6 px, geometry/Range.h) with room for a player who falls out of
+    // the bottom. Beyond it floats round a step's movement away (at 2.5e7 px a float's step
+    // is 2 px), so a wider level is refused when it is read, never run wrong.
+    static constexpr int maxTilesAcross = 20000;
 
     // Reads a level from text. `sourceName` (usually the file's path) starts every error
     // message. Lines end in \n or \r\n; a UTF-8 byte-order mark at the start is skipped.

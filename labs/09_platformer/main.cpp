@@ -13,6 +13,24 @@
 #include "hitbox/app/App.h"
 
 #include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace
+{
+// The level named on the command line: a missing or broken file is bad input (exit code 2).
+TileMap loadLevel(const std::string& path)
+{
+    try
+    {
+        return TileMap::load(path);
+    }
+    catch (const hitbox::AssetError& error)
+    {
+        throw std::invalid_argument(error.what());
+    }
+}
+} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -20,7 +38,7 @@ int main(int argc, char* argv[])
                        [](const hitbox::Options& options)
                        {
                            auto level = std::make_unique<PlatformerLevel>(
-                               TileMap::load(options.get("--level", "levels/platformer.txt")));
+                               loadLevel(options.get("--level", "levels/platformer.txt")));
                            level->setDemo(options.onOff("--demo", false));
                            return level;
                        });

@@ -60,6 +60,19 @@ TEST(OptionsNumber, ReadsDecimalsAndRefusesNanInfinityAndText)
                   std::string("--t needs a number from 0 to 10, not '") + bad + "'");
 }
 
+// Issue 25, item 23: Options.h says decimal; strtod alone also read hex, exponents and
+// denormals ("0x10" was 16, "1e-400" was 0).
+TEST(OptionsNumber, OnlyPlainDecimalsAreNumbers)
+{
+    EXPECT_DOUBLE_EQ(parseCommandLine({"--t", "-2.25"}, {"--t"}).number("--t", 0, -10, 10), -2.25);
+    for (const char* bad : {"0x10", "0x1p3", "1e-400", "1e2", " 5", "+5", ".5", "5.", "1.2.3", "-"})
+        EXPECT_EQ(messageOf(
+                      [&] {
+                          parseCommandLine({"--t", bad}, {"--t"}).number("--t", 0, -10, 10);
+                      }),
+                  std::string("--t needs a number from -10 to 10, not '") + bad + "'");
+}
+
 TEST(OptionsOnOff, OnlyOnAndOffAreAnswers)
 {
     EXPECT_TRUE(parseCommandLine({"--demo", "on"}, {"--demo"}).onOff("--demo", false));
@@ -93,12 +106,29 @@ TEST(OptionsShared, SecondsAndFramesHaveAStatedMaximumAndNeverOverflow)
                   [] {
                       parseCommandLine({"--seconds", "76861433640456466"});
                   }),
-              "--seconds needs a whole number from 0 to 100000000, not '76861433640456466'");
+              "--seconds needs a number from 0 to 100000000, not '76861433640456466'");
     EXPECT_EQ(messageOf(
                   [] {
                       parseCommandLine({"--frames", "12000000001"});
                   }),
               "--frames needs a whole number from 0 to 12000000000, not '12000000001'");
+}
+
+// Items 22 and 24: --help anywhere, half seconds, and no option silently overriding another.
+TEST(OptionsShared, HelpHalfSecondsAndConflicts)
+{
+    EXPECT_TRUE(parseCommandLine({"--frames", "bogus", "-h"}).help);
+    EXPECT_EQ(parseCommandLine({"--seconds", "0.5"}).frames, 60);
+    EXPECT_EQ(messageOf(
+                  [] {
+                      parseCommandLine({"--seed", "1", "--seed", "2"});
+                  }),
+              "--seed is given twice; give it once");
+    EXPECT_EQ(messageOf(
+                  [] {
+                      parseCommandLine({"--seconds", "1", "--frames", "2"});
+                  }),
+              "--frames and --seconds both set how long to run; give one of them");
 }
 
 TEST(OptionsShared, SeedOutOfRangeIsAnErrorNotAnotherSeed)

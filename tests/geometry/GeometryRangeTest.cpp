@@ -2,8 +2,10 @@
 // huge, tiny and many-cornered shapes each get their documented answer, one test each.
 // The sweep over the whole range is in tests/long/RangeSweepTest.cpp.
 #include "hitbox/geometry/Capsule.h"
+#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Range.h"
+#include "hitbox/geometry/Sweep.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -265,4 +267,18 @@ TEST(ConvexHull, AConcavePolygonCollidesAsItsHull)
     EXPECT_TRUE(hitbox::circleVsPolygon(Circle{{23.f, 15.f}, 2.f}, notched));
     EXPECT_TRUE(hitbox::capsuleVsPolygon(Capsule{{20.f, 15.f}, {25.f, 15.f}, 2.f}, notched));
     EXPECT_TRUE(hitbox::pointInPolygon({23.f, 15.f}, notched));
+}
+
+// Issue 25, item 11: outside the stated range the answer is "no hit", never a wrong hit or
+// an infinite depth.
+TEST(GeometryRange, CirclesAndSegmentsBeyondTheRangeAreNoHit)
+{
+    EXPECT_FALSE(hitbox::circleVsCircle({{0.f, 0.f}, 1e20f}, {{3e19f, 0.f}, 1e20f}));
+    const hitbox::Contact huge =
+        hitbox::circleVsCircleContact({{0.f, 0.f}, 2e38f}, {{1.f, 0.f}, 2e38f});
+    EXPECT_FALSE(huge.hit) << "depth " << huge.depth;
+    EXPECT_FALSE(hitbox::segmentVsBox({-3e38f, 5.f}, {3e38f, 5.f}, {0.f, 0.f, 10.f, 10.f}).hit);
+    // Inside the range both still hit.
+    EXPECT_TRUE(hitbox::circleVsCircle({{0.f, 0.f}, 1e6f}, {{1e6f, 0.f}, 1e6f}));
+    EXPECT_TRUE(hitbox::segmentVsBox({-1e6f, 5.f}, {1e6f, 5.f}, {0.f, 0.f, 10.f, 10.f}).hit);
 }

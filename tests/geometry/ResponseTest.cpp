@@ -1,6 +1,7 @@
 // ResponseTest.cpp - slide, bounce, push out and elastic collisions (Response.h).
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Sweep.h"
 #include "support/Printers.h"
 
@@ -86,9 +87,25 @@ TEST(PushOutOffset, MovesAJustClearOfB)
     const hitbox::Box b(100.f, 0.f, 50.f, 50.f);
     const hitbox::Contact contact = hitbox::boxVsBoxContact(a, b);
     const hitbox::Vec2 offset = hitbox::pushOutOffset(contact);
-    EXPECT_EQ(offset, hitbox::Vec2(-5.f, 0.f));
+    // The depth, 5 px, rounded outward by pushOutSlop of the contact's scale (100 px).
+    EXPECT_LE(offset.x, -5.f);
+    EXPECT_NEAR(offset.x, -5.f, 100.f * hitbox::pushOutSlop * 1.01f);
+    EXPECT_EQ(offset.y, 0.f);
     EXPECT_FALSE(hitbox::boxVsBox({a.left + offset.x, a.top + offset.y, a.width, a.height}, b));
     EXPECT_EQ(hitbox::pushOutOffset(hitbox::Contact{}), hitbox::Vec2(0.f, 0.f));
+}
+
+// Issue 25, item 2: a push of exactly the float depth often left the pair overlapping by
+// about 1e-6 px (these two circles).
+TEST(PushOutOffset, ThePairNoLongerCollidesAfterIt)
+{
+    const hitbox::Circle a{{-17.f, -11.f}, 16.f};
+    const hitbox::Circle b{{-7.f, -3.f}, 20.f};
+    const hitbox::Contact circles = hitbox::circleVsCircleContact(a, b);
+    ASSERT_TRUE(circles.hit);
+    EXPECT_FALSE(
+        hitbox::circleVsCircleContact({a.center + hitbox::pushOutOffset(circles), a.radius}, b)
+            .hit);
 }
 
 TEST(ElasticCollision, EqualMassesSwapTheirSpeedsAlongTheNormal)

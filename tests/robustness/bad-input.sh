@@ -22,6 +22,7 @@ lab03=$(program lab03_bouncing_squares)
 lab05=$(program lab05_ray_caster)
 lab07=$(program lab07_swept_circles)
 lab08=$(program lab08_many_objects)
+lab06=$(program lab06_rotated_boxes)
 lab09=$(program lab09_platformer)
 
 failures=0
@@ -52,13 +53,45 @@ nodisplay=(env -u DISPLAY -u WAYLAND_DISPLAY)
 row 2 "Pong: --frames needs a value" "${nodisplay[@]}" "$pong" --frames
 row 2 "Pong: --frames needs a whole number from 0 to 12000000000, not 'ten'" "${nodisplay[@]}" "$pong" --frames ten
 row 2 "Pong: --frames needs a whole number from 0 to 12000000000, not '-3'" "${nodisplay[@]}" "$pong" --frames -3
-row 2 "Pong: --seconds needs a whole number from 0 to 100000000, not '76861433640456466'" "${nodisplay[@]}" "$pong" --headless --seconds 76861433640456466
-row 2 "Pong: --seconds needs a whole number from 0 to 100000000, not '153722867280912931'" "${nodisplay[@]}" "$pong" --headless --seconds 153722867280912931
+row 2 "Pong: --seconds needs a number from 0 to 100000000, not '76861433640456466'" "${nodisplay[@]}" "$pong" --headless --seconds 76861433640456466
+row 2 "Pong: --seconds needs a number from 0 to 100000000, not '153722867280912931'" "${nodisplay[@]}" "$pong" --headless --seconds 153722867280912931
 row 2 "Pong: --seed needs a whole number from 0 to 4294967295, not '4294967297'" "${nodisplay[@]}" "$pong" --headless --seed 4294967297
 row 2 "Pong: --screenshot draws a picture, so it cannot be --headless" "${nodisplay[@]}" "$pong" --headless --screenshot x.png
 row 2 "Pong: --screenshot needs a file name, e.g. shot.png" "$pong" --screenshot ""
-row 2 "Pong: unknown option '--bogus' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N --mode VALUE --difficulty VALUE --points-to-win VALUE --screen VALUE)" "${nodisplay[@]}" "$pong" --bogus
-row 2 "Hitbox sandbox: unknown option '\\xEF\\xBB\\xBF' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N)" "${nodisplay[@]}" "$sandbox" $'\xEF\xBB\xBF'
+row 2 "Pong: unknown option '--bogus' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N --mode VALUE --difficulty VALUE --points-to-win VALUE --screen VALUE; --help explains)" "${nodisplay[@]}" "$pong" --bogus
+row 2 "Hitbox sandbox: unknown option '\\xEF\\xBB\\xBF' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N; --help explains)" "${nodisplay[@]}" "$sandbox" $'\xEF\xBB\xBF'
+# Issue 25, items 23 and 24: numbers are decimal only (as Options.h says), and an option that
+# would silently override another is refused.
+for bad in 0x10 0x1p3 1e-400 1e2 ' 5' '+5' .5 5. inf; do
+    row 2 "Lab 6 - Rotated boxes: --spin needs a number from -720 to 720, not '$bad'" "${nodisplay[@]}" "$lab06" --headless --spin "$bad"
+done
+row 2 "Pong: --seconds needs a number from 0 to 100000000, not '1e3'" "${nodisplay[@]}" "$pong" --headless --seconds 1e3
+row 2 "Pong: --frames is given twice; give it once" "${nodisplay[@]}" "$pong" --headless --frames 5 --frames 7
+row 2 "Pong: --mode is given twice; give it once" "${nodisplay[@]}" "$pong" --headless --mode 1p --mode 2p
+row 2 "Pong: --frames and --seconds both set how long to run; give one of them" "${nodisplay[@]}" "$pong" --headless --frames 5 --seconds 7
+row 2 "Pong: --frames and --seconds both set how long to run; give one of them" "${nodisplay[@]}" "$pong" --headless --seconds 7 --frames 5
+# Item 22: --help and -h print the usage page on stdout, exit 0, whatever else is given.
+for help in --help -h; do
+    rows=$((rows + 1))
+    "${nodisplay[@]}" "$lab06" --spin bogus "$help" >"$work/out" 2>"$work/err"
+    code=$?
+    if [[ $code -ne 0 || -s $work/err ]] || ! grep -q "^  --seconds S " "$work/out" ||
+        ! grep -q "^  --spin VALUE$" "$work/out"; then
+        failures=$((failures + 1)); echo "FAIL: $help: exit $code, stderr: $(cat "$work/err")" >&2
+    fi
+done
+# Item 9: angles wrap: 10 s at 720 degrees a second from 25 ends at 25, not 7225 (and a float
+# that only grows stops turning after about 42 simulated hours).
+rows=$((rows + 1))
+spun=$("${nodisplay[@]}" "$lab06" --headless --spin 720 --seconds 10 2>&1)
+if [[ $spun != *"held shape 0 at 25 degrees" ]]; then
+    failures=$((failures + 1)); echo "FAIL: the spinning shape's angle did not wrap: $spun" >&2
+fi
+# Item 24: half a second is 60 steps.
+rows=$((rows + 1))
+if [[ $("${nodisplay[@]}" "$pong" --headless --seconds 0.5 2>&1) != "Pong: 60 frames, 0.5 s simulated |"* ]]; then
+    failures=$((failures + 1)); echo "FAIL: --seconds 0.5 did not run 60 steps" >&2
+fi
 
 # --- Each program's own options: the typed getters' one message format
 row 2 "Pong: --mode needs one of 1p, 2p, cvc, not 'bogus'" "${nodisplay[@]}" "$pong" --headless --mode bogus
@@ -87,15 +120,20 @@ printf '#P.#\r####\r' >"$work/cr.txt"
 printf '#P\0#\n####\n' >"$work/nul.txt"
 printf '#P.#\n#\xEF##\n' >"$work/byte.txt"
 row 2 "Lab 9 - Platformer: --level needs a file name, e.g. levels/platformer.txt" "${nodisplay[@]}" "$lab09" --headless --level ""
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/missing.txt' does not exist" "${nodisplay[@]}" "$lab09" --headless --level "$work/missing.txt"
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work' is a folder; pick a file in it, e.g. levels/platformer.txt" "${nodisplay[@]}" "$lab09" --headless --level "$work"
-row 1 "Lab 9 - Platformer: Hitbox: level file '/dev/zero' is not a regular file (a device or a pipe); a level is a text file" "${nodisplay[@]}" "$lab09" --headless --level /dev/zero
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/fifo.txt' is not a regular file (a device or a pipe); a level is a text file" "${nodisplay[@]}" "$lab09" --headless --level "$work/fifo.txt"
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/big.txt' is 2000000 bytes; a level file may be at most 1048576 bytes (1 MiB)" "${nodisplay[@]}" "$lab09" --headless --level "$work/big.txt"
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/cr.txt' line 1: unknown tile '\\r' in column 5 (a line ends in a lone carriage return: save the file with Unix or Windows line ends)" "${nodisplay[@]}" "$lab09" --headless --level "$work/cr.txt"
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/nul.txt' line 1: unknown tile '\\0' in column 3 (use # for solid, . for empty, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/nul.txt"
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/byte.txt' line 2: unknown tile '\\xEF' in column 2 (use # for solid, . for empty, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/byte.txt"
-row 1 "Lab 9 - Platformer: Hitbox: level file '$work/empty' has no rows (draw the level with # . and one P)" bash -c ': >"$1/empty"; exec env -u DISPLAY "$0" --headless --level "$1/empty"' "$lab09" "$work"
+row 2 "Lab 9 - Platformer: level file '$work/missing.txt' does not exist" "${nodisplay[@]}" "$lab09" --headless --level "$work/missing.txt"
+row 2 "Lab 9 - Platformer: level file '$work' is a folder; pick a file in it, e.g. levels/platformer.txt" "${nodisplay[@]}" "$lab09" --headless --level "$work"
+row 2 "Lab 9 - Platformer: level file '/dev/zero' is not a regular file (a device or a pipe); a level is a text file" "${nodisplay[@]}" "$lab09" --headless --level /dev/zero
+row 2 "Lab 9 - Platformer: level file '$work/fifo.txt' is not a regular file (a device or a pipe); a level is a text file" "${nodisplay[@]}" "$lab09" --headless --level "$work/fifo.txt"
+row 2 "Lab 9 - Platformer: level file '$work/big.txt' is 2000000 bytes; a level file may be at most 1048576 bytes (1 MiB)" "${nodisplay[@]}" "$lab09" --headless --level "$work/big.txt"
+row 2 "Lab 9 - Platformer: level file '$work/cr.txt' line 1: unknown tile '\\r' in column 5 (a line ends in a lone carriage return: save the file with Unix or Windows line ends)" "${nodisplay[@]}" "$lab09" --headless --level "$work/cr.txt"
+row 2 "Lab 9 - Platformer: level file '$work/nul.txt' line 1: unknown tile '\\0' in column 3 (use # for solid, . for empty, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/nul.txt"
+row 2 "Lab 9 - Platformer: level file '$work/byte.txt' line 2: unknown tile '\\xEF' in column 2 (use # for solid, . for empty, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/byte.txt"
+row 2 "Lab 9 - Platformer: level file '$work/empty' has no rows (draw the level with # . and one P)" bash -c ': >"$1/empty"; exec env -u DISPLAY "$0" --headless --level "$1/empty"' "$lab09" "$work"
+# Issue 25, items 6 and 7: beyond the exact range, or no room for the player at 'P'.
+printf '%s\n' "$(head -c 20001 /dev/zero | tr '\0' '.')" >"$work/wide.txt"
+printf '####\n#P.#\n####\n' >"$work/gap.txt"
+row 2 "Lab 9 - Platformer: level file '$work/wide.txt' line 1: the level is over 20000 tiles wide; the collision maths is exact to 1000000 px (hitbox/geometry/Range.h), so a level may be at most 20000 tiles wide and tall" "${nodisplay[@]}" "$lab09" --headless --level "$work/wide.txt"
+row 2 "Lab 9 - Platformer: the player start 'P' (column 2, row 2) has solid tiles above and below it; the player is taller than one tile, so leave the tile above or below 'P' empty" "${nodisplay[@]}" "$lab09" --headless --level "$work/gap.txt"
 # A byte-order mark (Windows Notepad) is not an error: the level loads.
 rows=$((rows + 1))
 if ! "${nodisplay[@]}" "$lab09" --headless --frames 1 --level "$work/bom.txt" >/dev/null 2>"$work/err"; then
@@ -106,12 +144,12 @@ chmod 000 "$work/good.txt"
 chmod 755 "$work"
 if [[ $(id -u) -eq 0 ]]; then
     if setpriv --reuid=65534 --regid=65534 --clear-groups test -x "$lab09" 2>/dev/null; then
-        row 1 "Lab 9 - Platformer: Hitbox: level file '$work/good.txt' cannot be read: Permission denied" "${nodisplay[@]}" setpriv --reuid=65534 --regid=65534 --clear-groups "$lab09" --headless --level "$work/good.txt"
+        row 2 "Lab 9 - Platformer: level file '$work/good.txt' cannot be read: Permission denied" "${nodisplay[@]}" setpriv --reuid=65534 --regid=65534 --clear-groups "$lab09" --headless --level "$work/good.txt"
     else
         echo "note: the build folder cannot be reached as nobody; the unreadable-level row is skipped"
     fi
 else
-    row 1 "Lab 9 - Platformer: Hitbox: level file '$work/good.txt' cannot be read: Permission denied" "${nodisplay[@]}" "$lab09" --headless --level "$work/good.txt"
+    row 2 "Lab 9 - Platformer: level file '$work/good.txt' cannot be read: Permission denied" "${nodisplay[@]}" "$lab09" --headless --level "$work/good.txt"
 fi
 
 # --- No display: unset, only Wayland, or a DISPLAY with no X server behind it
@@ -135,6 +173,30 @@ if [[ -n ${DISPLAY:-} ]]; then
     rows=$((rows + 1))
     if [[ $leftovers != $'pipe.png\ntaken.png' ]]; then
         failures=$((failures + 1)); echo "FAIL: failed screenshots left files behind: $leftovers" >&2
+    fi
+    # Issue 25: a read-only file and a symbolic link are never replaced (item 8); the name is
+    # checked before a long simulation (item 16); a newline in it stays on one line (item 20);
+    # a font that is a pipe is refused, not waited on for ever (item 14).
+    mkdir -p "$work/keep"
+    printf 'mine' >"$work/keep/ro.png"
+    chmod 444 "$work/keep/ro.png"
+    ln -s ro.png "$work/keep/link.png"
+    row 1 "Hitbox sandbox: could not save '$work/keep/ro.png': it is read-only (make it writable, or save to a new name)" "$sandbox" --screenshot "$work/keep/ro.png"
+    row 1 "Hitbox sandbox: could not save '$work/keep/link.png': it is a symbolic link (save to the file it points to, or to a new name)" "$sandbox" --screenshot "$work/keep/link.png"
+    rows=$((rows + 1))
+    if [[ $(cat "$work/keep/ro.png") != mine || $(stat -c %a "$work/keep/ro.png") != 444 || ! -L "$work/keep/link.png" ]]; then
+        failures=$((failures + 1)); echo "FAIL: a read-only file or a link was replaced" >&2
+    fi
+    row 1 "Hitbox sandbox: could not save '$work/no/such/folder/a.png': the folder '$work/no/such/folder' does not exist" "$sandbox" --frames 12000000000 --screenshot "$work/no/such/folder/a.png"
+    row 1 "Hitbox sandbox: could not save '$work/new\nline/a.png': the folder '$work/new\nline' does not exist" "$sandbox" --screenshot "$work/new"$'\n'"line/a.png"
+    mkdir -p "$work/fifo-assets/fonts"
+    mkfifo "$work/fifo-assets/fonts/DejaVuSans.ttf"
+    row 1 "Hitbox sandbox: the font '$work/fifo-assets/fonts/DejaVuSans.ttf' is not a regular file (a folder, a device or a pipe). Fix: restore it with 'git checkout -- assets/fonts/DejaVuSans.ttf'." env HITBOX_ASSETS="$work/fifo-assets" "$sandbox" --screenshot "$work/keep/font.png"
+    # Item 17: a legal 254-byte name is saved (its hidden temporary name must fit too).
+    long="$work/keep/$(head -c 250 /dev/zero | tr '\0' 'x').png"
+    rows=$((rows + 1))
+    if ! "$sandbox" --screenshot "$long" >/dev/null 2>"$work/err" || [[ ! -s $long ]]; then
+        failures=$((failures + 1)); echo "FAIL: a 254-byte screenshot name was not saved: $(cat "$work/err")" >&2
     fi
 else
     echo "note: no display and no xvfb-run; the screenshot rows are skipped"

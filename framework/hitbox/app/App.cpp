@@ -4,8 +4,11 @@
 #include "hitbox/app/Display.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Loop.h"
+#include "hitbox/app/private/LongRun.h"
 #include "hitbox/app/private/Window.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
@@ -19,7 +22,8 @@ namespace
 int runHeadless(Level& level, const Options& options, const ProgramInfo& info)
 {
     const long long frames = options.frames >= 0 ? options.frames : 600;
-    simulate(level, frames);
+    if (!simulateReporting(level, frames, info.title))
+        return stoppedExitCode;
     std::cout << info.title << ": " << frames << " frames, " << frames * stepSeconds
               << " s simulated | " << level.describeState() << std::endl;
     return 0;
@@ -52,6 +56,18 @@ void simulate(Level& level, long long frames)
     runLoop(level, host);
 }
 
+sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit)
+{
+    const double width = size.x >= 1.f ? static_cast<double>(size.x) : 1.0;
+    const double height = size.y >= 1.f ? static_cast<double>(size.y) : 1.0;
+    const double wide = std::max(1u, limit.x);
+    const double tall = std::max(1u, limit.y);
+    const double scale = std::min({1.0, wide / width, tall / height});
+    auto side = [](double pixels, double most)
+    { return static_cast<unsigned>(std::clamp(std::floor(pixels), 1.0, most)); };
+    return {side(width * scale, wide), side(height * scale, tall)};
+}
+
 sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize)
 {
     if (windowSize.x == 0 || windowSize.y == 0 || !(worldSize.x > 0.f) || !(worldSize.y > 0.f))
@@ -80,6 +96,11 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
     {
         std::cerr << info.title << ": " << error.what() << std::endl;
         return 2;
+    }
+    if (options.help)
+    {
+        std::cout << usagePage(info);
+        return 0;
     }
     const DisplayCheck display =
         options.headless ? DisplayCheck{true, "", nullptr} : checkDisplay();

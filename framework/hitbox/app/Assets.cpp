@@ -1,5 +1,6 @@
 #include "hitbox/app/Assets.h"
 
+#include "hitbox/app/Options.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/System/Err.hpp>
@@ -67,7 +68,8 @@ std::string findAsset(const std::string& relativePath)
             return candidate;
         looked += (looked.empty() ? "" : ", ") + folder;
     }
-    throw AssetError("Hitbox: missing asset 'assets/" + relativePath + "' (looked in " + looked +
+    throw AssetError("missing asset 'assets/" + printable(relativePath, 200) + "' (looked in " +
+                     printable(looked, 400) +
                      "). Fix: restore it with 'git checkout -- assets', or set HITBOX_ASSETS "
                      "to the folder that holds it.");
 }
@@ -75,6 +77,13 @@ std::string findAsset(const std::string& relativePath)
 sf::Font loadFont(const std::string& relativePath)
 {
     const std::string path = findAsset(relativePath);
+    // Look before opening: opening a pipe waits forever for a writer, a device never ends.
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error))
+        throw AssetError("the font '" + printable(path, 200) +
+                         "' is not a regular file (a folder, a device or a pipe). Fix: restore "
+                         "it with 'git checkout -- assets/" +
+                         printable(relativePath, 200) + "'.");
     sf::Font font;
     // SFML prints its own multi-line complaint; keep it and say one clear line instead.
     std::ostringstream sfmlMessage;
@@ -82,7 +91,7 @@ sf::Font loadFont(const std::string& relativePath)
     const bool loaded = openFont(font, path);
     sf::err().rdbuf(previous);
     if (!loaded)
-        throw AssetError("Hitbox: the font '" + path +
+        throw AssetError("the font '" + printable(path, 200) +
                          "' is damaged or not a font. Fix: restore it with 'git checkout -- "
                          "assets/" +
                          relativePath + "'.");

@@ -1,11 +1,14 @@
 #include "hitbox/app/Options.h"
 
 #include "hitbox/app/App.h"
+#include "hitbox/app/Keys.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace hitbox
 {
@@ -35,6 +38,31 @@ long long toWholeNumber(const std::string& name, const std::string& text, long l
     return value;
 }
 
+// The decimal form Options.h states: -?digits(.digits)?, nothing else (no exponent, hex,
+// blanks, '+', "nan" or "inf", all of which strtod would read).
+bool isPlainDecimal(const std::string& text)
+{
+    std::size_t i = text.size() > 0 && text[0] == '-' ? 1 : 0;
+    auto digits = [&]
+    {
+        const std::size_t first = i;
+        while (i < text.size() && text[i] >= '0' && text[i] <= '9')
+            ++i;
+        return i > first;
+    };
+    if (!digits())
+        return false;
+    if (i < text.size() && text[i] == '.')
+    {
+        ++i;
+        if (!digits())
+            return false;
+    }
+    return i == text.size();
+}
+
+double toNumber(const std::string& name, const std::string& text, double lowest, double highest);
+
 std::string shortNumber(double value)
 {
     std::string text = std::to_string(value); // "0.500000"
@@ -42,6 +70,16 @@ std::string shortNumber(double value)
     if (!text.empty() && text.back() == '.')
         text.pop_back();
     return text;
+}
+
+double toNumber(const std::string& name, const std::string& text, double lowest, double highest)
+{
+    // strtod only after the form is checked; Hitbox never calls setlocale, so '.' is the point.
+    const double value = isPlainDecimal(text) ? std::strtod(text.c_str(), nullptr) : 0.0;
+    if (!isPlainDecimal(text) || !std::isfinite(value) || value < lowest || value > highest)
+        throw badValue(name, "a number from " + shortNumber(lowest) + " to " + shortNumber(highest),
+                       text);
+    return value;
 }
 
 } // namespace
@@ -94,17 +132,7 @@ double Options::number(const std::string& name, double fallback, double lowest,
                        double highest) const
 {
     const auto found = extra.find(name);
-    if (found == extra.end())
-        return fallback;
-    const std::string& text = found->second;
-    char* end = nullptr;
-    const double value = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-    const bool allRead = !text.empty() && end == text.c_str() + text.size() &&
-                         text.front() != ' ' && text.front() != '\t';
-    if (!allRead || !std::isfinite(value) || value < lowest || value > highest)
-        throw badValue(name, "a number from " + shortNumber(lowest) + " to " + shortNumber(highest),
-                       text);
-    return value;
+    return found == extra.end() ? fallback : toNumber(name, found->second, lowest, highest);
 }
 
 bool Options::onOff(const std::string& name, bool fallback) const
@@ -135,10 +163,42 @@ std::string Options::oneOf(const std::string& name, const std::string& fallback,
     throw badValue(name, "one of " + list, text);
 }
 
+std::string usagePage(const ProgramInfo& info)
+{
+    std::string page = info.title + "\n\nOptions every Hitbox program takes:\n";
+    page += "  --headless          simulate with no window, then print one line of final state\n";
+    page += "  --frames N          run N fixed steps (120 a second; headless default 600)\n";
+    page += "  --seconds S         the same in simulated seconds, e.g. 0.5 (0 to " +
+            std::to_string(maxSeconds) + ")\n";
+    page += "  --screenshot F.png  draw one frame into F.png after --frames steps\n";
+    page += "  --debug             start with the debug boxes shown\n";
+    page += "  --seed N            seed for anything random (0 to 4294967295)\n";
+    page += "  --help, -h          print this page\n";
+    if (!info.extraOptions.empty())
+    {
+        page += "\nThis program's own options (each takes a value):\n";
+        for (const std::string& extraOption : info.extraOptions)
+            page += "  " + extraOption + " VALUE\n";
+    }
+    page += "\nKeys in the window: " + sharedKeysHelp() + "\n";
+    page += "A bad value gets one line on stderr and exit code 2.\n";
+    return page;
+}
+
 Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info)
 {
     const long long framesPerSecond = static_cast<long long>(stepsPerSecond);
     Options options;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string option = argv[i];
+        if (option == "--help" || option == "-h")
+        {
+            options.help = true;
+            return options;
+        }
+    }
+    std::vector<std::string> given;
     for (int i = 1; i < argc; ++i)
     {
         const std::string option = argv[i];
@@ -148,6 +208,32 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
                 throw std::invalid_argument(printable(option) + " needs a value");
             return argv[++i];
         };
+        const bool isShared = option == "--headless" || option == "--debug" ||
+                              option == "--frames" || option == "--seconds" ||
+                              option == "--screenshot" || option == "--seed";
+        bool known = isShared;
+        for (const std::string& extraOption : info.extraOptions)
+            known = known || extraOption == option;
+        if (!known)
+        {
+            std::string usage = "--headless --frames N --seconds S --screenshot FILE.png "
+                                "--debug --seed N";
+            for (const std::string& extraOption : info.extraOptions)
+                usage += " " + extraOption + " VALUE";
+            throw std::invalid_argument("unknown option '" + printable(option) +
+                                        "' (the options are: " + usage + "; --help explains)");
+        }
+        for (const std::string& earlier : given)
+        {
+            if (earlier == option)
+                throw std::invalid_argument(option + " is given twice; give it once");
+            if ((earlier == "--frames" && option == "--seconds") ||
+                (earlier == "--seconds" && option == "--frames"))
+                throw std::invalid_argument(
+                    "--frames and --seconds both set how long to run; give one of them");
+        }
+        given.push_back(option);
+
         if (option == "--headless")
             options.headless = true;
         else if (option == "--debug")
@@ -155,7 +241,10 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
         else if (option == "--frames")
             options.frames = toWholeNumber(option, value(), 0, maxSeconds * framesPerSecond);
         else if (option == "--seconds")
-            options.frames = toWholeNumber(option, value(), 0, maxSeconds) * framesPerSecond;
+            // Rounded to the nearest whole step: 0.5 s is 60 steps.
+            options.frames =
+                std::llround(toNumber(option, value(), 0.0, static_cast<double>(maxSeconds)) *
+                             static_cast<double>(framesPerSecond));
         else if (option == "--screenshot")
         {
             options.screenshotPath = value();
@@ -165,21 +254,7 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
         else if (option == "--seed")
             options.seed = static_cast<unsigned>(toWholeNumber(option, value(), 0, 4294967295));
         else
-        {
-            bool known = false;
-            for (const std::string& extraOption : info.extraOptions)
-                known = known || extraOption == option;
-            if (!known)
-            {
-                std::string usage = "--headless --frames N --seconds S --screenshot FILE.png "
-                                    "--debug --seed N";
-                for (const std::string& extraOption : info.extraOptions)
-                    usage += " " + extraOption + " VALUE";
-                throw std::invalid_argument("unknown option '" + printable(option) +
-                                            "' (the options are: " + usage + ")");
-            }
             options.extra[option] = value();
-        }
     }
     if (options.headless && !options.screenshotPath.empty())
         throw std::invalid_argument("--screenshot draws a picture, so it cannot be --headless");

@@ -24,6 +24,7 @@ constexpr long long maxSeconds = 100'000'000;
 
 struct Options
 {
+    bool help = false; // --help or -h: print usagePage() and do nothing else
     bool headless = false;
     long long frames = -1; // -1: not given
     std::string screenshotPath;
@@ -39,7 +40,8 @@ struct Options
     // Digits only, an optional leading '-': "1e9", "12abc", " 5" and "+5" are refused.
     long long wholeNumber(const std::string& name, long long fallback, long long lowest,
                           long long highest) const;
-    // A decimal number such as 0.5 or 2; never NaN or infinite.
+    // A decimal number such as 0.5, -2 or 3.25: digits, an optional leading '-' and one
+    // optional '.' with digits after it. "1e3", "0x10", ".5", "5.", " 5" and "+5" are refused.
     double number(const std::string& name, double fallback, double lowest, double highest) const;
     // Exactly "on" or "off".
     bool onOff(const std::string& name, bool fallback) const;
@@ -48,8 +50,13 @@ struct Options
                       const std::vector<std::string>& choices) const;
 };
 
-// Reads the command line. Throws std::invalid_argument with a one-line message.
+// Reads the command line. Throws std::invalid_argument with a one-line message. Each option
+// may be given once, and --frames and --seconds not together: a second value would silently
+// win over the first, so it is refused. --help or -h anywhere: help is set, nothing else read.
 Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info);
+
+// The page --help prints: what the program is, every shared option and this program's own.
+std::string usagePage(const ProgramInfo& info);
 
 // `text` made safe for a one-line message: printable ASCII stays, every other byte is
 // written as an escape (\r, \t, \0, \xEF), and anything past `longest` bytes becomes "...".

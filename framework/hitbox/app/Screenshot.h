@@ -21,8 +21,14 @@ struct SaveResult
     explicit operator bool() const { return saved; }
 };
 
+// Whether `path` can take a picture, checked without drawing: the folder exists and takes a
+// new file, the name ends in .png/.bmp/.tga/.jpg, and it is not a folder, a device, a pipe,
+// a symbolic link or a read-only file (those are never replaced). Used before a long
+// --screenshot simulation, and by saveImage.
+SaveResult checkImagePath(const std::string& path);
+
 // Saves `image` as `path` (.png, .bmp, .tga or .jpg, chosen by the ending). An existing
-// file of that name is replaced only by a complete new one; a folder or a device never is.
+// file of that name is replaced only by a complete new one; what checkImagePath refuses never is.
 SaveResult saveImage(const sf::Image& image, const std::string& path);
 
 // A name in `folder` for an F12 screenshot that no file has yet: screenshot-STAMP.png, then

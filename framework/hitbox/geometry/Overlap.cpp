@@ -1,5 +1,7 @@
 #include "hitbox/geometry/Overlap.h"
 
+#include "hitbox/geometry/Range.h"
+
 #include <cmath>
 #include <limits>
 
@@ -13,9 +15,12 @@ float lengthSquared(Vec2 vector)
     return vector.x * vector.x + vector.y * vector.y;
 }
 
+// Inside the exact range (Range.h) only: at r = 1e20 a float cannot tell 3e19 from 0 apart,
+// and radii of 2e38 add up to infinity, so outside it the answer is "no hit".
 bool isUsable(const Circle& circle)
 {
-    return isFinite(circle) && circle.radius >= 0.f;
+    return isFinite(circle) && circle.radius >= 0.f && withinExactRange(circle.center) &&
+           withinExactRange(circle.radius);
 }
 
 // The point of the box nearest to `point` (the point itself when it is inside).

@@ -4,6 +4,10 @@
 // (spansOverlap, Shapes.h). Touching is not colliding, because a response that pushes two
 // objects apart leaves them exactly touching; if that counted they would collide again next
 // frame (the sticking bug). It is also how sf::Rect::intersects reads boxes.
+//
+// THE RANGE (Range.h): a circle test is exact for centres and radii within +-exactRange
+// (1e6 px) and answers "no hit" outside it (and for NaN or infinity). Box tests take any
+// finite box (the broadphases test huge bounds) and answer NaN with "no hit".
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"

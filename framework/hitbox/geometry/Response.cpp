@@ -34,9 +34,11 @@ Vec2 bounceVelocity(Vec2 velocity, Vec2 normal, float restitution)
 
 Vec2 pushOutOffset(const Contact& contact)
 {
-    if (!contact.hit)
+    if (!contact.hit || !std::isfinite(contact.depth))
         return {0.f, 0.f};
-    return contact.normal * contact.depth;
+    const float scale = std::fmax(std::fmax(std::fabs(contact.point.x), std::fabs(contact.point.y)),
+                                  std::fmax(contact.depth, 1.f));
+    return contact.normal * (contact.depth + pushOutSlop * scale);
 }
 
 VelocityPair elasticCollision(Vec2 firstVelocity, float firstMass, Vec2 secondVelocity,

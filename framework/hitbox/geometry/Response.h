@@ -22,8 +22,16 @@ Vec2 slideVelocity(Vec2 velocity, const Hit& hit);
 // kept. Already moving away (velocity . normal >= 0): unchanged, never pulled into the wall.
 Vec2 bounceVelocity(Vec2 velocity, Vec2 normal, float restitution);
 
-// How far to move A so it stops overlapping B: normal * depth (the minimum translation
-// vector), after which they touch, which is not a collision. No hit: (0, 0).
+// The push-out's outward rounding, as a fraction of the contact's scale (the largest of
+// |point.x|, |point.y|, the depth and 1 px): 1e-5, ten times the depth's float error that
+// Range.h states. It is at most 0.01 px for shapes within 1000 px of the origin.
+constexpr float pushOutSlop = 1e-5f;
+
+// How far to move A so it stops overlapping B: the minimum translation vector, normal *
+// depth, rounded OUTWARD by pushOutSlop, so that afterwards the pair does not collide (a
+// push of exactly the float depth lands on touching give or take 1e-6 of the coordinates,
+// often still inside). Checked for every shape pair over 10^6 cases each
+// (tests/long/PushOutTest.cpp). No hit, or a depth that is not finite: (0, 0).
 Vec2 pushOutOffset(const Contact& contact);
 
 // The two velocities after a collision.

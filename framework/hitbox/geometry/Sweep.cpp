@@ -1,5 +1,7 @@
 #include "hitbox/geometry/Sweep.h"
 
+#include "hitbox/geometry/Range.h"
+
 #include "hitbox/geometry/Overlap.h"
 
 #include <cmath>
@@ -110,6 +112,10 @@ Hit sweepBoxVsBox(const Box& moverBox, Vec2 displacement, const Box& targetBox)
 
 Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box)
 {
+    // Outside the exact range (Range.h) the move end - start can overflow to infinity (from
+    // -3e38 to 3e38) and the hit time is meaningless: "no hit", as Sweep.h states.
+    if (!withinExactRange(start) || !withinExactRange(end))
+        return Hit{};
     // A point is a box of zero size, so the segment is that box's move.
     return sweepBoxVsBox(Box(start, Vec2(0.f, 0.f)), end - start, box);
 }

@@ -37,6 +37,7 @@ Hit movedWithTarget(Hit hitSeenFromTarget, Vec2 targetDisplacement);
 // to `end` against a box. Hits only when the point passes strictly inside (a point grazing an
 // edge does not); `point` is start + time * (end - start). A zero-length segment is
 // pointInBox; a zero-size box is never hit (two things with no area). NaN: no hit.
+// Both ends must be within +-exactRange (Range.h); outside it: no hit.
 Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box);
 
 // A box moving by `displacement` against a still box (Ericson 5.5.8: the slab method against

@@ -25,6 +25,11 @@ sf::VideoMode videoMode(unsigned width, unsigned height)
     return sf::VideoMode({width, height});
 }
 
+sf::Vector2u videoModeSize(const sf::VideoMode& mode)
+{
+    return mode.size;
+}
+
 bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height)
 {
     return canvas.resize({width, height});
@@ -87,6 +92,11 @@ bool openFont(sf::Font& font, const std::string& path)
 sf::VideoMode videoMode(unsigned width, unsigned height)
 {
     return sf::VideoMode(width, height);
+}
+
+sf::Vector2u videoModeSize(const sf::VideoMode& mode)
+{
+    return {mode.width, mode.height};
 }
 
 bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height)

@@ -33,6 +33,9 @@ bool openFont(sf::Font& font, const std::string& path);
 // A window mode of `width` x `height` pixels.
 sf::VideoMode videoMode(unsigned width, unsigned height);
 
+// A window mode's size in pixels (SFML 3: mode.size, SFML 2: mode.width and mode.height).
+sf::Vector2u videoModeSize(const sf::VideoMode& mode);
+
 // Makes `canvas` `width` x `height` pixels; false when the graphics driver cannot.
 bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height);
 

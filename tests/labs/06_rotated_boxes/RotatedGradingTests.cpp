@@ -79,13 +79,13 @@ void stepWith(RotatedLevel& level, Input& input)
     input.update();
 }
 
-// After a push out, the held shape may still overlap by float rounding (a push of exactly the
-// depth lands on touching, give or take a few millionths of a pixel): allow 0.001 px.
+// After a push out, the held shape overlaps nothing: no tolerance (hitbox::pushOutOffset
+// rounds the MTV outward, so a correct push always separates).
 void expectPushedOut(const RotatedLevel& level)
 {
     for (const PairView& pair : level.getPairs())
-        EXPECT_GT(pair.gap, -1e-3f) << "still overlapping shape " << pair.other << " by "
-                                    << -pair.gap << " px after the push";
+        EXPECT_FALSE(pair.overlapping) << "still overlapping shape " << pair.other << " by "
+                                       << -pair.gap << " px after the push";
 }
 
 } // namespace

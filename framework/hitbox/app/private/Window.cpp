@@ -5,14 +5,18 @@
 #include "hitbox/app/Keys.h"
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/Screenshot.h"
+#include "hitbox/app/private/LongRun.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/sfml/Events.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics.hpp>
 
+#include <SFML/System/Err.hpp>
+
 #include <algorithm>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -106,6 +110,20 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
     }
 }
 
+// The window for a world: its size in pixels, shrunk (never stretched) to fit the desktop,
+// so a 1000 x 1000 tile level asks for a window the screen can show, not 48000 x 48024 px.
+sf::VideoMode windowMode(sf::Vector2f world)
+{
+    const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+    const sf::Vector2u screen = videoModeSize(desktop);
+    const sf::Vector2u room = screen.x > 0 && screen.y > 0
+                                  ? sf::Vector2u{screen.x / 10 * 9, screen.y / 10 * 9}
+                                  // room for the title bar
+                                  : sf::Vector2u{1920u, 1080u};
+    const sf::Vector2u size = fitInside(world, room);
+    return videoMode(size.x, size.y);
+}
+
 sf::View worldView(const Level& level, sf::Vector2u windowSize)
 {
     const sf::Vector2f world = level.getWorldSize();
@@ -149,16 +167,15 @@ class WindowHost : public LoopHost
 {
 public:
     WindowHost(Level& level, const Options& options, const ProgramInfo& info)
-        : level(level), font(loadFont()),
-          window(videoMode(static_cast<unsigned>(level.getWorldSize().x),
-                           static_cast<unsigned>(level.getWorldSize().y)),
-                 info.title)
+        : level(level), font(loadFont()), window(windowMode(level.getWorldSize()), info.title),
+          stepsLeft(options.frames)
     {
         window.setFramerateLimit(static_cast<unsigned>(stepsPerSecond));
         settings.showDebug = options.debugBoxes;
     }
 
-    bool isRunning() const override { return window.isOpen(); }
+    // --frames N in a window: it closes after N steps (stepsLeft -1: runs until closed).
+    bool isRunning() const override { return window.isOpen() && stepsLeft != 0; }
 
     float processInput(Input& input) override
     {
@@ -189,9 +206,15 @@ public:
 
     int stepsToRun(int due) override
     {
+        int steps = due;
         if (settings.paused)
-            return stepOnce ? 1 : 0;
-        return due;
+            steps = stepOnce ? 1 : 0;
+        if (stepsLeft >= 0)
+        {
+            steps = static_cast<int>(std::min<long long>(steps, stepsLeft));
+            stepsLeft -= steps;
+        }
+        return steps;
     }
 
     void render(const Level& drawn) override
@@ -261,6 +284,7 @@ private:
     sf::Clock frameClock;
     sf::Clock fpsClock;
     int framesCounted = 0;
+    long long stepsLeft;
 };
 
 } // namespace
@@ -274,14 +298,36 @@ int runWindow(Level& level, const Options& options, const ProgramInfo& info)
 
 int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info)
 {
-    const sf::Font font = loadFont();
-    simulate(level, options.frames >= 0 ? options.frames : 0);
-
-    const sf::Vector2f world = level.getWorldSize();
-    sf::RenderTexture canvas;
-    if (!makeCanvas(canvas, static_cast<unsigned>(world.x), static_cast<unsigned>(world.y)))
+    const std::string shownPath = printable(options.screenshotPath, 200);
+    // A bad name is reported before a long simulation, not after it.
+    const SaveResult writable = checkImagePath(options.screenshotPath);
+    if (!writable)
     {
-        std::cerr << info.title << ": could not create an image to draw into." << std::endl;
+        std::cerr << info.title << ": could not save '" << shownPath << "': " << writable.problem
+                  << std::endl;
+        return 1;
+    }
+    const sf::Font font = loadFont();
+    if (!simulateReporting(level, options.frames >= 0 ? options.frames : 0, info.title))
+        return stoppedExitCode;
+
+    // The whole world in one picture, shrunk to what the graphics driver can hold.
+    const sf::Vector2f world = level.getWorldSize();
+    const unsigned largest = std::min(sf::Texture::getMaximumSize(), maxPictureSide);
+    const sf::Vector2u size = fitInside(world, {largest, largest});
+    sf::RenderTexture canvas;
+    std::ostringstream sfmlMessage; // SFML's own reason, told in our one line
+    std::streambuf* previous = sf::err().rdbuf(sfmlMessage.rdbuf());
+    const bool made = makeCanvas(canvas, size.x, size.y);
+    sf::err().rdbuf(previous);
+    if (!made)
+    {
+        std::string reason = sfmlMessage.str();
+        while (!reason.empty() && (reason.back() == '\n' || reason.back() == '\r'))
+            reason.pop_back();
+        std::cerr << info.title << ": could not create a " << size.x << " x " << size.y
+                  << " pixel picture to draw into (the graphics driver said: "
+                  << printable(reason.empty() ? "nothing" : reason, 200) << ")" << std::endl;
         return 1;
     }
     FrameSettings settings;
@@ -292,11 +338,11 @@ int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info
     const SaveResult saved = saveImage(canvas.getTexture().copyToImage(), options.screenshotPath);
     if (!saved)
     {
-        std::cerr << info.title << ": could not save '" << options.screenshotPath
-                  << "': " << saved.problem << std::endl;
+        std::cerr << info.title << ": could not save '" << shownPath << "': " << saved.problem
+                  << std::endl;
         return 1;
     }
-    std::cout << info.title << ": saved " << options.screenshotPath << std::endl;
+    std::cout << info.title << ": saved " << shownPath << std::endl;
     return 0;
 }
 
