@@ -2,12 +2,9 @@
 // independent reference (support/GeometryReference.h; tolerance and why in
 // support/GeometryAgreement.h). The `long` label runs the same checks on 10^6 cases.
 
-// The references are slow unoptimised (10^5 convex hulls of 64 points each), so this one file
-// is optimised even in debug builds, to keep the default run quick. The geometry code under
-// test is still built as the preset says. GCC only; clang builds it unoptimised.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("O2")
-#endif
+// No `#pragma GCC optimize` here to speed the references up: under GCC's inter-procedural
+// register allocation it gave this file its own copy of std::mt19937's generator that broke
+// another file's code in a mingw Release build (seen with GCC 12).
 
 #include "support/GeometryAgreement.h"
 
