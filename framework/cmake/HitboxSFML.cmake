@@ -62,11 +62,9 @@ else()
 endif()
 message(STATUS "Hitbox: using ${how} SFML ${SFML_VERSION} (choose with -DHITBOX_SFML_MAJOR=2 or 3)")
 
-# hitbox_copy_runtime_dlls(program): on Windows, copies the DLLs `program` needs to start
-# (SFML's, when SFML is built shared, as SFML 2.6 is by default) next to it after each build,
-# so it starts from Visual Studio (F5), from Explorer, and for test discovery. SFML 2 also
-# loads OpenAL at run time: its openal32.dll ships in SFML's source tree (extlibs/bin), the
-# way SFML's CMake template copies it. Called by hitbox_warnings() for every program.
+# SFML 2 loads OpenAL at run time: its openal32.dll ships in SFML's source tree (extlibs/bin)
+# and is copied next to every program (hitbox_copy_runtime_dlls, HitboxWarnings.cmake), the
+# way SFML's CMake template does.
 set(HITBOX_OPENAL_DLL "")
 if(WIN32 AND SFML_VERSION VERSION_LESS 3 AND DEFINED SFML_SOURCE_DIR)
     if(CMAKE_SIZEOF_VOID_P EQUAL 8)
@@ -75,26 +73,3 @@ if(WIN32 AND SFML_VERSION VERSION_LESS 3 AND DEFINED SFML_SOURCE_DIR)
         set(HITBOX_OPENAL_DLL "${SFML_SOURCE_DIR}/extlibs/bin/x86/openal32.dll")
     endif()
 endif()
-function(hitbox_copy_runtime_dlls program)
-    if(NOT WIN32)
-        return()
-    endif()
-    if(HITBOX_OPENAL_DLL)
-        add_custom_command(TARGET ${program} POST_BUILD
-            COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${HITBOX_OPENAL_DLL}"
-                    "$<TARGET_FILE_DIR:${program}>"
-            VERBATIM)
-    endif()
-    if(CMAKE_VERSION VERSION_LESS 3.21)
-        message(WARNING "CMake ${CMAKE_VERSION} cannot list ${program}'s DLLs (3.21 can): "
-                        "copy SFML's DLLs next to it yourself, or install a newer CMake")
-        return()
-    endif()
-    # $<TARGET_RUNTIME_DLLS> is empty when SFML is static: copying nothing is an error in
-    # `cmake -E copy`, so the list is given with the folder behind it and copy_if_different
-    # is only run when there is something to copy.
-    add_custom_command(TARGET ${program} POST_BUILD
-        COMMAND "$<IF:$<BOOL:$<TARGET_RUNTIME_DLLS:${program}>>,${CMAKE_COMMAND};-E;copy_if_different;$<TARGET_RUNTIME_DLLS:${program}>;$<TARGET_FILE_DIR:${program}>,${CMAKE_COMMAND};-E;true>"
-        COMMAND_EXPAND_LISTS
-        VERBATIM)
-endfunction()
