@@ -8,5 +8,9 @@ set -euo pipefail
 export WINEPREFIX="${HITBOX_WINEPREFIX:-$HOME/.cache/hitbox/wine}"
 export WINEDEBUG=-all
 export WINEDLLOVERRIDES="mscoree,mshtml="
+# mingw's own runtime DLLs (libstdc++-6.dll, libwinpthread-1.dll), which a DLL built with
+# mingw needs; a program's other DLLs must sit next to it, as on Windows. Wine's Z: is /.
+gcc_dlls=$(dirname "$(x86_64-w64-mingw32-g++-posix -print-libgcc-file-name)")
+export WINEPATH="Z:${gcc_dlls//\//\\};Z:\\usr\\x86_64-w64-mingw32\\lib"
 mkdir -p "$WINEPREFIX"
 exec wine "$@"

@@ -15,4 +15,5 @@ set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 # Self-contained .exe files: no libstdc++-6.dll or libwinpthread-1.dll to copy next to them.
+# A DLL (BUILD_SHARED_LIBS) still needs them: scripts/wine-run.sh puts mingw's on wine's path.
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static -static-libgcc -static-libstdc++")
