@@ -107,6 +107,12 @@ if git grep -nE '#\s*include\s*<(unistd|dlfcn|pthread|fcntl|pwd|termios|windows|
     echo "ci-windows: a system header outside framework/hitbox/platform/Platform.cpp" >&2
     exit 1
 fi
+# A per-file optimisation pragma can break another file's code under GCC's inter-procedural
+# register allocation (a mingw Release build once crashed so): the build type decides.
+if git grep -nE '#\s*pragma\s+GCC\s+optimize' -- '*.cpp' '*.h'; then
+    echo "ci-windows: #pragma GCC optimize: leave optimisation to the build type" >&2
+    exit 1
+fi
 echo "  no call MSVC deprecates and no system header outside framework/hitbox/platform/Platform.cpp"
 
 step "3. clang + libc++: the SFML-free layers built and tested, the rest compiled"
