@@ -2,9 +2,10 @@
 // independent reference (support/GeometryReference.h; tolerance and why in
 // support/GeometryAgreement.h). The `long` label runs the same checks on 10^6 cases.
 
-// No `#pragma GCC optimize` here to speed the references up: under GCC's inter-procedural
-// register allocation it gave this file its own copy of std::mt19937's generator that broke
-// another file's code in a mingw Release build (seen with GCC 12).
+// No `#pragma GCC optimize` here to speed the references up: optimisation is the build
+// type's choice. The pragma gives this file optimised copies of inline functions that other
+// files also have (std::mt19937's generator), and the GCC manual ("Common Function
+// Attributes", optimize) says it is for debugging only, "not suitable in production code".
 
 #include "support/GeometryAgreement.h"
 
