@@ -48,8 +48,9 @@ export HITBOX_WINEPREFIX="${HITBOX_WINEPREFIX:-$PWD/$out/wine}"
 googletest=/usr/src/googletest
 
 # The test program must say every test passed: a crash or a failure is a non-zero exit.
+# (Output under wine ends its lines with CR LF, as on Windows.)
 expect_all_passed() { # log
-    grep -q "^\[  PASSED  \] [0-9]* tests\.$" "$1" && ! grep -q "^\[  FAILED  \]" "$1"
+    tr -d '\r' <"$1" | grep -q "^\[  PASSED  \] [0-9]* tests\.$" && ! grep -q "^\[  FAILED  \]" "$1"
 }
 
 step "1. mingw-w64: the SFML-free layers for Windows, Debug and Release, tests under wine"
@@ -76,7 +77,7 @@ for config in Debug Release; do
         echo "ci-windows: the SFML-free tests fail under wine ($config); see $out/wine-$config.log" >&2
         exit 1
     fi
-    echo "  $config: $(grep "^\[  PASSED  \]" "$out/wine-$config.log")"
+    echo "  $config: $(tr -d '\r' <"$out/wine-$config.log" | grep "^\[  PASSED  \]")"
 done
 # ctest runs the discovered tests through the emulator too (one process per test: a sample).
 (cd "$out/mingw" && ctest -C Release -R '^(Platform|Tunnelling)\.' --output-on-failure) \
