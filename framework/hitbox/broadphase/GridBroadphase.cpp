@@ -222,8 +222,9 @@ void GridBroadphase::testCells()
                 const Entry& b = entries[q];
                 // Each pair once: only the top-left cell two boxes share reports them.
                 const bool reportHere = isTopLeftSharedCell(a, b);
-                const bool overlap = spansOverlap(a.minX, a.maxX, b.minX, b.maxX) &
-                                     spansOverlap(a.minY, a.maxY, b.minY, b.maxY);
+                const unsigned overlap =
+                    static_cast<unsigned>(spansOverlap(a.minX, a.maxX, b.minX, b.maxX)) &
+                    static_cast<unsigned>(spansOverlap(a.minY, a.maxY, b.minY, b.maxY));
                 // Branch-free append: always write the pair, move past it only on a hit.
                 cellPairs[found] = {first, itemOf(b)};
                 found += reportHere & overlap;
@@ -241,7 +242,7 @@ void GridBroadphase::dropPairsLayersForbid()
     const std::size_t count = boxes.size();
     bool anyRules = false;
     for (std::size_t i = 0; i < count; ++i)
-        anyRules |= (boxes.mask[i] != 0xFFFFFFFF) | (boxes.layer[i] == 0);
+        anyRules = anyRules || boxes.mask[i] != 0xFFFFFFFF || boxes.layer[i] == 0;
     if (!anyRules)
         return;
     std::size_t kept = 0;
