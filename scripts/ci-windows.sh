@@ -110,7 +110,7 @@ if git grep -nE '#\s*include\s*<(unistd|dlfcn|pthread|fcntl|pwd|termios|windows|
 fi
 # A per-file optimisation pragma can break another file's code under GCC's inter-procedural
 # register allocation (a mingw Release build once crashed so): the build type decides.
-if git grep -nE '#\s*pragma\s+GCC\s+optimize' -- '*.cpp' '*.h'; then
+if git grep -nE '^\s*#\s*pragma\s+GCC\s+optimize' -- '*.cpp' '*.h'; then
     echo "ci-windows: #pragma GCC optimize: leave optimisation to the build type" >&2
     exit 1
 fi
