@@ -238,7 +238,8 @@ function(hitbox_add_course_lab lab_folder)
     endif()
     set_source_files_properties(${copied_sources} PROPERTIES COMPILE_OPTIONS "${lab_options}")
     # No hitbox_warnings(): lab code is built with the compiler's default warnings and
-    # never with -Werror, whatever HITBOX_WARNINGS_AS_ERRORS says.
+    # never with -Werror, whatever HITBOX_WARNINGS_AS_ERRORS says. Still /utf-8 and the DLLs.
+    hitbox_portable_settings(course_lab)
 
     # The course's classes in Hitbox, compiled against the lab's own GameState.h (and any
     # edited header it chose to build) in the overlay folder; a class the lab brings its own

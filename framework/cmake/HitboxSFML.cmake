@@ -33,10 +33,20 @@ else()
     endif()
     set(how "downloaded")
     include(FetchContent)
+    # As the template does: SYSTEM (CMake 3.25) so SFML's headers never warn in our code;
+    # EXCLUDE_FROM_ALL (3.28) so only the SFML libraries Hitbox links are built.
+    set(fetch_options "")
+    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.28)
+        list(APPEND fetch_options EXCLUDE_FROM_ALL)
+    endif()
+    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.25)
+        list(APPEND fetch_options SYSTEM)
+    endif()
     FetchContent_Declare(SFML
         GIT_REPOSITORY https://github.com/SFML/SFML.git
         GIT_TAG ${SFML_VERSION}
-        GIT_SHALLOW ON)
+        GIT_SHALLOW ON
+        ${fetch_options})
     set(SFML_BUILD_NETWORK OFF CACHE BOOL "" FORCE)
     if(UNIX AND NOT APPLE)
         # freetype, FLAC, Vorbis, OpenGL, X11 from the system (./scripts/install-deps.sh).
@@ -51,3 +61,15 @@ else()
     target_link_libraries(hitbox_sfml_library INTERFACE sfml-graphics sfml-audio)
 endif()
 message(STATUS "Hitbox: using ${how} SFML ${SFML_VERSION} (choose with -DHITBOX_SFML_MAJOR=2 or 3)")
+
+# SFML 2 loads OpenAL at run time: its openal32.dll ships in SFML's source tree (extlibs/bin)
+# and is copied next to every program (hitbox_copy_runtime_dlls, HitboxWarnings.cmake), the
+# way SFML's CMake template does.
+set(HITBOX_OPENAL_DLL "")
+if(WIN32 AND SFML_VERSION VERSION_LESS 3 AND DEFINED SFML_SOURCE_DIR)
+    if(CMAKE_SIZEOF_VOID_P EQUAL 8)
+        set(HITBOX_OPENAL_DLL "${SFML_SOURCE_DIR}/extlibs/bin/x64/openal32.dll")
+    else()
+        set(HITBOX_OPENAL_DLL "${SFML_SOURCE_DIR}/extlibs/bin/x86/openal32.dll")
+    endif()
+endif()

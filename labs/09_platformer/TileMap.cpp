@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 namespace
 {
@@ -150,7 +150,7 @@ TileMap TileMap::load(const std::string& path)
 
     std::ifstream file(found, std::ios::binary);
     if (!file)
-        throw fileError(found, std::string("cannot be read: ") + std::strerror(errno));
+        throw fileError(found, "cannot be read: " + std::generic_category().message(errno));
     // Read one byte past the limit: a file that grew since it was measured is still caught.
     std::string text(static_cast<std::size_t>(maxFileBytes) + 1, '\0');
     file.read(&text[0], static_cast<std::streamsize>(text.size()));

@@ -2,6 +2,7 @@
 // no half-written file under the final name, no temporary left behind.
 #include "hitbox/app/Screenshot.h"
 
+#include "hitbox/platform/Platform.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/Image.hpp>
@@ -10,28 +11,23 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
-
-#if defined(__linux__)
-#include <csignal>
-#include <sys/resource.h>
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
 
 namespace fs = std::filesystem;
 
 namespace
 {
-// A fresh empty folder for one test, named by user and process so that another user's
-// (or another run's) leftovers in the shared temporary folder never get in the way.
+// A fresh empty folder for one test, named by process and a random number so that another
+// user's (or another run's) leftovers in the shared temporary folder never get in the way.
 fs::path emptyFolder(const std::string& name)
 {
-    const fs::path folder =
-        fs::temp_directory_path() / ("hitbox-screenshot-" + std::to_string(getuid()) + "-" +
-                                     std::to_string(getpid()) + "-" + name);
+    static const unsigned runNumber = std::random_device{}();
+    const fs::path folder = fs::temp_directory_path() /
+                            ("hitbox-screenshot-" + std::to_string(hitbox::platform::processId()) +
+                             "-" + std::to_string(runNumber) + "-" + name);
     fs::remove_all(folder);
     fs::create_directories(folder);
     return folder;
@@ -89,36 +85,30 @@ TEST(Screenshot, AFolderADeviceAndAMissingFolderAreRefusedAndLeaveNothing)
     EXPECT_FALSE(noFolder);
     EXPECT_NE(noFolder.problem.find("does not exist"), std::string::npos) << noFolder.problem;
     EXPECT_FALSE(hitbox::saveImage(noisyImage(), (folder / "shot.txt").string()));
-#if defined(__linux__)
     // A pipe stands for any device: never a real one such as /dev/full, which a broken
-    // save run as root would replace.
+    // save run as root would replace. Windows has no named pipes in folders.
     const fs::path pipe = folder / "pipe.png";
-    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
-    const hitbox::SaveResult onPipe = hitbox::saveImage(noisyImage(), pipe.string());
-    EXPECT_FALSE(onPipe);
-    EXPECT_EQ(onPipe.problem, "it is not a regular file (a device or a pipe)");
-    EXPECT_EQ(fs::status(pipe).type(), fs::file_type::fifo);
-#endif
+    if (hitbox::platform::makeNamedPipe(pipe.string()))
+    {
+        const hitbox::SaveResult onPipe = hitbox::saveImage(noisyImage(), pipe.string());
+        EXPECT_FALSE(onPipe);
+        EXPECT_EQ(onPipe.problem, "it is not a regular file (a device or a pipe)");
+        EXPECT_EQ(fs::status(pipe).type(), fs::file_type::fifo);
+    }
 }
 
-#if defined(__linux__)
-// A full disk, made without root: a file-size limit makes every write past 4 KiB fail (with
-// SIGXFSZ ignored, write() returns EFBIG), as a disk with 4 KiB free would.
+// A full disk, made without root: a file-size limit makes every write past 4 KiB fail, as a
+// disk with 4 KiB free would. Skipped where there is no such limit (Windows).
 TEST(Screenshot, AFullDiskIsReportedAndTheOldFileIsKept)
 {
     const fs::path folder = emptyFolder("full");
     const std::string path = (folder / "shot.png").string();
     std::ofstream(path) << "the previous picture";
 
-    rlimit previous{};
-    getrlimit(RLIMIT_FSIZE, &previous);
-    const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);
-    rlimit small = previous;
-    small.rlim_cur = 4096;
-    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
-    const hitbox::SaveResult result = hitbox::saveImage(noisyImage(), path);
-    setrlimit(RLIMIT_FSIZE, &previous);
-    std::signal(SIGXFSZ, previousHandler);
+    hitbox::SaveResult result;
+    if (!hitbox::platform::runWithFileSizeLimit(
+            4096, [&] { result = hitbox::saveImage(noisyImage(), path); }))
+        GTEST_SKIP() << "this system cannot limit a file's size";
 
     EXPECT_FALSE(result);
     EXPECT_EQ(result.problem, "the write did not complete (is the disk full?)");
@@ -128,7 +118,6 @@ TEST(Screenshot, AFullDiskIsReportedAndTheOldFileIsKept)
     std::getline(kept, text);
     EXPECT_EQ(text, "the previous picture");
 }
-#endif
 
 TEST(Screenshot, ThreePressesInOneSecondGiveThreeFiles)
 {

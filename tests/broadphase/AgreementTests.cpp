@@ -10,12 +10,14 @@
 #include "hitbox/broadphase/Broadphase.h"
 #include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/broadphase/QuadtreeBroadphase.h"
+#include "hitbox/platform/Platform.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 using hitbox::Broadphase;
@@ -27,8 +29,9 @@ namespace
 
 std::size_t scenesPerKind()
 {
-    const char* fromEnvironment = std::getenv("HITBOX_BROADPHASE_SCENES");
-    return fromEnvironment ? std::strtoul(fromEnvironment, nullptr, 10) : 400;
+    const std::optional<std::string> fromEnvironment =
+        hitbox::platform::environmentVariable("HITBOX_BROADPHASE_SCENES");
+    return fromEnvironment ? std::strtoul(fromEnvironment->c_str(), nullptr, 10) : 400;
 }
 
 // The four methods with their defaults, plus settings that stress them: grid cells exactly

@@ -5,10 +5,11 @@
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/platform/Platform.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -131,9 +132,9 @@ TEST(Assets, AMissingAssetNamesThePathAndTheFix)
 TEST(Assets, ADamagedFontIsReportedNotCrashed)
 {
     const std::string folder = ::testing::TempDir() + "hitbox-bad-assets";
-    ASSERT_EQ(std::system(("mkdir -p '" + folder + "/fonts'").c_str()), 0);
+    std::filesystem::create_directories(folder + "/fonts");
     std::ofstream(folder + "/fonts/Broken.ttf") << "this is not a font";
-    setenv("HITBOX_ASSETS", folder.c_str(), 1);
+    ASSERT_TRUE(hitbox::platform::setEnvironmentVariable("HITBOX_ASSETS", folder));
     try
     {
         hitbox::loadFont("fonts/Broken.ttf");
@@ -143,5 +144,5 @@ TEST(Assets, ADamagedFontIsReportedNotCrashed)
     {
         EXPECT_NE(std::string(error.what()).find("Broken.ttf"), std::string::npos);
     }
-    unsetenv("HITBOX_ASSETS");
+    hitbox::platform::unsetEnvironmentVariable("HITBOX_ASSETS");
 }

@@ -2,12 +2,10 @@
 // independent reference (support/GeometryReference.h; tolerance and why in
 // support/GeometryAgreement.h). The `long` label runs the same checks on 10^6 cases.
 
-// The references are slow unoptimised (10^5 convex hulls of 64 points each), so this one file
-// is optimised even in debug builds, to keep the default run quick. The geometry code under
-// test is still built as the preset says. GCC only; clang builds it unoptimised.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC optimize("O2")
-#endif
+// No `#pragma GCC optimize` here to speed the references up: optimisation is the build
+// type's choice. The pragma gives this file optimised copies of inline functions that other
+// files also have (std::mt19937's generator), and the GCC manual ("Common Function
+// Attributes", optimize) says it is for debugging only, "not suitable in production code".
 
 #include "support/GeometryAgreement.h"
 

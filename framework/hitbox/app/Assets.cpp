@@ -1,20 +1,16 @@
 #include "hitbox/app/Assets.h"
 
 #include "hitbox/app/Options.h"
+#include "hitbox/platform/Platform.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/System/Err.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
-
-#if defined(__linux__)
-#include <climits>
-#include <unistd.h>
-#endif
 
 namespace hitbox
 {
@@ -28,30 +24,18 @@ bool fileExists(const std::string& path)
     return std::filesystem::exists(path, error);
 }
 
-std::string programFolder()
-{
-#if defined(__linux__)
-    char buffer[PATH_MAX] = {};
-    const ssize_t length = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
-    if (length > 0)
-    {
-        const std::string path(buffer, static_cast<std::size_t>(length));
-        return path.substr(0, path.find_last_of('/'));
-    }
-#endif
-    return ".";
-}
-
 std::vector<std::string> assetFolders()
 {
     std::vector<std::string> folders;
-    if (const char* fromEnvironment = std::getenv("HITBOX_ASSETS"))
-        folders.emplace_back(fromEnvironment);
+    if (const std::optional<std::string> fromEnvironment =
+            platform::environmentVariable("HITBOX_ASSETS"))
+        folders.push_back(*fromEnvironment);
 #ifdef HITBOX_SOURCE_ASSETS_DIR
     folders.emplace_back(HITBOX_SOURCE_ASSETS_DIR);
 #endif
-    folders.push_back(programFolder() + "/assets");
-    folders.push_back(programFolder() + "/../assets");
+    const std::string programFolder = platform::programFolder();
+    folders.push_back(programFolder + "/assets");
+    folders.push_back(programFolder + "/../assets");
     folders.emplace_back("assets");
     return folders;
 }

@@ -1,6 +1,7 @@
 #include "hitbox/app/Screenshot.h"
 
 #include "hitbox/app/Options.h"
+#include "hitbox/platform/Platform.h"
 
 #include <SFML/System/Err.hpp>
 
@@ -139,8 +140,8 @@ std::string freeScreenshotName(const std::string& folder, const std::string& sta
 std::string screenshotStamp()
 {
     char stamp[32] = {};
-    const std::time_t now = std::time(nullptr);
-    std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
+    const std::tm now = platform::localTime(std::time(nullptr));
+    std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", &now);
     return stamp;
 }
 

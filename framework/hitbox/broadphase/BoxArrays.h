@@ -38,11 +38,12 @@ struct BoxArrays
     // False for the NaN / infinite boxes made empty by load().
     bool isUsable(std::size_t i) const { return minX[i] <= maxX[i] && minY[i] <= maxY[i]; }
 
-    // The edge rule (spansOverlap, Shapes.h) on both axes; `&`: no branch to mispredict.
+    // The edge rule (spansOverlap, Shapes.h) on both axes; `&`: no branch to mispredict (on
+    // unsigned values: clang warns about `&` between two bools, -Wbitwise-instead-of-logical).
     bool overlap(std::size_t a, std::size_t b) const
     {
-        return spansOverlap(minX[a], maxX[a], minX[b], maxX[b]) &
-               spansOverlap(minY[a], maxY[a], minY[b], maxY[b]);
+        return (static_cast<unsigned>(spansOverlap(minX[a], maxX[a], minX[b], maxX[b])) &
+                static_cast<unsigned>(spansOverlap(minY[a], maxY[a], minY[b], maxY[b]))) != 0u;
     }
     bool allowed(std::size_t a, std::size_t b) const
     {
