@@ -291,11 +291,10 @@ TEST(Task4PushOut, EachPushIntoAnotherShapeGoesRoundAgain)
                       0.f},
                      false};
     };
-    RotatedLevel level = levelWithFrameworkSat({axisAligned(-10.f, -10.f, 10.f, 10.f),
-                                                axisAligned(-100.f, 9.77f, -11.05f, 100.f),
-                                                axisAligned(8.9f, -100.f, 100.f, -10.05f),
-                                                axisAligned(-100.f, 9.8f, -10.5f, 100.f),
-                                                axisAligned(9.f, -100.f, 100.f, 100.f)});
+    RotatedLevel level = levelWithFrameworkSat(
+        {axisAligned(-10.f, -10.f, 10.f, 10.f), axisAligned(-100.f, 9.77f, -11.05f, 100.f),
+         axisAligned(8.9f, -100.f, 100.f, -10.05f), axisAligned(-100.f, 9.8f, -10.5f, 100.f),
+         axisAligned(9.f, -100.f, 100.f, 100.f)});
     ASSERT_TRUE(level.isOverlapping(0));
     Input input;
     input.setKeyDown(sf::Keyboard::Key::Space);
