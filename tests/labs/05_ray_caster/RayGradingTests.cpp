@@ -78,12 +78,13 @@ TEST(Task1NearestRayHit, RayThatMissesEverythingReachesTheMouse)
 
 TEST(Task1NearestRayHit, TheLevelCastsFromThePlayerToTheMouseEveryStep)
 {
-    // Player 32 x 32 at (100, 184): its centre is (116, 200).
-    RayLevel level({{700.f, 100.f, 50.f, 200.f}, {400.f, 150.f, 50.f, 100.f}}, {100.f, 184.f});
+    // Player 32 x 32 at (0, 0): its centre is (16, 16). Standing still at the origin, so the
+    // step's move (task 2) cannot take it anywhere, even one that adds where it stands.
+    RayLevel level({{700.f, 0.f, 50.f, 200.f}, {400.f, 0.f, 50.f, 100.f}}, {0.f, 0.f});
     level.setMoveDirection({0.f, 0.f});
-    runWithMouse(level, {1000.f, 200.f}, 1);
+    runWithMouse(level, {1000.f, 16.f}, 1);
     ASSERT_TRUE(level.getRay().hit);
-    EXPECT_EQ(level.getRay().start, hitbox::Vec2(116.f, 200.f));
+    EXPECT_EQ(level.getRay().start, hitbox::Vec2(16.f, 16.f));
     EXPECT_NEAR(level.getRay().end.x, 400.f, 0.01f);
 }
 

@@ -278,3 +278,29 @@ TEST(Task4PushOut, ADraggedShapeIsPushedOutOfWhatItWasDroppedOn)
     stepWith(level, input);
     expectPushedOut(level);
 }
+
+TEST(Task4PushOut, EachPushIntoAnotherShapeGoesRoundAgain)
+{
+    // A staircase: out of shape 4 (left), into shape 3 (up), into shape 2 (left), into
+    // shape 1 (up). Each push lands in a shape the round has already passed, so it takes
+    // four rounds, and after the last the held shape touches but overlaps nothing.
+    const auto axisAligned = [](float left, float top, float right, float bottom)
+    {
+        return Shape{{{(left + right) / 2.f, (top + bottom) / 2.f},
+                      {(right - left) / 2.f, (bottom - top) / 2.f},
+                      0.f},
+                     false};
+    };
+    RotatedLevel level = levelWithFrameworkSat(
+        {axisAligned(-10.f, -10.f, 10.f, 10.f), axisAligned(-100.f, 9.77f, -11.05f, 100.f),
+         axisAligned(8.9f, -100.f, 100.f, -10.05f), axisAligned(-100.f, 9.8f, -10.5f, 100.f),
+         axisAligned(9.f, -100.f, 100.f, 100.f)});
+    ASSERT_TRUE(level.isOverlapping(0));
+    Input input;
+    input.setKeyDown(sf::Keyboard::Key::Space);
+    stepWith(level, input);
+    expectPushedOut(level);
+    const hitbox::Vec2 center = level.getShapes()[0].body.center;
+    EXPECT_NEAR(center.x, -1.1f, 1e-3f);
+    EXPECT_NEAR(center.y, -0.23f, 1e-3f);
+}

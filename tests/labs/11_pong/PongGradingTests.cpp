@@ -701,3 +701,40 @@ TEST(Task6ComputerOpponent, WhenTheBallGoesAwayItGoesBackToTheMiddle)
             << " the middle with the ball going away: it should head back to the middle";
     }
 }
+
+TEST(Task6ComputerOpponent, ASlowBallComingTowardsItIsFollowed)
+{
+    // Half a pixel a second towards the paddle is still coming: head for its height.
+    Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
+    paddle.setPosition({paddle.getPosition().x, courtMiddleY});
+    Ball ball;
+    ball.placeAt({paddle.getPosition().x - 400.f, courtMiddleY + 100.f}, {0.5f, 0.f});
+    EXPECT_GT(computerDirection(ball, paddle, dt), 0.f) << "the ball is below and coming";
+}
+
+TEST(Task6ComputerOpponent, ABallLevelWithItOrNotMovingSidewaysIsNotComing)
+{
+    // The sheet's rule: such a ball is not coming, so the paddle goes back to the middle
+    // (here up), not after the ball (here down).
+    Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
+    paddle.setPosition({paddle.getPosition().x, courtMiddleY + 100.f});
+    Ball straightDown;
+    straightDown.placeAt({paddle.getPosition().x - 400.f, courtMiddleY + 150.f}, {0.f, 300.f});
+    EXPECT_LT(computerDirection(straightDown, paddle, dt), 0.f) << "no sideways speed";
+    Ball level;
+    level.placeAt({paddle.getPosition().x, courtMiddleY + 150.f}, {ballSpeed, 0.f});
+    EXPECT_LT(computerDirection(level, paddle, dt), 0.f) << "level with the paddle";
+}
+
+TEST(Task6ComputerOpponent, WhenNoTimePassesItStandsStill)
+{
+    // dt == 0: nothing to divide by, so the sheet says 0 - also when the ball is level.
+    Paddle paddle(court.right - paddleInset - paddleWidth / 2.f);
+    for (const float below : {100.f, 0.f})
+    {
+        Ball ball;
+        ball.placeAt({paddle.getPosition().x - 400.f, paddle.getPosition().y + below},
+                     {ballSpeed, 0.f});
+        EXPECT_EQ(computerDirection(ball, paddle, 0.f), 0.f) << "ball " << below << " px below";
+    }
+}
