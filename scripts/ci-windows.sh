@@ -92,7 +92,7 @@ sfml=/var/cache/hitbox/sid-root/usr/include/SFML
 mkdir -p "$out/sfml" && ln -sfn "$sfml" "$out/sfml/SFML"
 label="SFML $(sed -n 's/^#define SFML_VERSION_MAJOR *\([0-9]*\).*/\1/p' "$sfml/Config.hpp")"
 python3 scripts/compile-check.py mingw "$linux_build" "$PWD/$out/sfml" \
-    "$googletest/googletest/include" --skip "$out/mingw" | sed "s|^|  $label: |"
+    "$googletest/googletest/include" "$googletest/googlemock/include" --skip "$out/mingw" | sed "s|^|  $label: |"
 # mingw marks fewer calls deprecated than MSVC does (localtime, gmtime, ctime...): name them.
 # Only framework/hitbox/platform/Platform.cpp may call them, or a POSIX environment call.
 crt='(localtime|gmtime|ctime|asctime|strerror|getenv|strtok|v?sprintf|v?sscanf|v?fscanf|scanf'

@@ -3,10 +3,10 @@
 with another compiler and warnings as errors wherever the build has them, so code that only
 one compiler accepts fails CI.
 
-  compile-check.py mingw  BUILD_DIR SFML_INCLUDE GTEST_INCLUDE
+  compile-check.py mingw  BUILD_DIR SFML_INCLUDE GTEST_INCLUDE [MORE_INCLUDES...]
       For 64-bit Windows with Debian's mingw-w64, with mingw's copy of Microsoft's C runtime
       deprecations switched on (-D__MINGW_MSVC_COMPAT_WARNINGS: getenv, localtime, strerror,
-      getpid... warn where MSVC's C4996 would), against SFML's and GoogleTest's headers (they
+      getpid... warn where MSVC's C4996 would), against SFML's, GoogleTest's and GoogleMock's headers (they
       are the same on every platform). A POSIX-only call does not compile: its header is not
       there. mingw's own deprecation of ::hypot (MSVC's is fine) is the one warning let through.
   compile-check.py libc++ BUILD_DIR
@@ -99,9 +99,9 @@ def main():
             return 2
     sys.argv = arguments
     if len(sys.argv) < 3 or sys.argv[1] not in ("mingw", "libc++") or \
-            (sys.argv[1] == "mingw" and len(sys.argv) != 5):
+            (sys.argv[1] == "mingw" and len(sys.argv) < 5):
         print(__doc__.strip().splitlines()[0], file=sys.stderr)
-        print("usage: compile-check.py mingw BUILD_DIR SFML_INCLUDE GTEST_INCLUDE | "
+        print("usage: compile-check.py mingw BUILD_DIR SFML_INCLUDE GTEST_INCLUDE [MORE...] | "
               "compile-check.py libc++ BUILD_DIR", file=sys.stderr)
         return 2
     kind, build = sys.argv[1], sys.argv[2]

@@ -4,12 +4,13 @@
 // sound device and the user has not chosen an OpenAL driver, this picks OpenAL Soft's
 // "null" driver (sounds play silently, in time) and says so in one line.
 //
-// Linux only: Windows and macOS always have an audio service for OpenAL to talk to. This is
-// the course lab's one POSIX call (setenv), guarded here. SFML 3 labs need nothing: its
+// Linux only: Windows and macOS always have an audio service for OpenAL to talk to. The
+// environment is read and set through Hitbox's platform file. SFML 3 labs need nothing: its
 // miniaudio backend says once that it found no device.
 #if defined(__linux__)
 
-#include <cstdlib>
+#include "hitbox/platform/Platform.h"
+
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -26,11 +27,11 @@ bool soundDeviceFound()
     for (const auto& entry : std::filesystem::directory_iterator("/dev/snd", error))
         if (entry.path().filename().string().rfind("pcm", 0) == 0)
             return true;
-    if (std::getenv("PULSE_SERVER") != nullptr)
+    if (hitbox::platform::environmentVariable("PULSE_SERVER"))
         return true;
-    if (const char* runtime = std::getenv("XDG_RUNTIME_DIR"))
+    if (const auto runtime = hitbox::platform::environmentVariable("XDG_RUNTIME_DIR"))
     {
-        const std::filesystem::path folder(runtime);
+        const std::filesystem::path folder(*runtime);
         return std::filesystem::exists(folder / "pulse" / "native", error) ||
                std::filesystem::exists(folder / "pipewire-0", error);
     }
@@ -39,9 +40,9 @@ bool soundDeviceFound()
 
 bool silenceAudioWithoutDevice()
 {
-    if (std::getenv("ALSOFT_DRIVERS") != nullptr || soundDeviceFound())
+    if (hitbox::platform::environmentVariable("ALSOFT_DRIVERS") || soundDeviceFound())
         return false;
-    setenv("ALSOFT_DRIVERS", "null", 0);
+    hitbox::platform::setEnvironmentVariable("ALSOFT_DRIVERS", "null");
     std::cerr << "Hitbox: no sound device found; sounds play silently\n";
     return true;
 }

@@ -4,8 +4,8 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/broadphase/GridBroadphase.h"
-#include "hitbox/broadphase/ThreadCpuTime.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/platform/Platform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -343,13 +343,13 @@ void ManyObjectsLevel::recordStepTime(double cpuSeconds)
     sample.broadphase = broadphase->lastSeconds();
     if (printTimingSeconds > 0.f)
     {
-        const double begin = hitbox::threadCpuSeconds();
+        const double begin = hitbox::platform::threadCpuSeconds();
         std::size_t touching = 0;
         for (const hitbox::Pair& pair : candidatePairs)
             touching += hitbox::circleVsCircleContact(balls[pair.first].circle(),
                                                       balls[pair.second].circle())
                             .hit;
-        sample.exactTests = hitbox::threadCpuSeconds() - begin;
+        sample.exactTests = hitbox::platform::threadCpuSeconds() - begin;
         replayedContacts = touching; // kept, so the compiler cannot drop the loop
     }
     stepTiming.add(sample);
@@ -394,9 +394,10 @@ void ManyObjectsLevel::update(float dt)
     }
     // CPU time, so the figure does not depend on what else the machine runs; a second grid
     // thread's time beyond this one's is added (TimedBroadphase).
-    const double begin = hitbox::threadCpuSeconds();
+    const double begin = hitbox::platform::threadCpuSeconds();
     findPairsAndRespond();
-    recordStepTime(hitbox::threadCpuSeconds() - begin + broadphase->lastWorkerExtraSeconds());
+    recordStepTime(hitbox::platform::threadCpuSeconds() - begin +
+                   broadphase->lastWorkerExtraSeconds());
     // collisionMilliseconds is averaged over about 30 steps so the readout is steady enough.
     stoppedAsTooSlow = stopWhenTooSlow && collisionMilliseconds > slowStepMilliseconds;
 }

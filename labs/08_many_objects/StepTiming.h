@@ -2,7 +2,7 @@
 // shows: median, p99 and max over the steps since the last line, how many steps went over
 // the budget of one step (8.33 ms at 120 steps a second), and where the time went.
 // CPU time, not wall-clock time: it does not grow when other programs share the cores, so a
-// student reads the same figures on a busy machine (hitbox::threadCpuSeconds, the one
+// student reads the same figures on a busy machine (hitbox::platform::threadCpuSeconds, the one
 // platform-specific clock). Plain data: no SFML, no clock of its own.
 #pragma once
 

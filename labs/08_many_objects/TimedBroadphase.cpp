@@ -1,7 +1,7 @@
 #include "TimedBroadphase.h"
 
 #include "hitbox/broadphase/GridBroadphase.h"
-#include "hitbox/broadphase/ThreadCpuTime.h"
+#include "hitbox/platform/Platform.h"
 
 #include <utility>
 
@@ -13,9 +13,9 @@ TimedBroadphase::TimedBroadphase(std::unique_ptr<hitbox::Broadphase> measured)
 void TimedBroadphase::findPairs(const std::vector<hitbox::BroadphaseItem>& items,
                                 std::vector<hitbox::Pair>& pairs)
 {
-    const double begin = hitbox::threadCpuSeconds();
+    const double begin = hitbox::platform::threadCpuSeconds();
     inner->findPairs(items, pairs);
     const auto* grid = dynamic_cast<const hitbox::GridBroadphase*>(inner.get());
     workerExtra = grid != nullptr ? grid->lastWorkerExtraSeconds() : 0.0;
-    seconds = hitbox::threadCpuSeconds() - begin + workerExtra;
+    seconds = hitbox::platform::threadCpuSeconds() - begin + workerExtra;
 }

@@ -14,8 +14,8 @@
 #include "hitbox/broadphase/GridBroadphase.h"
 
 #include "hitbox/broadphase/BoxArrays.h"
-#include "hitbox/broadphase/ThreadCpuTime.h"
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/platform/Platform.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,9 +87,9 @@ double runHalves(bool twoThreads, Work work)
         worker = std::thread(
             [&work, &workerSeconds]
             {
-                const double begin = threadCpuSeconds();
+                const double begin = platform::threadCpuSeconds();
                 work(1);
-                workerSeconds = threadCpuSeconds() - begin;
+                workerSeconds = platform::threadCpuSeconds() - begin;
             });
     }
     catch (const std::system_error&)
@@ -98,9 +98,9 @@ double runHalves(bool twoThreads, Work work)
         work(1);
         return 0.0;
     }
-    const double begin = threadCpuSeconds();
+    const double begin = platform::threadCpuSeconds();
     work(0);
-    const double ownSeconds = threadCpuSeconds() - begin;
+    const double ownSeconds = platform::threadCpuSeconds() - begin;
     worker.join();
     return std::max(0.0, workerSeconds - ownSeconds);
 }

@@ -3,6 +3,7 @@
 #include "hitbox/platform/Platform.h"
 
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 
 #if defined(_WIN32)
@@ -20,6 +21,7 @@
 #include <dlfcn.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <time.h> // clock_gettime, CLOCK_THREAD_CPUTIME_ID
 #include <unistd.h>
 #endif
 
@@ -191,6 +193,36 @@ void* findSymbol(const std::shared_ptr<void>& library, const std::string& symbol
     return nullptr;
 #else
     return library == nullptr ? nullptr : dlsym(library.get(), symbol.c_str());
+#endif
+}
+
+double threadCpuSeconds()
+{
+#if defined(_WIN32)
+    FILETIME created, exited, kernel, user;
+    if (GetThreadTimes(GetCurrentThread(), &created, &exited, &kernel, &user))
+    {
+        // FILETIME counts 100-nanosecond units in two 32-bit halves.
+        auto ticks = [](const FILETIME& time) {
+            return (static_cast<unsigned long long>(time.dwHighDateTime) << 32) |
+                   time.dwLowDateTime;
+        };
+        return static_cast<double>(ticks(kernel) + ticks(user)) * 1e-7;
+    }
+#elif defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec now{};
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now) == 0)
+        return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+#endif
+    return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
+
+bool threadCpuTimeIsPerThread()
+{
+#if defined(_WIN32) || defined(CLOCK_THREAD_CPUTIME_ID)
+    return true;
+#else
+    return false;
 #endif
 }
 

@@ -50,4 +50,15 @@ bool makeNamedPipe(const std::string& path);
 // instead of stopping the process): false, and `work` not run, where there is no such limit.
 bool runWithFileSizeLimit(std::uintmax_t bytes, const std::function<void()>& work);
 
+// Seconds of CPU time the calling thread has used so far; only differences mean anything: the
+// clock that says what a piece of work costs whatever else the machine runs (wall-clock time
+// also counts the time other programs had the core). Linux/macOS:
+// clock_gettime(CLOCK_THREAD_CPUTIME_ID), nanoseconds. Windows: GetThreadTimes, which counts
+// whole scheduler ticks (about 15.6 ms), so there only averages over many steps mean much.
+// Elsewhere: std::clock(), the whole process's CPU time; threadCpuTimeIsPerThread() says which.
+[[nodiscard]] double threadCpuSeconds();
+
+// True when threadCpuSeconds() counts only the calling thread (false: the std::clock fallback).
+[[nodiscard]] bool threadCpuTimeIsPerThread();
+
 } // namespace hitbox::platform
