@@ -34,7 +34,7 @@ packages=(g++-mingw-w64-x86-64-posix mingw-w64-x86-64-dev wine wine64 ninja-buil
           clang libc++-dev libc++abi-dev)
 missing=()
 for package in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
+    [[ $(dpkg-query -W -f='${Status}' "$package" 2>/dev/null) == *"install ok installed"* ]] ||
         missing+=("$package")
 done
 if [[ ${#missing[@]} -gt 0 ]]; then
@@ -50,7 +50,7 @@ googletest=/usr/src/googletest
 # The test program must say every test passed: a crash or a failure is a non-zero exit.
 # (Output under wine ends its lines with CR LF, as on Windows.)
 expect_all_passed() { # log
-    tr -d '\r' <"$1" | grep -q "^\[  PASSED  \] [0-9]* tests\.$" && ! grep -q "^\[  FAILED  \]" "$1"
+    grep -qE $'^\\[  PASSED  \\] [0-9]+ tests\\.\r?$' "$1" && ! grep -q "^\[  FAILED  \]" "$1"
 }
 
 step "1. mingw-w64: the SFML-free layers for Windows, Debug and Release, tests under wine"
@@ -70,7 +70,7 @@ WINEPREFIX="$HITBOX_WINEPREFIX" wineserver -w
 for config in Debug Release; do
     cmake --build "$out/mingw" --config "$config" -j2 >>"$out/mingw.log"
     program="$out/mingw/tests/$config/hitbox_core_tests.exe"
-    file "$program" | grep -q "PE32+ executable" # a Windows program, not a Linux one
+    [[ $(file "$program") == *"PE32+ executable"* ]] # a Windows program, not a Linux one
     if ! scripts/wine-run.sh "$program" >"$out/wine-$config.log" 2>&1 || \
         ! expect_all_passed "$out/wine-$config.log"; then
         tail -n 30 "$out/wine-$config.log" >&2
@@ -117,7 +117,7 @@ fi
 echo "  no call MSVC deprecates and no system header outside framework/hitbox/platform/Platform.cpp"
 
 step "3. clang + libc++: the SFML-free layers built and tested, the rest compiled"
-CXX=clang++ CXXFLAGS="-stdlib=libc++" LDFLAGS="-stdlib=libc++" \
+CC=clang CXX=clang++ CXXFLAGS="-stdlib=libc++" LDFLAGS="-stdlib=libc++" \
     cmake -S . -B "$out/libcxx" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DHITBOX_WITH_SFML=OFF \
     -DHITBOX_WARNINGS_AS_ERRORS=ON -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON \
     "-DFETCHCONTENT_SOURCE_DIR_GOOGLETEST=$googletest" >"$out/libcxx.log"
