@@ -77,9 +77,10 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
     MoveResult result{normalised(box), velocity, {}};
     if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
         return result;
-    Vec2 stepVelocity = velocity;    // used for this step's move
-    float stepLeft = 1.f;            // the fraction of the step not yet moved
-    std::vector<Candidate> resolved; // for the rounding clean-up at the end
+    Vec2 stepVelocity = velocity;            // used for this step's move
+    float stepLeft = 1.f;                    // the fraction of the step not yet moved
+    std::vector<Candidate> resolved;         // for the rounding clean-up at the end
+    std::vector<Box> placements{result.box}; // where the box has been: the fallback at the end
     for (int round = 0; round < maxRounds; ++round)
     {
         // 1. Which solids would this move hit, and when?
@@ -116,6 +117,7 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
             if (!hit.hit)
                 continue; // an earlier slide already took this one away
             result.box = placedAgainst(movedBy(result.box, move * hit.time), solid, hit.normal);
+            placements.push_back(result.box);
             stepLeft *= 1.f - hit.time;
             stepVelocity = withoutPartInto(stepVelocity, hit.normal);
             result.velocity = withoutPartInto(result.velocity, hit.normal);
@@ -124,7 +126,31 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
         }
         // [/slide]
     }
-    result.box = movedBy(result.box, stepVelocity * (dt * stepLeft));
+    // What is left of the step after the last round: stop at the first solid it would meet
+    // (more surfaces than rounds, e.g. a box wedged between three tiles and a fourth), so the
+    // box never ends inside one it was not swept against.
+    const Vec2 rest = stepVelocity * (dt * stepLeft);
+    Hit first;
+    std::size_t firstSolid = solids.size();
+    for (std::size_t i = 0; i < solids.size(); ++i)
+    {
+        const Hit hit = sweepBoxVsBox(result.box, rest, normalised(solids[i]));
+        if (hit.hit && (!first.hit || hit.time < first.time))
+        {
+            first = hit;
+            firstSolid = i;
+        }
+    }
+    if (first.hit)
+    {
+        const Box solid = normalised(solids[firstSolid]);
+        result.box = placedAgainst(movedBy(result.box, rest * first.time), solid, first.normal);
+        result.velocity = withoutPartInto(result.velocity, first.normal);
+        result.hits.push_back(first);
+        resolved.push_back({firstSolid, first.time, 0.f});
+    }
+    else
+        result.box = movedBy(result.box, rest);
     // Float rounding can leave the box a hair inside a surface it slid to; put it exactly
     // against that surface, so that touching stays touching (the edge rule).
     for (std::size_t i = 0; i < resolved.size(); ++i)
@@ -133,6 +159,22 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
         if (boxVsBox(result.box, solid))
             result.box = placedAgainst(result.box, solid, result.hits[i].normal);
     }
+    // A gap narrower than the box (two solids pushing it back and forth): no place on the path
+    // is against both, so the box stops at the last place it reached that overlaps nothing.
+    const auto overlapsASolid = [&solids](const Box& where)
+    {
+        return std::any_of(solids.begin(), solids.end(),
+                           [&where](const Box& solid)
+                           { return boxVsBox(where, normalised(solid)); });
+    };
+    if (overlapsASolid(result.box))
+        for (auto place = placements.rbegin(); place != placements.rend(); ++place)
+            if (!overlapsASolid(*place))
+            {
+                result.box = *place;
+                result.velocity = {0.f, 0.f};
+                break;
+            }
     return result;
 }
 

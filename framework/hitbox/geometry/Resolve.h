@@ -25,7 +25,9 @@ struct MoveResult
 // rounds, so an inside corner stops both ways. Equal times: the hit touching more face first,
 // so a box over a tile seam rests on the tile under it. sortByTime = false resolves in storage
 // order instead, to show the box snagging on the seams. Ends touching, never inside (touching
-// is no collision, so resting on a floor does not stop a slide). A box starting inside a solid
+// is no collision, so resting on a floor does not stop a slide). Wedged in a gap narrower than
+// itself, the box stops (velocity 0) at the last place on its path that touched nothing more
+// than an edge. A box starting inside a solid
 // is pushed out first (boxVsBoxContact). dt <= 0, NaN or infinite input: no move.
 MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids,
                            bool sortByTime = true);
