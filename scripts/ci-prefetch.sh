@@ -15,7 +15,9 @@ packages=(
     clang-14 libclang-rt-14-dev ffmpeg xdotool            # 11b: fuzzers; 8 and 10: videos, a held mouse
 )
 # These the slide scripts install with apt's recommended packages: prefetch them the same way.
-with_recommends=(nodejs npm emscripten chromium)
+# (Node.js and npm: slides/build.sh installs them only where `npm` is missing; this machine's
+# Node.js may bring its own npm, which Debian's npm package conflicts with.)
+with_recommends=(emscripten chromium)
 status=0
 missing() {
     local package
