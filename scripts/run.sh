@@ -14,15 +14,18 @@ if [[ $# -gt 0 && $1 != --* ]]; then
     shift
 fi
 build=${HITBOX_RUN_BUILD_DIR:-build/release}
+config=() # a multi-config generator (CMAKE_GENERATOR=Ninja Multi-Config) builds Release here
 if [[ -z ${HITBOX_RUN_BUILD_DIR:-} ]]; then
     cmake --preset release >/dev/null
+    config=(--config Release)
 fi
-programs=$(cmake --build "$build" --target help | sed -n 's/^\.\.\. \(pong\|sandbox\|lab[0-9][0-9]_[a-z_]*\)$/\1/p' | grep -vE "_(level|tests)$" | sort -u)
-if ! grep -qx -- "$program" <<<"$programs"; then
-    echo "run.sh: no program called '$program'. The programs are:" $programs >&2
+# The programs: Pong, the sandbox and every lab (the lab list's one home is scripts/lab.py).
+mapfile -t programs < <(echo pong; echo sandbox; python3 scripts/lab.py labs)
+if ! grep -qx -- "$program" < <(printf '%s\n' "${programs[@]}"); then
+    echo "run.sh: no program called '$program'. The programs are: ${programs[*]}" >&2
     exit 2
 fi
-cmake --build "$build" --target "$program" >/dev/null
+cmake --build "$build" --target "$program" "${config[@]}" >/dev/null
 binary=$(find "$build" -type f -name "$program" -perm -u+x | head -n 1)
 if [[ -z ${DISPLAY:-} && " $* " != *" --headless "* && " $* " != *" --screenshot "* ]]; then
     if ! command -v xvfb-run >/dev/null; then
