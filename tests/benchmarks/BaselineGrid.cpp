@@ -80,7 +80,6 @@ void BaselineGrid::chooseGrid()
     // Cells are found by multiplying by 1 / cell size. For cells below about 1e-38 that is
     // infinity in float, and 0 * infinity is NaN, which has no cell: never go that small.
     cell = std::max(cell, kSmallestCellSize);
-    // [slide:grid-size]
     // Never more than a few cells per box: a lone box far away (or a tiny cell size) would
     // otherwise make a grid of mostly empty cells. Grow the cells instead.
     const double maxCells = kMaxCellsPerItem * double(count) + 16.0;
@@ -92,7 +91,6 @@ void BaselineGrid::chooseGrid()
         cellsX = std::max(1.0, std::ceil(width / cell));
         cellsY = std::max(1.0, std::ceil(height / cell));
     }
-    // [/slide]
     columns = static_cast<int>(std::min(cellsX, maxCells));
     rows = static_cast<int>(std::min(cellsY, std::floor(maxCells / columns) + 1.0));
     usedCellSize = static_cast<float>(std::min(cell, double(largest)));
@@ -105,7 +103,6 @@ void BaselineGrid::assignCells()
     const float scale = 1.f / usedCellSize;
     const float lastColumn = static_cast<float>(columns - 1);
     const float lastRow = static_cast<float>(rows - 1);
-    // [slide:grid-cells]
     // Which cells does a box cover? Divide by the cell size and round down. Clamping to the
     // grid keeps the answer monotonic (a box further right never gets a smaller column), so
     // two overlapping boxes always share a cell, even boxes outside the grid.
@@ -113,7 +110,6 @@ void BaselineGrid::assignCells()
     { return static_cast<int>(std::clamp((x - originX) * scale, 0.f, lastColumn)); };
     auto row = [&](float y)
     { return static_cast<int>(std::clamp((y - originY) * scale, 0.f, lastRow)); };
-    // [/slide]
     for (std::size_t i = 0; i < count; ++i)
     {
         if (!boxes.isUsable(i))
@@ -169,7 +165,6 @@ void BaselineGrid::listCells()
     const float* maxX = boxes.maxX.data();
     const float* minY = boxes.minY.data();
     const float* maxY = boxes.maxY.data();
-    // [slide:grid-insert]
     // A counting sort: count each cell's boxes, add up the counts so each cell knows where
     // its boxes end, then drop each box in from the end back. No hashing and no list per
     // cell: one array holds every cell's boxes back to back, reused every frame.
@@ -181,7 +176,6 @@ void BaselineGrid::listCells()
                     { start[cell] += covered; });
     for (std::size_t c = 1; c <= cellCount; ++c)
         start[c] += start[c - 1]; // now start[c] = end of cell c
-    // [/slide]
     // The spare entry: one more at the end, written by the calls with covered = 0, so that
     // they need no branch either.
     const std::uint32_t spare = cellStart[cellCount];
@@ -218,7 +212,6 @@ void BaselineGrid::testCells()
         if (end - begin < 2)
             continue; // most cells: nothing to test, and no hashing to find that out
         tested += std::size_t(end - begin) * (end - begin - 1) / 2;
-        // [slide:grid-test]
         for (std::uint32_t p = begin; p < end; ++p)
         {
             const Entry a = entries[p];
@@ -238,7 +231,6 @@ void BaselineGrid::testCells()
                 found += reportHere & overlap;
             }
         }
-        // [/slide]
     }
     cellPairCount = found;
     lastStats.pairsTested = tested;
