@@ -275,6 +275,7 @@ function(hitbox_add_course_lab lab_folder)
         add_library(hitbox_course_silent_audio OBJECT
             "${PROJECT_SOURCE_DIR}/framework/compat/SilentAudio.cpp")
         hitbox_warnings(hitbox_course_silent_audio)
+        target_link_libraries(hitbox_course_silent_audio PRIVATE hitbox_platform)
         target_link_libraries(course_lab PRIVATE hitbox_course_silent_audio)
     endif()
     target_include_directories(${library} BEFORE PUBLIC "${COURSE_LAB_OVERLAY}" "${compat_folder}")
