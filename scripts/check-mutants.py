@@ -15,6 +15,11 @@ are compiled and graded one by one:
     COLLATERAL when a test of another task fails (one mistake must cost one task). A mutant
     that does not compile or link is not counted.
 
+Wrong answers students really write (from the issues and the sheets) are listed in
+tests/labs/wrong-answers.txt and tried as mutants of kind "sheet" in every run, sampled or not;
+each must be killed by its own task's tests (a survivor fails the check even if listed as
+equivalent).
+
 Survivors that behave exactly like the solution are listed, with the reason, in
 tests/labs/equivalent-mutants.txt (CSV: file,task,original,mutated,occurrence,reason; keyed by
 the text of the change, not its line, so edits elsewhere do not unlist them).
@@ -30,6 +35,7 @@ Writes DIR/mutants.csv (one row per mutant), DIR/tasks.csv and DIR/tasks.json (p
 """
 import argparse
 import csv
+import io
 import json
 import os
 import random
@@ -47,10 +53,12 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
 from labtool.markers import SOURCE_SUFFIXES, MarkerError, task_of_test, task_regions  # noqa: E402
-from labtool.mutate import mutants_of_region  # noqa: E402
+from labtool.mutate import Mutant, mutants_of_region  # noqa: E402
 
 EQUIVALENTS = ROOT / "tests/labs/equivalent-mutants.txt"
 EQUIVALENT_FIELDS = ["file", "task", "original", "mutated", "occurrence", "reason"]
+WRONG_ANSWERS = ROOT / "tests/labs/wrong-answers.txt"
+WRONG_ANSWER_FIELDS = ["file", "task", "original", "mutated", "answer"]
 LAB_CALL = re.compile(r"^\s*hitbox_add_lab\(\s*([A-Za-z0-9_]+)", re.MULTILINE)
 
 
@@ -121,6 +129,38 @@ def read_equivalents(path):
         key = (row["file"], int(row["task"]), row["original"], row["mutated"], int(row["occurrence"]))
         listed[key] = row["reason"].strip()
     return listed
+
+
+def read_wrong_answers(path):
+    """[(file, task, original lines, mutated lines, answer)]; '#' lines before the header are comments."""
+    path = Path(path)
+    if not path.exists():
+        return []
+    text = path.read_text(encoding="utf-8")
+    body = "".join(line for line in text.splitlines(True) if not line.startswith("#"))
+    answers = []
+    for number, row in enumerate(csv.DictReader(io.StringIO(body)), start=1):
+        if set(row) != set(WRONG_ANSWER_FIELDS) or not (row.get("answer") or "").strip():
+            raise Refusal(f"{path}: entry {number} needs the columns {','.join(WRONG_ANSWER_FIELDS)} and an answer")
+        original = [line.strip() for line in row["original"].splitlines()]
+        mutated = [line.strip() for line in row["mutated"].splitlines()]
+        answers.append((row["file"], int(row["task"]), original, mutated, row["answer"].strip()))
+    return answers
+
+
+def wrong_answer_mutant(relative, region, lines, original, mutated, answer):
+    """The mutant that writes `mutated` in place of the consecutive solution lines `original`."""
+    texts = [text.strip() for _, text in region.solution_lines]
+    for at in range(len(texts) - len(original) + 1):
+        if texts[at:at + len(original)] == original:
+            first = region.solution_lines[at][0]
+            indent = lines[first - 1][:len(lines[first - 1]) - len(lines[first - 1].lstrip())]
+            changed = lines[:first - 1] + [indent + line for line in mutated or [""]] + \
+                lines[first - 1 + len(original):]
+            return Mutant(relative, region.task, first, "sheet", "\n".join(original), "\n".join(mutated),
+                          text="\n".join(changed) + "\n")
+    raise Refusal(f"{WRONG_ANSWERS.name}: '{answer}': {relative} task {region.task} has no lines "
+                  f"{' / '.join(original)!r} (update the list)")
 
 
 def compile_entry(commands, source, lab):
@@ -238,9 +278,10 @@ def grade_mutant(rig, mutant, entry, stripped_archive, scratch_root):
         shutil.rmtree(scratch, ignore_errors=True)
 
 
-def lab_mutants(folder, args):
-    """{(file, task): [mutants]} for every task block of the lab's sources."""
-    found = {}
+def lab_mutants(folder, args, answers=()):
+    """{(file, task): [mutants]} for every task block of the lab's sources, with the listed
+    wrong answers of its tasks (always tried; a generated mutant that is one becomes "sheet")."""
+    found, sheet = {}, {}
     for source in sorted((ROOT / "labs" / folder).rglob("*")):
         if source.suffix not in SOURCE_SUFFIXES:
             continue
@@ -255,11 +296,24 @@ def lab_mutants(folder, args):
         for region in regions:
             mutants = mutants_of_region(source, relative, region, lines)
             found.setdefault((relative, region.task), []).extend(mutants)
-    return {key: choose(mutants, args, *key) for key, mutants in found.items()}
+            sheet.setdefault((relative, region.task), []).extend(
+                wrong_answer_mutant(relative, region, lines, *answer[2:])
+                for answer in answers if (answer[0], answer[1]) == (relative, region.task))
+    chosen = {}
+    for key, mutants in found.items():
+        answers_here = sheet.get(key, [])
+        texts = {m.text for m in answers_here}
+        picked = [m for m in choose([m for m in mutants if m.text not in texts], args, *key)]
+        chosen[key] = picked + answers_here
+    for (file, _), mutants in sheet.items():
+        for mutant in mutants:
+            if (file, mutant.task) not in found:
+                raise Refusal(f"{WRONG_ANSWERS.name}: {file} has no task {mutant.task}")
+    return chosen
 
 
-def check_lab(build, folder, lab, args, commands, equivalents, scratch_root, rows):
-    by_task = lab_mutants(folder, args)
+def check_lab(build, folder, lab, args, commands, equivalents, scratch_root, rows, answers=()):
+    by_task = lab_mutants(folder, args, answers)
     if args.list:
         for (file, task), mutants in by_task.items():
             for m in mutants:
@@ -285,7 +339,7 @@ def check_lab(build, folder, lab, args, commands, equivalents, scratch_root, row
         futures = [pool.submit(grade_mutant, rig, m, entry, copy, scratch_root) for m, entry, copy in jobs]
         for (mutant, _, _), future in zip(jobs, futures):
             outcome, failed = future.result()
-            reason = equivalents.get(mutant.key())
+            reason = equivalents.get(mutant.key()) if mutant.kind != "sheet" else None
             if outcome == "survived" and reason:
                 outcome = "equivalent"
             # A test of no task (a Level or helper suite) costs no task's mark: not collateral.
@@ -349,6 +403,7 @@ def main(argv):
                           "(run: cmake --preset debug)")
         labs = chosen_labs(args.labs)
         equivalents = read_equivalents(args.equivalents)
+        answers = read_wrong_answers(WRONG_ANSWERS)
         commands = json.loads((build / "compile_commands.json").read_text(encoding="utf-8"))
     except (Refusal, MarkerError) as problem:
         print(f"check-mutants: {problem}", file=sys.stderr)
@@ -360,7 +415,7 @@ def main(argv):
     try:
         for folder, lab in labs:
             before = len(rows)
-            check_lab(build, folder, lab, args, commands, equivalents, scratch_root, rows)
+            check_lab(build, folder, lab, args, commands, equivalents, scratch_root, rows, answers)
             if not args.list:
                 print(f"check-mutants: {folder}: {len(rows) - before} mutants graded "
                       f"({time.monotonic() - started:.0f} s so far)", flush=True)
@@ -386,6 +441,13 @@ def main(argv):
         if row["collateral"]:
             problems.append(f"{row['file']}:{row['line']} task {row['task']} ({row['outcome']}) "
                             f"{row['original']!r} -> {row['mutated']!r} also fails {row['collateral']}")
+    for row in rows:
+        if row["kind"] == "sheet" and row["outcome"] != "killed" and row["outcome"] != "did-not-compile":
+            problems.append(f"{row['file']} task {row['task']}: the wrong answer {row['mutated']!r} in place of "
+                            f"{row['original']!r} is not caught by the task's tests")
+        elif row["kind"] == "sheet" and row["outcome"] == "did-not-compile":
+            problems.append(f"{row['file']} task {row['task']}: the listed wrong answer in place of "
+                            f"{row['original']!r} does not compile (fix the list)")
     for t in tasks:
         if t["percent"] < args.threshold:
             problems.append(f"{t['lab']} task {t['task']}: {t['percent']} % killed, below {args.threshold:g} %")

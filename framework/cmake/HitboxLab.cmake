@@ -79,6 +79,17 @@ function(_hitbox_lab_target_settings target)
     else()
         hitbox_warnings(${target} AS_ERRORS OFF)
     endif()
+    # Debug builds check every index into a standard container, so a loop that reads one past
+    # the end of a vector stops with a message instead of passing by luck (undefined
+    # behaviour). MSVC's Debug runtime checks already (_ITERATOR_DEBUG_LEVEL 2); this is
+    # libstdc++'s switch (it keeps the ABI, unlike _GLIBCXX_DEBUG). On the lab, its exercise
+    # and their tests alike, so the checked copy of each container function is the one linked.
+    # The one warning that is always an error: a function that can end without returning its
+    # value (undefined behaviour that may pass a test by luck). MSVC refuses it already (C4716).
+    if(NOT MSVC)
+        target_compile_definitions(${target} PRIVATE $<$<CONFIG:Debug>:_GLIBCXX_ASSERTIONS>)
+        target_compile_options(${target} PRIVATE -Werror=return-type)
+    endif()
 endfunction()
 
 function(hitbox_add_lab name)

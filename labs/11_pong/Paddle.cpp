@@ -48,9 +48,10 @@ float computerDirection(const Ball& ball, const Paddle& paddle, float dt)
     // BEGIN TASK 6: a computer opponent
     // It watches the ball as a person would. Coming towards it: head for the ball's height.
     // Going away: drift back to the middle, ready for anything.
+    // Coming: moving sideways towards the paddle's side of the ball. With no sideways speed,
+    // or level with the paddle, the product is 0: not coming (the sheet's rule).
     const sf::Vector2f ballAt = ball.getPosition();
-    const bool paddleOnTheRight = paddle.getPosition().x > ballAt.x;
-    const bool coming = (ball.getVelocity().x > 0.f) == paddleOnTheRight;
+    const bool coming = ball.getVelocity().x * (paddle.getPosition().x - ballAt.x) > 0.f;
     const float targetY = coming ? ballAt.y : (court.top + court.bottom) / 2.f;
     if (dt <= 0.f)
         return 0.f;

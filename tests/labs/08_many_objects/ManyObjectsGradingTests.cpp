@@ -177,7 +177,9 @@ TEST(Task1PairTable, TheSceneShowsTheLoopFillingTheTable)
     settings.balls = 12;
     ManyObjectsLevel level(settings);
     hitbox::simulate(level, 1);
-    // Some balls are pickups, so the rules of task 3 may skip some of the 66 pairs.
+    // Some balls are pickups, so the rules of task 3 may skip some of the 66 pairs. The count
+    // asks task 3's layersMayCollide, whatever it answers: this test checks task 1's loop in
+    // the scene, so a mistake in the rules (even one that allows no pair) costs task 3 alone.
     std::size_t allowed = 0;
     const std::vector<Ball>& balls = level.getBalls();
     for (std::size_t i = 0; i < balls.size(); ++i)
@@ -185,7 +187,6 @@ TEST(Task1PairTable, TheSceneShowsTheLoopFillingTheTable)
             allowed += layersMayCollide(balls[i].item(), balls[j].item()) ? 1 : 0;
     EXPECT_EQ(level.getPairTable().size(), 12u);
     EXPECT_EQ(level.getPairTable().testsMade(), allowed);
-    EXPECT_GT(allowed, 0u);
 }
 
 TEST(Task1PairTable, SkipsThePairsTheRuleRulesOutBeforeTesting)

@@ -1,9 +1,10 @@
 // Grading tests of lab 15 (many objects in one World). Each suite is named after the task it
 // checks; README.md lists them. The level runs with no window, one fixed step at a time.
 //
-// Each task's tests reach only that task's code: task 1's scenes have no player in them
-// (so no coin is collected and no rule matters), task 2's have no enemies, task 3's no
-// coins. A mistake in one task costs that task alone.
+// Each task's tests reach only that task's code: task 1's World has no rule and no player
+// near anything, task 2's and task 3's scenes put every object on layer 1 with the mask
+// "everything" (so task 1's layers play no part), task 2's has no rule and no enemies, task
+// 3's no coins. A mistake in one task costs that task alone.
 #include "labs/LabTesting.h"
 #include "support/CollisionMatchers.h"
 
@@ -51,6 +52,39 @@ float coinRadiusNow()
 
 const sf::Vector2f farCorner{100.f, 100.f};
 const sf::Vector2f middle{600.f, 340.f};
+
+// The test's own scene, stepped as WorldLevel::update steps the level (the player's blink
+// runs down, one collision check, then the collected coins removed and counted), but with
+// every object on layer 1 and mask "everything" and no game rule unless the test sets one.
+struct Scene
+{
+    Scene() { world.add(player); }
+    void addCoin(sf::Vector2f center)
+    {
+        coins.push_back(std::make_unique<Coin>(center));
+        world.add(*coins.back(), 1, 0xFFFFFFFF, hitbox::World::Shape::Circle);
+    }
+    void addEnemy(sf::Vector2f center)
+    {
+        enemies.push_back(std::make_unique<Enemy>(center, sf::Vector2f{}));
+        world.add(*enemies.back());
+    }
+    void step(int steps = 1)
+    {
+        for (int index = 0; index < steps; ++index)
+        {
+            player.update(hitbox::stepSeconds);
+            world.checkCollisions();
+            score += removeCollectedCoins(world, coins);
+        }
+    }
+
+    hitbox::World world;
+    Player player{middle};
+    std::vector<std::unique_ptr<Coin>> coins;
+    std::vector<std::unique_ptr<Enemy>> enemies;
+    int score = 0;
+};
 
 } // namespace
 
@@ -156,53 +190,81 @@ TEST(Task1LayersAndMasks, EachKindIsOnItsOwnLayer)
 TEST(Task1LayersAndMasks, APileOfCoinsAndEnemiesCostsOnlyTheEnemyTests)
 {
     // Four coins and three enemies on one spot, the player far away: 21 pairs overlap, but
-    // only the 3 enemy-enemy pairs may ever meet, so only they get an exact test.
+    // only the 3 enemy-enemy pairs may ever meet, so only they get an exact test. Each object
+    // is added with its layersFor, as WorldLevel adds it; no game rule is set.
+    hitbox::World world;
+    const auto add = [&world](GameObject& object, Kind kind, hitbox::World::Shape shape)
+    {
+        const Layers layers = layersFor(kind);
+        world.add(object, layers.layer, layers.mask, shape);
+    };
+    Player player(farCorner);
+    add(player, Kind::Player, hitbox::World::Shape::Box);
+    std::vector<std::unique_ptr<Coin>> coins;
+    std::vector<std::unique_ptr<Enemy>> enemies;
+    for (int coin = 0; coin < 4; ++coin)
+    {
+        coins.push_back(std::make_unique<Coin>(middle + sf::Vector2f{2.f * coin, 0.f}));
+        add(*coins.back(), Kind::Coin, hitbox::World::Shape::Circle);
+    }
+    for (int enemy = 0; enemy < 3; ++enemy)
+    {
+        enemies.push_back(std::make_unique<Enemy>(middle + sf::Vector2f{0.f, 3.f * enemy},
+                                                  sf::Vector2f{}));
+        add(*enemies.back(), Kind::Enemy, hitbox::World::Shape::Box);
+    }
+    EXPECT_EQ(world.checkCollisions(), 3u);
+    EXPECT_EQ(world.getExactTests(), 3u);
+    EXPECT_EQ(enemies[0]->getBumpCount(), 2);
+    world.clear();
+}
+
+TEST(Task1LayersAndMasks, TheLevelAddsEachObjectWithItsLayers)
+{
+    // The same pile in the level: WorldLevel adds every object with layersFor (and the
+    // blinking rule, which no pair here needs).
     WorldLevel level = emptyLevel(farCorner);
     for (int coin = 0; coin < 4; ++coin)
         level.addCoin(middle + sf::Vector2f{2.f * coin, 0.f});
-    for (int enemy = 0; enemy < 3; ++enemy)
-        level.addEnemy(middle + sf::Vector2f{0.f, 3.f * enemy}, {});
     runSteps(level, 1);
-    EXPECT_EQ(level.getWorld().getExactTests(), 3u);
-    EXPECT_EQ(level.getWorld().getCollisions().size(), 3u);
-    EXPECT_EQ(level.getEnemy(0).getBumpCount(), 2);
+    EXPECT_EQ(level.getWorld().getExactTests(), 0u) << "coins never test against coins";
 }
 
 TEST(Task2CollectCoins, CoinTouchedByThePlayerIsCollected)
 {
-    WorldLevel level = emptyLevel(middle);
-    level.addCoin(middle + sf::Vector2f{playerHalf(), 0.f});
-    const std::size_t before = level.getWorld().size();
-    runSteps(level, 1);
-    EXPECT_EQ(level.getScore(), 1);
-    EXPECT_EQ(level.getCoinCount(), 0);
-    EXPECT_EQ(level.getWorld().size(), before - 1) << "a collected coin leaves the World";
+    Scene scene;
+    scene.addCoin(middle + sf::Vector2f{playerHalf(), 0.f});
+    const std::size_t before = scene.world.size();
+    scene.step();
+    EXPECT_EQ(scene.score, 1);
+    EXPECT_EQ(scene.coins.size(), 0u);
+    EXPECT_EQ(scene.world.size(), before - 1) << "a collected coin leaves the World";
 }
 
 TEST(Task2CollectCoins, EachCoinCountsOnce)
 {
-    WorldLevel level = emptyLevel(middle);
-    level.addCoin(middle);
-    level.addCoin(middle + sf::Vector2f{5.f, 0.f});
-    level.addCoin(middle + sf::Vector2f{0.f, -5.f});
-    level.addCoin(middle + sf::Vector2f{300.f, 0.f}); // out of reach
-    runSteps(level, 10);
-    EXPECT_EQ(level.getScore(), 3);
-    EXPECT_EQ(level.getCoinCount(), 1);
-    EXPECT_EQ(level.getWorld().size(), 2u);
+    Scene scene;
+    scene.addCoin(middle);
+    scene.addCoin(middle + sf::Vector2f{5.f, 0.f});
+    scene.addCoin(middle + sf::Vector2f{0.f, -5.f});
+    scene.addCoin(middle + sf::Vector2f{300.f, 0.f}); // out of reach
+    scene.step(10);
+    EXPECT_EQ(scene.score, 3);
+    EXPECT_EQ(scene.coins.size(), 1u);
+    EXPECT_EQ(scene.world.size(), 2u);
 }
 
 TEST(Task2CollectCoins, CoinOnlyTouchingThePlayerStays)
 {
     // The edge rule: touching is not colliding. The coin's circle touches the player's
     // right side, and the two never overlap.
-    WorldLevel level = emptyLevel(middle);
-    level.addCoin(middle + sf::Vector2f{playerHalf() + coinRadiusNow(), 0.f});
-    EXPECT_THAT(level.getCoin(0),
-                hitbox::testing::NotCollides(level.getPlayer(), hitbox::World::Shape::Circle));
-    runSteps(level, 10);
-    EXPECT_EQ(level.getScore(), 0);
-    EXPECT_EQ(level.getCoinCount(), 1);
+    Scene scene;
+    scene.addCoin(middle + sf::Vector2f{playerHalf() + coinRadiusNow(), 0.f});
+    EXPECT_THAT(*scene.coins[0],
+                hitbox::testing::NotCollides(scene.player, hitbox::World::Shape::Circle));
+    scene.step(10);
+    EXPECT_EQ(scene.score, 0);
+    EXPECT_EQ(scene.coins.size(), 1u);
 }
 
 TEST(Task2CollectCoins, OnlyThePlayerCollects)
@@ -228,23 +290,53 @@ TEST(Task2CollectCoins, ACollectedCoinIsSkippedForTheRestOfTheCheck)
     EXPECT_FALSE(coin.isAlive()) << "a collected coin should be set dead (setAlive(false))";
 }
 
+namespace
+{
+// A coin that, when destroyed, notes whether it was still in `world` (its own destructor runs
+// before GameObject's, which is where the World's safety net takes it out).
+class CoinThatWatchesItsEnd : public Coin
+{
+public:
+    CoinThatWatchesItsEnd(sf::Vector2f center, const hitbox::World& world, int& destroyedInWorld)
+        : Coin(center), world(world), destroyedInWorld(destroyedInWorld)
+    {
+    }
+    ~CoinThatWatchesItsEnd() override
+    {
+        if (world.contains(*this))
+            ++destroyedInWorld;
+    }
+    CoinThatWatchesItsEnd(const CoinThatWatchesItsEnd&) = delete;
+    CoinThatWatchesItsEnd& operator=(const CoinThatWatchesItsEnd&) = delete;
+
+private:
+    const hitbox::World& world;
+    int& destroyedInWorld;
+};
+} // namespace
+
 TEST(Task2CollectCoins, CollectedCoinsLeaveTheWorldBeforeTheyAreDestroyed)
 {
-    // The World keeps pointers to objects it does not own: a coin destroyed while still in
-    // it would be read by the next checkCollisions (the address sanitizer reports that).
+    // The sheet's order: the World keeps pointers to objects it does not own, so a coin is
+    // taken out of it first, then destroyed. (Hitbox's World would take a destroyed coin out
+    // by itself, so only the coin can tell: it notes whether it was still in the World.)
     hitbox::World world;
+    int destroyedInWorld = 0;
     std::vector<std::unique_ptr<Coin>> coins;
     Player player(farCorner);
     world.add(player);
     for (int coin = 0; coin < 3; ++coin)
     {
-        coins.push_back(std::make_unique<Coin>(middle + sf::Vector2f{100.f * coin, 0.f}));
+        coins.push_back(std::make_unique<CoinThatWatchesItsEnd>(
+            middle + sf::Vector2f{100.f * coin, 0.f}, world, destroyedInWorld));
         world.add(*coins.back(), 1, 0xFFFFFFFF, hitbox::World::Shape::Circle);
     }
     const Coin* kept = coins[1].get();
     coins[0]->collisionResponse(&player);
     coins[2]->collisionResponse(&player);
     EXPECT_EQ(removeCollectedCoins(world, coins), 2);
+    EXPECT_EQ(destroyedInWorld, 0) << "a collected coin was destroyed while still in the World: "
+                                      "world.remove(*coin) first, then erase it";
     ASSERT_EQ(coins.size(), 1u);
     EXPECT_EQ(coins[0].get(), kept);
     EXPECT_EQ(world.size(), 2u);
@@ -277,15 +369,26 @@ TEST(Task3BlinkingPlayerRule, EveryOtherPairIsStillTested)
 
 TEST(Task3BlinkingPlayerRule, PlayerStandingOnAnEnemyIsHurtOncePerBlink)
 {
+    Scene scene;
+    scene.world.setRule(mayMeetNow);
+    scene.addEnemy(middle + sf::Vector2f{10.f, 0.f});
+    scene.step();
+    EXPECT_EQ(scene.player.getHurtCount(), 1);
+    scene.step();
+    EXPECT_EQ(scene.world.getExactTests(), 0u) << "the blinking pair needs no exact test";
+    const int blinkSteps = static_cast<int>(blinkSeconds * hitbox::stepsPerSecond);
+    scene.step(blinkSteps - 10);
+    EXPECT_EQ(scene.player.getHurtCount(), 1) << "hurt again while still blinking";
+    scene.step(20);
+    EXPECT_EQ(scene.player.getHurtCount(), 2) << "the blink is over: the enemy hurts again";
+}
+
+TEST(Task3BlinkingPlayerRule, TheLevelUsesTheRule)
+{
+    // In the level (which adds the rule with world.setRule): the blinking player and the
+    // enemy it stands on cost no exact test.
     WorldLevel level = emptyLevel(middle);
     level.addEnemy(middle + sf::Vector2f{10.f, 0.f}, {});
-    runSteps(level, 1);
-    EXPECT_EQ(level.getPlayer().getHurtCount(), 1);
-    runSteps(level, 1);
+    runSteps(level, 2);
     EXPECT_EQ(level.getWorld().getExactTests(), 0u) << "the blinking pair needs no exact test";
-    const int blinkSteps = static_cast<int>(blinkSeconds * hitbox::stepsPerSecond);
-    runSteps(level, blinkSteps - 10);
-    EXPECT_EQ(level.getPlayer().getHurtCount(), 1) << "hurt again while still blinking";
-    runSteps(level, 20);
-    EXPECT_EQ(level.getPlayer().getHurtCount(), 2) << "the blink is over: the enemy hurts again";
 }
