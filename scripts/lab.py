@@ -9,6 +9,7 @@ standard library only; Linux, macOS and Windows).
     python3 scripts/lab.py mark CSV LAB TASK   exit 0 when the gradebook gives LAB's TASK its mark
     python3 scripts/lab.py labs | tasks LAB | folder LAB | student-files
     python3 scripts/lab.py exercise IN OUT [--solved 1,2]   write a solution file's exercise version
+    python3 scripts/lab.py check-exercises | check-handout     the course's checks of its labs (labchecks.py)
 
 Exit status: 0 success, 1 a test failed (grade) or the mark is missing (mark), 2 bad input.
 """
@@ -117,6 +118,16 @@ def command_gradescope(options):
     return classgrade.run_gradescope(options)
 
 
+def command_check_exercises(options):
+    from labtool import labchecks
+    return labchecks.check_exercises(options)
+
+
+def command_check_handout(options):
+    from labtool import labchecks
+    return labchecks.check_handout(options)
+
+
 def command_tricks(options):
     from labtool import tricks
     if options.action == "make":
@@ -179,6 +190,15 @@ def main(argv=None):
     exercise.add_argument("output")
     exercise.add_argument("--solved", default="", help="tasks to keep solved, e.g. 1,3")
     exercise.set_defaults(run=command_exercise)
+
+    exercises = commands.add_parser("check-exercises", help="every solution passes; every task has a test failing on its exercise")
+    exercises.add_argument("--build", help="a configured build folder (default build/debug)")
+    exercises.set_defaults(run=command_check_exercises)
+    handout = commands.add_parser("check-handout", help="the handout builds alone and grades task by task")
+    handout.add_argument("--lab", action="append", default=[], help="check only this lab (repeatable)")
+    handout.add_argument("--out", default=str(lablist.REPO / "build" / "handout-check"),
+                         help="where to write the handout (default build/handout-check; replaced)")
+    handout.set_defaults(run=command_check_handout)
 
     tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
     tricks.add_argument("action", choices=("make", "check", "bench"))

@@ -1,8 +1,11 @@
 """lab.py grade: a student's self-check of labs in their checkout or handout.
 
 Configures with the debug preset when needed, builds each lab's tests on its own (a lab that
-does not compile costs that lab), runs every test with the engine's rule and limits (the same
-as class grading) and prints a table per task. Writes BUILD/grade-results/<lab>.xml (JUnit)
+does not compile costs that lab), checks the student's compiled objects as class grading does
+(inspect.py: no main, nothing of GoogleTest, no symbol the harness owns, no call that ends the
+program or writes files; where GNU binutils are missing, as with Visual Studio, it says so in
+one line and goes on), runs every test with the engine's rule and limits (the same as class
+grading) and prints a table per task. Writes BUILD/grade-results/<lab>.xml (JUnit)
 and the build log; only a finished run writes, so Ctrl-C records nothing. Two runs in one
 folder take turns (a lock). Exit status: 0 every test passed, 1 some test failed or a lab did
 not build, 2 bad input (or a build folder that cannot be written).
@@ -15,7 +18,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from . import engine, limits, procs, reports
+from . import engine, inspect, limits, procs, reports
 from .labs import REPO, BadInput, all_labs, find_lab, is_handout
 
 
@@ -86,6 +89,38 @@ def find_program(build, target):
     return None
 
 
+BINUTILS = ("nm", "objdump", "c++filt")
+
+
+def object_check(lab, build, target):
+    """(why the lab is refused or "", a note): inspect.py on the student's objects in `build`.
+    The harness is what the test program links besides them (its link.txt; without one, the
+    framework's archives). No binutils (Windows with Visual Studio): nothing refused, a note."""
+    missing = [tool for tool in BINUTILS if shutil.which(tool) is None]
+    if missing:
+        return "", (f"the object check needs {', '.join(missing)} (GNU binutils), not found here: "
+                    "not done (class grading does it)")
+    level = "_exercise_level" if target.endswith("_exercise_tests") else "_level"
+    level_dir = build / lab.folder / "CMakeFiles" / f"{lab.name}{level}.dir"
+    own = {Path(relative).name + ".o" for relative in lab.student_files if relative.endswith(".cpp")}
+    student, others = {}, []
+    for obj in sorted(level_dir.rglob("*.o")):
+        if obj.name in own:
+            student[obj.name[:-2]] = obj
+        else:
+            others.append(str(obj))
+    test_dir = build / "tests" / lab.folder / "CMakeFiles" / f"{target}.dir"
+    others += [str(o) for o in test_dir.rglob("*.o")]
+    link = test_dir / "link.txt"
+    if link.is_file():
+        words = link.read_text(encoding="utf-8").split()
+        archives = [(test_dir.parent.parent / w).resolve() for w in words if w.endswith(".a")]
+        others += [str(a) for a in archives if a.is_file() and not a.name.startswith(f"lib{lab.name}")]
+    else:
+        others += [str(a) for a in sorted((build / "framework").glob("*.a"))]
+    return inspect.refusal(student, inspect.harness_symbols(tuple(others))), ""
+
+
 def grade_lab(lab, build, target, results_dir, work):
     """Builds and runs one lab; returns {"results": [...], "reason": why the lab got nothing}."""
     print(f"grade: building {target}...", flush=True)
@@ -108,6 +143,13 @@ def grade_lab(lab, build, target, results_dir, work):
     if program is None:
         graded.update(reason=f"{target} was not built", results=[])
         return graded
+    refused, note = object_check(lab, build, target)
+    if note:
+        print(f"grade: {lab.name}: {note}", flush=True)
+    if refused:
+        why = f"refused: {refused}"
+        graded.update(reason=why, results=[engine.TestResult(t, False, why) for t in expected])
+        return graded
     listing = procs.run_limited([str(program), "--gtest_list_tests"], work / "list.out", limits.TEST_SECONDS,
                                 env=engine.test_environment(), memory=limits.TEST_MEMORY,
                                 file_bytes=limits.OUTPUT_BYTES, set_limits_here=True)
@@ -129,7 +171,8 @@ def print_table(graded_labs, results_dir):
     print(f"{'LAB':<28} {'TASK':<5} {'PASSED':<7} {'FAILED':<7}")
     for lab, graded in graded_labs:
         if graded.get("reason"):
-            print(f"{lab.name:<28} {'-':<5} {graded['reason']}  <- see {results_dir / (lab.name + '.build.log')}")
+            log = "" if graded["reason"].startswith("refused") else f"  <- see {results_dir / (lab.name + '.build.log')}"
+            print(f"{lab.name:<28} {'-':<5} {graded['reason']}{log}")
             continue
         for task, passed, total, mark, failures in engine.task_rows(lab.tasks(), graded["results"]):
             why = "; ".join(dict.fromkeys(f"{r.name.split('.', 1)[1]}: {r.reason}" for r in failures[:3]))

@@ -1,0 +1,81 @@
+"""Unit tests of the lab tool's self-check (scripts/labtool/selfcheck.py): the object check a
+student's `lab.py grade` runs, on objects compiled here, and what it does without binutils.
+
+    python3 -m unittest discover -s tests/scripts      (ctest: scripts.LabTool)
+"""
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+from unittest import mock
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+from labtool import selfcheck  # noqa: E402
+
+HAVE_TOOLS = all(shutil.which(tool) for tool in ("c++", *selfcheck.BINUTILS))
+
+
+class FakeLab:
+    """What object_check reads of a lab: its name, folder and the files a student edits."""
+
+    name = "lab99_demo"
+    folder = "labs/99_demo"
+    student_files = ["Demo.cpp", "Demo.h"]
+
+
+def build_with(student_source):
+    """A build folder laid out as CMake lays out a lab: the student's Demo.cpp compiled into
+    the lab library's object folder, and the lab's own (non-student) Level.cpp beside it."""
+    build = Path(tempfile.mkdtemp(prefix="labtool-test-"))
+    level = build / FakeLab.folder / "CMakeFiles" / f"{FakeLab.name}_level.dir"
+    level.mkdir(parents=True)
+    for name, text in (("Demo.cpp", student_source), ("Level.cpp", "int levelWidth() { return 1200; }\n")):
+        source = build / name
+        source.write_text(text, encoding="utf-8")
+        subprocess.run(["c++", "-c", str(source), "-o", str(level / f"{name}.o")], check=True)
+    (build / "tests" / FakeLab.folder / "CMakeFiles" / f"{FakeLab.name}_tests.dir").mkdir(parents=True)
+    return build
+
+
+@unittest.skipUnless(HAVE_TOOLS, "needs a C++ compiler and GNU binutils")
+class ObjectCheck(unittest.TestCase):
+    def check(self, source):
+        build = build_with(source)
+        self.addCleanup(shutil.rmtree, build, True)
+        return selfcheck.object_check(FakeLab, build, f"{FakeLab.name}_tests")
+
+    def test_plain_lab_code_is_accepted(self):
+        self.assertEqual(self.check("float twice(float x) { return 2.f * x; }\n"), ("", ""))
+
+    def test_a_main_of_its_own_is_refused_with_one_line(self):
+        refused, note = self.check("int main() { return 0; }\n")
+        self.assertEqual(note, "")
+        self.assertIn("`Demo.cpp` defines main()", refused)
+        self.assertNotIn("\n", refused)
+
+    def test_ending_the_program_is_refused(self):
+        refused, _ = self.check("#include <cstdlib>\nvoid stop() { std::exit(0); }\n")
+        self.assertIn("calls exit()", refused)
+
+    def test_replacing_a_function_of_the_lab_is_refused(self):
+        refused, _ = self.check("int levelWidth() { return 1; }\n")
+        self.assertIn("already define", refused)
+
+    def test_a_comment_naming_the_test_framework_is_not_refused(self):
+        self.assertEqual(self.check("// testing::Test, gtest, main()\nint one() { return 1; }\n")[0], "")
+
+
+class WithoutBinutils(unittest.TestCase):
+    def test_it_says_so_in_one_line_and_refuses_nothing(self):
+        with mock.patch.object(selfcheck.shutil, "which", return_value=None):
+            refused, note = selfcheck.object_check(FakeLab, Path(tempfile.gettempdir()), f"{FakeLab.name}_tests")
+        self.assertEqual(refused, "")
+        self.assertIn("GNU binutils", note)
+        self.assertNotIn("\n", note)
+
+
+if __name__ == "__main__":
+    unittest.main()
