@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import limits, markers, procs, sandbox
+from . import limits, markers, procs
 from .labs import REPO
 
 
@@ -58,6 +58,7 @@ def run_test(program, test, work, slot=None, threaded=False):
                  "--gtest_also_run_disabled_tests=0"]
     output = Path(work) / f"{report_dir.name}.out"
     if slot is not None:
+        from . import sandbox  # (Linux only: class grading; the self-check runs on Windows too)
         report_dir.chmod(0o700)
         sandbox.give_to_slot(report_dir, slot)
         assets = [REPO / "assets"] if (REPO / "assets").is_dir() else []

@@ -96,13 +96,18 @@ def object_check(lab, build, target):
     """(why the lab is refused or "", a note): inspect.py on the student's objects in `build`.
     The harness is what the test program links besides them (its link.txt; without one, the
     framework's archives). No binutils (Windows with Visual Studio): nothing refused, a note."""
-    missing = [tool for tool in BINUTILS if shutil.which(tool) is None]
+    if os.name == "nt":
+        return "", ("the object check reads GNU object files (nm, objdump): not done on Windows "
+                    "(class grading does it)")
+    missing = [tool for tool in (*BINUTILS, "gcc") if shutil.which(tool) is None]
     if missing:
         return "", (f"the object check needs {', '.join(missing)} (GNU binutils), not found here: "
                     "not done (class grading does it)")
     level = "_exercise_level" if target.endswith("_exercise_tests") else "_level"
     level_dir = build / lab.folder / "CMakeFiles" / f"{lab.name}{level}.dir"
     own = {Path(relative).name + ".o" for relative in lab.student_files if relative.endswith(".cpp")}
+    if not own:
+        return "", ""
     student, others = {}, []
     for obj in sorted(level_dir.rglob("*.o")):
         if obj.name in own:
@@ -118,6 +123,8 @@ def object_check(lab, build, target):
         others += [str(a) for a in archives if a.is_file() and not a.name.startswith(f"lib{lab.name}")]
     else:
         others += [str(a) for a in sorted((build / "framework").glob("*.a"))]
+    if not student:
+        return "", f"no object files of {', '.join(sorted(own))} in {level_dir}: the object check was not done"
     return inspect.refusal(student, inspect.harness_symbols(tuple(others))), ""
 
 

@@ -77,5 +77,37 @@ class WithoutBinutils(unittest.TestCase):
         self.assertNotIn("\n", note)
 
 
+class OnWindows(unittest.TestCase):
+    """The self-check needs no bash, bubblewrap, prlimit or binutils: faked Windows here."""
+
+    def test_the_self_check_imports_without_posix_modules(self):
+        # fcntl, resource, pwd and grp do not exist on Windows: importing the self-check's
+        # modules must not need them (class grading's sandbox is imported only to grade a class).
+        code = ("import sys\n"
+                "for name in ('fcntl', 'resource', 'pwd', 'grp'): sys.modules[name] = None\n"
+                f"sys.path.insert(0, {str(Path(selfcheck.__file__).parents[1])!r})\n"
+                "import lab, labtool.selfcheck, labtool.engine, labtool.procs, labtool.reports\n"
+                "print('imported')\n")
+        done = subprocess.run([sys.executable, "-B", "-c", code], capture_output=True, text=True)
+        self.assertEqual(done.stdout.strip(), "imported", done.stderr)
+
+    def test_the_object_check_says_it_is_not_done_in_one_line(self):
+        build = Path(tempfile.gettempdir())  # (made before os.name is faked: pathlib reads it)
+        with mock.patch.object(selfcheck.os, "name", "nt"):
+            refused, note = selfcheck.object_check(FakeLab, build, f"{FakeLab.name}_tests")
+        self.assertEqual(refused, "")
+        self.assertIn("not done on Windows", note)
+        self.assertNotIn("\n", note)
+
+    def test_a_windows_test_program_is_found(self):
+        # Visual Studio puts it in a folder per configuration, with .exe.
+        build = Path(tempfile.mkdtemp(prefix="labtool-test-"))
+        self.addCleanup(shutil.rmtree, build, True)
+        program = build / "tests" / FakeLab.folder / "Debug" / f"{FakeLab.name}_tests.exe"
+        program.parent.mkdir(parents=True)
+        program.write_bytes(b"MZ")
+        self.assertEqual(selfcheck.find_program(build, f"{FakeLab.name}_tests"), program)
+
+
 if __name__ == "__main__":
     unittest.main()
