@@ -220,11 +220,14 @@ TEST(Task2Radii, AChasingEnemyWalksTowardsThePlayer)
     game.level.addEnemy({300.f, 300.f});
     game.level.placePlayer({500.f, 300.f});
     const Actor expected = afterWalkingRight(game.level, game.level.getEnemies().at(0).body,
-                                             TopDownLevel::enemySpeed, 0.5f);
-    game.run(0.5f); // 65 px at 130 px/s: still outside the attack radius
+                                             TopDownLevel::enemySpeed, 0.25f);
+    // 32 px at 130 px/s: still inside the notice radius and outside the attack radius, even
+    // if moveAndSlide took it the wrong way.
+    game.run(0.25f);
     const Enemy& enemy = game.level.getEnemies().at(0);
     EXPECT_EQ(enemy.state, EnemyState::Chase);
-    EXPECT_NEAR(enemy.body.feet.x, expected.feet.x, 1e-3f) << "walked at enemySpeed towards the player";
+    EXPECT_NEAR(enemy.body.feet.x, expected.feet.x, 1e-3f)
+        << "walked at enemySpeed towards the player";
     EXPECT_FLOAT_EQ(enemy.body.feet.y, expected.feet.y);
 }
 

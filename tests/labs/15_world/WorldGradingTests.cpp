@@ -209,8 +209,8 @@ TEST(Task1LayersAndMasks, APileOfCoinsAndEnemiesCostsOnlyTheEnemyTests)
     }
     for (int enemy = 0; enemy < 3; ++enemy)
     {
-        enemies.push_back(std::make_unique<Enemy>(middle + sf::Vector2f{0.f, 3.f * enemy},
-                                                  sf::Vector2f{}));
+        enemies.push_back(
+            std::make_unique<Enemy>(middle + sf::Vector2f{0.f, 3.f * enemy}, sf::Vector2f{}));
         add(*enemies.back(), Kind::Enemy, hitbox::World::Shape::Box);
     }
     EXPECT_EQ(world.checkCollisions(), 3u);
