@@ -136,8 +136,9 @@ def read_wrong_answers(path):
     path = Path(path)
     if not path.exists():
         return []
-    text = path.read_text(encoding="utf-8")
-    body = "".join(line for line in text.splitlines(True) if not line.startswith("#"))
+    lines = path.read_text(encoding="utf-8").splitlines(True)
+    comments = next((at for at, line in enumerate(lines) if not line.startswith("#")), len(lines))
+    body = "".join(lines[comments:])  # (a listed line may start with '#': only the head is comments)
     answers = []
     for number, row in enumerate(csv.DictReader(io.StringIO(body)), start=1):
         if set(row) != set(WRONG_ANSWER_FIELDS) or not (row.get("answer") or "").strip():
