@@ -8,7 +8,7 @@
 struct HintScope : Ball
 {
     void hints();
-    float x;                // a coordinate of the ball's position
+    float x; // a coordinate of the ball's position
     float radius;
     sf::Vector2f worldSize; // Ball::worldSize (private: the hints are inside Ball)
     sf::Vector2f velocity;

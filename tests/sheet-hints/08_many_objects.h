@@ -8,6 +8,6 @@
 struct HintScope
 {
     void hints();
-    std::size_t first, second;   // task 1: the two indices of a pair
-    std::uint32_t everything;    // task 3: every layer's bit
+    std::size_t first, second; // task 1: the two indices of a pair
+    std::uint32_t everything;  // task 3: every layer's bit
 };
