@@ -46,6 +46,7 @@ void TopDownLevel::clearScene()
     walls.clear();
     solids.clear();
     const sf::Vector2f world = getWorldSize();
+    sight = emptySightGrid({world.x, world.y});
     const float playBottom = world.y - helpBarHeight;
     addWall({0.f, 0.f, world.x, wallThickness});
     addWall({0.f, playBottom - wallThickness, world.x, wallThickness});
@@ -75,6 +76,7 @@ void TopDownLevel::addWall(const hitbox::Box& wall)
 {
     walls.push_back(wall);
     solids.push_back(wall);
+    markWall(sight, wall);
 }
 
 void TopDownLevel::addTree(hitbox::Vec2 trunkFeet)
@@ -261,6 +263,9 @@ void TopDownLevel::updateEnemy(Enemy& enemy, float dt)
 {
     Actor& body = enemy.body;
     enemy.state = chooseEnemyState(body.feet, player.feet);
+    // Behind a wall the player is out of sight: the enemy stays where it is (task 4).
+    if (enemy.state != EnemyState::Idle && !canSee(sight, body.feet, player.feet))
+        enemy.state = EnemyState::Idle;
     enemy.attackCooldown = std::max(0.f, enemy.attackCooldown - dt);
 
     hitbox::Vec2 velocity;

@@ -6,13 +6,15 @@
 //   - per-axis move-then-resolve: move along x, push out of walls along x; then the same
 //     along y. Walking diagonally into a wall slides along it (moveAndSlide);
 //   - enemies with a notice radius (start chasing) and an attack radius (hit), tested as
-//     "is the player's feet point inside this circle?" (chooseEnemyState);
+//     "is the player's feet point inside this circle?" (chooseEnemyState), and only when
+//     no wall stands between them (canSee, LineOfSight.h: a grid ray cast);
 //   - a hit knocks the victim back and makes it invulnerable for a while, blinking (hurt);
 //   - depth sorting: actors are drawn in order of their feet's y, so the one further down
 //     the screen covers the one behind it (drawOrder).
 #pragma once
 
 #include "Actor.h"
+#include "LineOfSight.h"
 
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Level.h"
@@ -109,6 +111,7 @@ private:
     std::vector<Enemy> enemies;
     std::vector<Actor> trees;
     std::vector<hitbox::Box> walls;  // walls and rocks
+    hitbox::TileGrid sight;          // the walls as tiles: what blocks an enemy's sight
     std::vector<hitbox::Box> solids; // walls and tree trunks: what blocks feet
     hitbox::LazyFont font;           // read by the first render(): tests need no font file
 

@@ -279,6 +279,31 @@ if [[ -x "$slides/node_modules/.bin/marp" && -x "${CHROME_PATH:-/usr/bin/chromiu
     else
         fail "layout-content-below-the-slide: expected slide 2 (only) to fail, got (exit $status): $output"
     fi
+
+    # A diagram label under 24 px as shown: a 600-wide SVG drawn in 40% of the slide (512 px)
+    # with a 20 px label is 17 px on the slide; the same SVG with a 30 px label is 25.6 px.
+    labels="$work/labels"
+    mkdir -p "$labels/src" "$labels/dist/figures"
+    for size in 20 30; do
+        python3 - "$labels/dist/figures/label-$size.svg" "$size" <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+svg = ET.Element("svg", xmlns="http://www.w3.org/2000/svg", viewBox="0 0 600 450")
+ET.SubElement(svg, "rect", width="600", height="450", fill="white")
+ET.SubElement(svg, "text", {"x": "20", "y": "200", "font-size": sys.argv[2]}).text = "a label"
+ET.ElementTree(svg).write(sys.argv[1])
+PY
+    done
+    printf -- '---\nmarp: true\ntheme: hitbox\n---\n\n# Large\n\n![bg right:40%% fit](figures/label-30.svg)\n\n---\n\n# Small\n\n![bg right:40%% fit](figures/label-20.svg)\n' >"$labels/src/01-labels.md"
+    (cd "$slides" && node_modules/.bin/marp --config-file marp.config.mjs --input-dir "$labels/src" \
+        --output "$labels/dist" --html >/dev/null 2>&1)
+    status=0
+    output="$(node "$slides/tools/check-layout.mjs" --dist "$labels/dist" 2>&1)" || status=$?
+    if [[ $status -ne 0 && "$output" == *"01-labels.html slide 2: label \"a label\""*"17.1 px"* && "$output" != *"slide 1:"* ]]; then
+        pass diagram-label-under-24-px
+    else
+        fail "diagram-label-under-24-px: expected slide 2 (only) to fail at 17.1 px, got (exit $status): $output"
+    fi
 fi
 
 echo "slides tests: $passed passed, $failed failed"

@@ -83,6 +83,18 @@ TEST(GridRay, RunningAlongATilesSideIsNotBlocked)
     EXPECT_TRUE(castRayInGrid(oneWall, {5.f, 20.5f}, {45.f, 20.5f}).blocked); // just inside
 }
 
+TEST(GridRay, RunningAlongTheLineBetweenTwoSolidTilesIsBlocked)
+{
+    // A wall two tiles thick: the line between its tiles is inside the wall.
+    TileGrid thick = oneWall;
+    thick.solid[2 * 5 + 2] = 1; // tile (2, 2) beside the wall's tile (3, 2)
+    const GridRayResult result = castRayInGrid(thick, {30.f, 5.f}, {30.f, 45.f});
+    EXPECT_TRUE(result.blocked);
+    EXPECT_FLOAT_EQ(result.point.y, 20.f);
+    EXPECT_FLOAT_EQ(result.normal.y, -1.f);
+    EXPECT_FALSE(castRayInGrid(oneWall, {30.f, 5.f}, {30.f, 45.f}).blocked); // one side only
+}
+
 TEST(GridRay, PassingExactlyThroughACornerIsNotBlocked)
 {
     // Two solid tiles touching at a corner, (20, 20): the diagonal between them goes through.

@@ -69,9 +69,10 @@ GridRayResult castRayInGrid(const TileGrid& grid, Vec2 start, Vec2 end)
     const double size = grid.cellSize;
     const double x0 = start.x, y0 = start.y;
     const double dx = double(end.x) - x0, dy = double(end.y) - y0;
-    // A ray running exactly along a grid line only touches the tiles on either side.
-    if ((dx == 0.0 && std::fmod(x0, size) == 0.0) || (dy == 0.0 && std::fmod(y0, size) == 0.0))
-        return result;
+    // A ray running exactly along a grid line only touches the tiles on either side: it is
+    // inside a wall only where the tiles on both sides are solid.
+    const bool alongX = dx == 0.0 && std::fmod(x0, size) == 0.0;
+    const bool alongY = dy == 0.0 && std::fmod(y0, size) == 0.0;
     // Only the stretch of the ray inside the grid is walked (so at most columns + rows steps).
     double t = 0.0;
     double tEnd = 1.0;
@@ -104,7 +105,13 @@ GridRayResult castRayInGrid(const TileGrid& grid, Vec2 start, Vec2 end)
             const int row = cellIndex(y0 + dy * middle, size, grid.rows);
             if (column >= 0 && row >= 0 && column < grid.columns && row < grid.rows)
                 ++result.cellsVisited;
-            if (isSolidTile(grid, column, row))
+            // Along a grid line the tile found is the one after the line; the one before it
+            // must be solid too (and all four round a grid corner, for a point on one).
+            const bool inside = isSolidTile(grid, column, row) &&
+                                (!alongX || isSolidTile(grid, column - 1, row)) &&
+                                (!alongY || isSolidTile(grid, column, row - 1)) &&
+                                (!(alongX && alongY) || isSolidTile(grid, column - 1, row - 1));
+            if (inside)
             {
                 result.blocked = true;
                 result.column = column;

@@ -46,6 +46,7 @@ struct GridRayResult
 // a ray is blocked only by a solid tile whose inside it passes through; running exactly along
 // a tile's side, through its corner, or reaching it only at `end` is not blocked (so a ray
 // along a wall's face sees past it, and one exactly between two diagonal tiles goes through).
+// Running along the line between two solid tiles is inside the wall they make: blocked.
 // A ray whose first stretch is inside a solid tile (it starts inside, or on its side heading
 // in) is blocked at time 0 with normal (0, 0). Entering by a corner: the vertical
 // side wins (normal along x), as sweepBoxVsBox. A zero-length ray is blocked only inside a

@@ -1,0 +1,114 @@
+// Grading tests of lab 10, task 4: line of sight by a grid ray cast (LineOfSight.h). The
+// answers are checked against the framework's hitbox::hasLineOfSight, which follows the same
+// edge rule (touching is not blocking), on set cases and on many random lines.
+#include "LineOfSight.h"
+#include "TopDownLevel.h"
+
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
+#include "hitbox/geometry/GridRay.h"
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <random>
+
+namespace
+{
+// A 10 x 10 grid of sightCellSize tiles with the given tiles solid.
+hitbox::TileGrid gridWith(std::initializer_list<std::pair<int, int>> solidTiles)
+{
+    hitbox::TileGrid grid = emptySightGrid({10 * sightCellSize, 10 * sightCellSize});
+    for (const auto& [column, row] : solidTiles)
+        grid.solid[static_cast<std::size_t>(row * grid.columns + column)] = 1;
+    return grid;
+}
+
+// A point by tile coordinates (1.5 is the middle of tile 1).
+hitbox::Vec2 at(float column, float row)
+{
+    return {column * sightCellSize, row * sightCellSize};
+}
+} // namespace
+
+TEST(Task4LineOfSight, AWallBetweenBlocksSight)
+{
+    const hitbox::TileGrid grid = gridWith({{5, 3}, {5, 4}, {5, 5}});
+    EXPECT_FALSE(canSee(grid, at(1.5f, 4.5f), at(8.5f, 4.5f)));
+    EXPECT_FALSE(canSee(grid, at(8.5f, 4.5f), at(1.5f, 4.5f))); // both ways
+    EXPECT_FALSE(canSee(grid, at(1.5f, 3.2f), at(8.5f, 5.7f))); // slanted
+}
+
+TEST(Task4LineOfSight, AnOpenLineAndOneBesideTheWallSee)
+{
+    const hitbox::TileGrid grid = gridWith({{5, 3}, {5, 4}, {5, 5}});
+    EXPECT_TRUE(canSee(grid, at(1.5f, 1.5f), at(8.5f, 1.5f)));
+    EXPECT_TRUE(canSee(grid, at(1.5f, 8.5f), at(8.5f, 7.5f)));
+}
+
+TEST(Task4LineOfSight, ALineAlongAWallsFaceOnlyTouchesItAndSees)
+{
+    const hitbox::TileGrid grid = gridWith({{5, 3}, {5, 4}, {5, 5}});
+    EXPECT_TRUE(canSee(grid, at(5.f, 0.5f), at(5.f, 9.5f))); // the wall's left face
+    EXPECT_TRUE(canSee(grid, at(0.5f, 3.f), at(9.5f, 3.f))); // its top face
+}
+
+TEST(Task4LineOfSight, ALineAlongTheSeamInsideAThickWallIsBlocked)
+{
+    const hitbox::TileGrid grid = gridWith({{4, 3}, {5, 3}, {4, 4}, {5, 4}});
+    EXPECT_FALSE(canSee(grid, at(5.f, 0.5f), at(5.f, 9.5f))); // between columns 4 and 5
+    EXPECT_FALSE(canSee(grid, at(0.5f, 4.f), at(9.5f, 4.f))); // between rows 3 and 4
+}
+
+TEST(Task4LineOfSight, ALineThroughTheCornerBetweenTwoDiagonalTilesSees)
+{
+    // Tiles (5, 4) and (4, 5) meet only at the corner (5, 5); the diagonal passes through it.
+    const hitbox::TileGrid grid = gridWith({{5, 4}, {4, 5}});
+    EXPECT_TRUE(canSee(grid, at(2.5f, 2.5f), at(7.5f, 7.5f)));
+}
+
+TEST(Task4LineOfSight, FromInsideAWallTileSightIsBlocked)
+{
+    const hitbox::TileGrid grid = gridWith({{5, 4}});
+    EXPECT_FALSE(canSee(grid, at(5.5f, 4.5f), at(8.5f, 8.5f)));
+    EXPECT_FALSE(canSee(grid, at(5.5f, 4.5f), at(5.5f, 4.5f))); // from a point to itself
+    EXPECT_TRUE(canSee(grid, at(2.5f, 2.5f), at(2.5f, 2.5f)));
+}
+
+TEST(Task4LineOfSight, AgreesWithTheFrameworksGridRayCastOnRandomLines)
+{
+    std::mt19937 random(10);
+    std::uniform_real_distribution<float> coordinate(0.f, 10 * sightCellSize);
+    std::bernoulli_distribution solid(0.25);
+    int blocked = 0;
+    for (int map = 0; map < 20; ++map)
+    {
+        hitbox::TileGrid grid = gridWith({});
+        for (unsigned char& tile : grid.solid)
+            tile = solid(random) ? 1 : 0;
+        for (int line = 0; line < 200; ++line)
+        {
+            const hitbox::Vec2 from{coordinate(random), coordinate(random)};
+            const hitbox::Vec2 to{coordinate(random), coordinate(random)};
+            const bool expected = hitbox::hasLineOfSight(grid, from, to);
+            blocked += expected ? 0 : 1;
+            ASSERT_EQ(canSee(grid, from, to), expected)
+                << "from (" << from.x << ", " << from.y << ") to (" << to.x << ", " << to.y << ")";
+        }
+    }
+    EXPECT_GT(blocked, 1000); // most random lines cross a wall: the test is not all "sees"
+}
+
+TEST(Task4LineOfSight, AnEnemyBehindAWallDoesNotChase)
+{
+    // The player is well inside the notice radius, but a wall stands between.
+    TopDownLevel level;
+    level.clearScene();
+    level.addWall({500.f, 200.f, 40.f, 200.f});
+    level.placePlayer({600.f, 300.f});
+    level.addEnemy({420.f, 300.f});
+    Input input;
+    level.handleInput(input, hitbox::stepSeconds);
+    level.update(hitbox::stepSeconds);
+    EXPECT_EQ(level.getEnemies().at(0).state, EnemyState::Idle);
+}
