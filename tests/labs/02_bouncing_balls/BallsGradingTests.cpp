@@ -28,10 +28,10 @@ constexpr float overlapTolerance = 0.5f;
 // decides when a ball reaches a wall.
 constexpr float testSpeed = 260.f;
 
-
 float overlapOf(const Ball& a, const Ball& b)
 {
-    return a.getRadius() + b.getRadius() - hitbox::length(hitbox::toVec2(a.getPosition() - b.getPosition()));
+    return a.getRadius() + b.getRadius() -
+           hitbox::length(hitbox::toVec2(a.getPosition() - b.getPosition()));
 }
 
 void run(BallsLevel& level, float seconds)
@@ -93,8 +93,9 @@ TEST(Task1BounceOffTheWalls, BallComesBackFromEachWallAtTheSameSpeed)
         level.addBall(middle, direction * testSpeed);
         // Long enough to reach the wall it flies at, not the one across from it.
         const sf::Vector2f toWall = level.getWorldSize() / 2.f - sf::Vector2f(radius(), radius());
-        run(level, std::abs(hitbox::dot(hitbox::toVec2(toWall), hitbox::toVec2(direction))) / testSpeed +
-                       0.5f);
+        run(level,
+            std::abs(hitbox::dot(hitbox::toVec2(toWall), hitbox::toVec2(direction))) / testSpeed +
+                0.5f);
         const sf::Vector2f velocity = level.getBall(0).getVelocity();
         EXPECT_VEC_NEAR(velocity, -direction * testSpeed, 0.01f)
             << "a ball sent towards " << labtesting::text(direction)
@@ -168,8 +169,9 @@ TEST(Task1BounceOffTheWalls, EachWallBounceIsAHitTheBallIsToldAbout)
         BallsLevel level = emptyLevel();
         level.addBall(middle, direction * testSpeed);
         const sf::Vector2f toWall = level.getWorldSize() / 2.f - sf::Vector2f(radius(), radius());
-        run(level, std::abs(hitbox::dot(hitbox::toVec2(toWall), hitbox::toVec2(direction))) / testSpeed +
-                       0.5f);
+        run(level,
+            std::abs(hitbox::dot(hitbox::toVec2(toWall), hitbox::toVec2(direction))) / testSpeed +
+                0.5f);
         EXPECT_EQ(level.getBall(0).getHitCount(), 1)
             << "a ball sent towards " << labtesting::text(direction) << " hit one wall once";
     }
