@@ -200,8 +200,10 @@ Judged judgeCircleBox(bool stated, GameObject& circleObject, GameObject& boxObje
     const Sides box = MyCollision::worldBox(boxObject);
     if (same(circle, circleObject.getBoundingCircle()) && same(box, referenceBox(boxObject)))
         return {stated, ""};
+    // Sides the wrong way round (left > right) are no box, as NaN sides are: no collision.
+    const bool isABox = box.left <= box.right && box.top <= box.bottom;
     const hitbox::Box plain{box.left, box.top, box.right - box.left, box.bottom - box.top};
-    return {hitbox::circleVsBox({hitbox::toVec2(circle.center), circle.radius}, plain),
+    return {isABox && hitbox::circleVsBox({hitbox::toVec2(circle.center), circle.radius}, plain),
             yourShapesNote("worldCircle centre " + text(circle.center) + " radius " +
                            std::to_string(circle.radius) + ", worldBox = " + text(box))};
 }
