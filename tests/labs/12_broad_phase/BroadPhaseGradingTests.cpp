@@ -204,3 +204,22 @@ TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)
         << allPairs - search.exactTests << " of " << allPairs;
     EXPECT_LT(search.exactTests, allPairs / 20);
 }
+
+TEST(Task3BoundFirst, TheBoundIsTheBallsOwnSquareNoBigger)
+{
+    // Two balls of radius 10 whose centres are 25 apart: their squares (x - radius to
+    // x + radius) are 5 apart, so no exact test runs. Each ball on either side, along x and
+    // along y: a square too wide or too tall on any side would reach the other one.
+    const std::vector<std::vector<Ball>> pairs = {{{0.f, 0.f, 10.f}, {25.f, 0.f, 10.f}},
+                                                  {{25.f, 0.f, 10.f}, {0.f, 0.f, 10.f}},
+                                                  {{0.f, 0.f, 10.f}, {0.f, 25.f, 10.f}},
+                                                  {{0.f, 25.f, 10.f}, {0.f, 0.f, 10.f}}};
+    for (const std::vector<Ball>& balls : pairs)
+    {
+        const PairSearch search = ballPairsBoundFirst(balls);
+        EXPECT_TRUE(search.pairs.empty());
+        EXPECT_EQ(search.exactTests, 0)
+            << "balls at (" << balls[0].x << ", " << balls[0].y << ") and (" << balls[1].x << ", "
+            << balls[1].y << "), radius 10: their bounding squares are 5 pixels apart";
+    }
+}
