@@ -1,7 +1,8 @@
 #include "Ball.h"
 
-#include "hitbox/course/Vector.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/objects/Collision.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,19 +67,22 @@ void bounceApart(Ball& first, Ball& second)
     const hitbox::Contact contact = Collision::getBoundingCircleContact(&first, &second);
     if (!contact.hit)
         return;
+    // The maths is on hitbox::Vec2; a ball's position and velocity are SFML's sf::Vector2f:
+    // hitbox::toVec2 and hitbox::toSfml (hitbox/sfml/Conversions.h) cross between the two.
     // 1. Separate: the normal points from `second` towards `first`; each ball moves half
     //    the overlap, so afterwards they just touch and the next step does not hit again.
-    const sf::Vector2f normal = hitbox::toSfml(contact.normal);
-    first.move(normal * (contact.depth / 2.f));
-    second.move(-normal * (contact.depth / 2.f));
+    const hitbox::Vec2 normal = contact.normal;
+    first.move(hitbox::toSfml(normal * (contact.depth / 2.f)));
+    second.move(hitbox::toSfml(-normal * (contact.depth / 2.f)));
     // 2. Bounce: only the velocity along the normal changes. For equal masses an elastic
     //    collision swaps those parts, which is the same as each ball losing the closing
     //    speed along the normal and the other gaining it.
-    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
+    const hitbox::Vec2 relative = hitbox::toVec2(first.getVelocity() - second.getVelocity());
+    const float closing = hitbox::dot(relative, normal);
     if (closing >= 0.f)
         return; // already moving apart: leave them, or they would be pulled back together
-    first.setVelocity(first.getVelocity() - normal * closing);
-    second.setVelocity(second.getVelocity() + normal * closing);
+    first.setVelocity(first.getVelocity() - hitbox::toSfml(normal * closing));
+    second.setVelocity(second.getVelocity() + hitbox::toSfml(normal * closing));
     // STARTER TASK 3
     // (void)first;
     // (void)second;

@@ -1,7 +1,8 @@
 #include "Square.h"
 
-#include "hitbox/course/Vector.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/objects/Collision.h"
+#include "hitbox/sfml/Conversions.h"
 // Your own class from lab 0: README.md, "Using your own Collision class from lab 0".
 #include "MyCollision.h"
 
@@ -94,16 +95,17 @@ void bounceApart(Square& first, Square& second)
     // For boxes the normal is an axis, (+-1, 0) or (0, +-1): the way out that is
     // shortest. Each square moves half the overlap, so afterwards they just touch.
     const hitbox::Contact contact = Collision::getBoundingBoxContact(&first, &second);
-    const sf::Vector2f normal = hitbox::toSfml(contact.normal);
-    first.move(normal * (contact.depth / 2.f));
-    second.move(-normal * (contact.depth / 2.f));
+    const hitbox::Vec2 normal = contact.normal;
+    first.move(hitbox::toSfml(normal * (contact.depth / 2.f)));
+    second.move(hitbox::toSfml(-normal * (contact.depth / 2.f)));
     // Equal crates swap their velocities along the normal; along the other axis
     // nothing changes. Squares already moving apart are left alone.
-    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
+    const hitbox::Vec2 relative = hitbox::toVec2(first.getVelocity() - second.getVelocity());
+    const float closing = hitbox::dot(relative, normal);
     if (closing < 0.f)
     {
-        first.setVelocity(first.getVelocity() - normal * closing);
-        second.setVelocity(second.getVelocity() + normal * closing);
+        first.setVelocity(first.getVelocity() - hitbox::toSfml(normal * closing));
+        second.setVelocity(second.getVelocity() + hitbox::toSfml(normal * closing));
     }
     // STARTER TASK 3
     // (void)first;

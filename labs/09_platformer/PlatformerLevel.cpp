@@ -185,6 +185,13 @@ void PlatformerLevel::moveThenResolve(const hitbox::Box& before)
     resolvePenetration(before);
 }
 
+TileRegion PlatformerLevel::tilesToTest(const hitbox::Box& box) const
+{
+    if (wholeMap)
+        return {0, map.getColumns() - 1, 0, map.getRows() - 1};
+    return map.tilesUnder(box);
+}
+
 std::vector<hitbox::Box> PlatformerLevel::solidTilesIn(const TileRegion& region) const
 {
     std::vector<hitbox::Box> solids;
@@ -203,7 +210,7 @@ void PlatformerLevel::resolvePenetration(const hitbox::Box& before)
     {
         // Broad phase: only the tiles under where the player was and where it is now.
         sweptBounds = unionOf(sweptBounds, player.getBox());
-        testedRegion = map.tilesUnder(sweptBounds);
+        testedRegion = tilesToTest(sweptBounds);
         bool pushed = false;
         for (std::size_t index = 0; index < collisionPoints.size(); ++index)
             for (const hitbox::Box& tile : solidTilesIn(testedRegion))
@@ -250,7 +257,7 @@ hitbox::Hit PlatformerLevel::firstHitAlong(const hitbox::Box& box, hitbox::Vec2 
 {
     const hitbox::Box moved{box.left + move.x, box.top + move.y, box.width, box.height};
     hitbox::Hit first;
-    for (const hitbox::Box& tile : solidTilesIn(map.tilesUnder(unionOf(box, moved))))
+    for (const hitbox::Box& tile : solidTilesIn(tilesToTest(unionOf(box, moved))))
     {
         const hitbox::Hit hit = hitbox::sweepBoxVsBox(box, move, tile);
         if (hit && !hit.startedInside && hit.time < first.time)

@@ -83,6 +83,11 @@ public:
     void setDemo(bool on) { demo = on; }
     bool usesSpeculativeContacts() const { return speculative; }
     void setSpeculativeContacts(bool on) { speculative = on; }
+    // Test every tile of the map instead of only those under the swept bounds (task 3): the
+    // same answers, more work. The tests of the other tasks switch it on, so a mistake in
+    // task 3 costs task 3 alone.
+    bool searchesWholeMap() const { return wholeMap; }
+    void setWholeMapSearch(bool on) { wholeMap = on; }
     // The tiles looked at in the last step (the swept-bounds region), solid or not.
     const TileRegion& getTestedRegion() const { return testedRegion; }
     const hitbox::Box& getSweptBounds() const { return sweptBounds; }
@@ -98,6 +103,8 @@ private:
     void moveWithSpeculativeContacts(const hitbox::Box& before);
     void resolvePenetration(const hitbox::Box& before);
     void applyPush(const hitbox::Contact& push);
+    // The tiles under a box (task 3's tilesUnder), or every tile with setWholeMapSearch.
+    TileRegion tilesToTest(const hitbox::Box& box) const;
     // The boxes of the solid tiles in a region.
     std::vector<hitbox::Box> solidTilesIn(const TileRegion& region) const;
     // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
@@ -119,6 +126,7 @@ private:
 
     bool speedCapOn = true;
     bool speculative = false;
+    bool wholeMap = false;
     bool demo = false;
     hitbox::FixedStep fixedStep{hitbox::stepSeconds}; // frame time -> whole steps
     long long stepCount = 0;

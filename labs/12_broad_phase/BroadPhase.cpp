@@ -1,5 +1,7 @@
 #include "BroadPhase.h"
 
+#include "hitbox/geometry/Overlap.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -18,7 +20,7 @@ bool operator<(const Pair& a, const Pair& b)
 
 bool overlaps(const Box& a, const Box& b)
 {
-    return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+    return hitbox::boxVsBox(a, b);
 }
 
 bool overlaps(const Ball& a, const Ball& b)
@@ -61,7 +63,8 @@ PairSearch sortAndSweepPairs(const std::vector<Box>& boxes)
     {
         const Box& box = boxes[index];
         open.erase(std::remove_if(open.begin(), open.end(),
-                                  [&](int other) { return boxes[other].right <= box.left; }),
+                                  [&](int other)
+                                  { return hitbox::rightOf(boxes[other]) <= box.left; }),
                    open.end());
         for (const int other : open)
         {
@@ -92,9 +95,9 @@ PairSearch gridPairs(const std::vector<Box>& boxes, float cellSize)
     {
         const Box& box = boxes[index];
         const int firstColumn = static_cast<int>(std::floor(box.left / cellSize));
-        const int lastColumn = static_cast<int>(std::floor(box.right / cellSize));
+        const int lastColumn = static_cast<int>(std::floor(hitbox::rightOf(box) / cellSize));
         const int firstRow = static_cast<int>(std::floor(box.top / cellSize));
-        const int lastRow = static_cast<int>(std::floor(box.bottom / cellSize));
+        const int lastRow = static_cast<int>(std::floor(hitbox::bottomOf(box) / cellSize));
         for (int column = firstColumn; column <= lastColumn; ++column)
             for (int row = firstRow; row <= lastRow; ++row)
                 cells[{column, row}].push_back(index);
@@ -137,8 +140,8 @@ PairSearch ballPairsBoundFirst(const std::vector<Ball>& balls)
         {
             const Ball& a = balls[first];
             const Ball& b = balls[second];
-            const Box boundA{a.x - a.radius, a.y - a.radius, a.x + a.radius, a.y + a.radius};
-            const Box boundB{b.x - b.radius, b.y - b.radius, b.x + b.radius, b.y + b.radius};
+            const Box boundA{a.x - a.radius, a.y - a.radius, 2.f * a.radius, 2.f * a.radius};
+            const Box boundB{b.x - b.radius, b.y - b.radius, 2.f * b.radius, 2.f * b.radius};
             if (!overlaps(boundA, boundB))
                 continue;
             ++search.exactTests;

@@ -5,16 +5,13 @@
 // The edge rule is the framework's: touching is not overlapping.
 #pragma once
 
+#include "hitbox/geometry/Shapes.h"
+
 #include <vector>
 
-// An upright box by its sides (left <= right, top <= bottom).
-struct Box
-{
-    float left = 0.f;
-    float top = 0.f;
-    float right = 0.f;
-    float bottom = 0.f;
-};
+// Boxes are Hitbox's hitbox::Box (hitbox/geometry/Shapes.h): left, top, width, height; its
+// right side is hitbox::rightOf(box), its bottom hitbox::bottomOf(box).
+using hitbox::Box;
 
 // A ball: centre and radius.
 struct Ball
@@ -39,7 +36,8 @@ struct PairSearch
     long long exactTests = 0; // how many times the exact test ran
 };
 
-// Given: the exact tests. Strict: touching does not overlap.
+// Given: the exact tests. Strict: touching does not overlap. For two boxes it is Hitbox's
+// own hitbox::boxVsBox (hitbox/geometry/Overlap.h).
 bool overlaps(const Box& a, const Box& b);
 bool overlaps(const Ball& a, const Ball& b);
 // Given: every pair once, n(n-1)/2 exact tests. The answer the others must match.

@@ -28,7 +28,7 @@ CrowdLevel::CrowdLevel(int boxCount, unsigned seed)
         const float height = size(random);
         const float left = std::uniform_real_distribution<float>(0.f, world.x - width)(random);
         const float top = std::uniform_real_distribution<float>(0.f, world.y - height)(random);
-        boxes.push_back({left, top, left + width, top + height});
+        boxes.push_back({left, top, width, height});
         speedX.push_back(speed(random));
         speedY.push_back(speed(random));
     }
@@ -50,10 +50,12 @@ void CrowdLevel::update(float dt)
         Box& box = boxes[index];
         const float dx = speedX[index] * dt;
         const float dy = speedY[index] * dt;
-        box = {box.left + dx, box.top + dy, box.right + dx, box.bottom + dy};
-        if ((box.left < 0.f && speedX[index] < 0.f) || (box.right > world.x && speedX[index] > 0.f))
+        box = {box.left + dx, box.top + dy, box.width, box.height};
+        if ((box.left < 0.f && speedX[index] < 0.f) ||
+            (hitbox::rightOf(box) > world.x && speedX[index] > 0.f))
             speedX[index] = -speedX[index];
-        if ((box.top < 0.f && speedY[index] < 0.f) || (box.bottom > world.y && speedY[index] > 0.f))
+        if ((box.top < 0.f && speedY[index] < 0.f) ||
+            (hitbox::bottomOf(box) > world.y && speedY[index] > 0.f))
             speedY[index] = -speedY[index];
     }
     switch (method)
@@ -78,7 +80,7 @@ void CrowdLevel::render(sf::RenderTarget& target) const
     for (std::size_t index = 0; index < boxes.size(); ++index)
     {
         const Box& box = boxes[index];
-        sf::RectangleShape picture({box.right - box.left, box.bottom - box.top});
+        sf::RectangleShape picture({box.width, box.height});
         picture.setPosition({box.left, box.top});
         picture.setFillColor(overlapping[index] ? overlapColor : freeColor);
         picture.setOutlineThickness(-1.f);
@@ -106,9 +108,9 @@ void CrowdLevel::renderDebug(hitbox::DebugRenderer& debug) const
         const Box& box = boxes[index];
         sf::Color color = overlapping[index] ? hitbox::DebugRenderer::overlappingColor
                                              : hitbox::DebugRenderer::freeColor;
-        if (sweeping && box.left <= sweepLineX && sweepLineX < box.right)
+        if (sweeping && box.left <= sweepLineX && sweepLineX < hitbox::rightOf(box))
             color = hitbox::DebugRenderer::velocityColor;
-        debug.box({box.left, box.top, box.right - box.left, box.bottom - box.top}, color);
+        debug.box(box, color);
     }
 }
 

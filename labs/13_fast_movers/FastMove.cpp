@@ -1,16 +1,13 @@
 #include "FastMove.h"
 
+#include "hitbox/geometry/Overlap.h"
+
 #include <algorithm>
 #include <cmath>
 
-bool overlaps(const Box& a, const Box& b)
-{
-    return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
-}
-
 Box movedBy(const Box& box, float dx)
 {
-    return {box.left + dx, box.top, box.right + dx, box.bottom};
+    return {box.left + dx, box.top, box.width, box.height};
 }
 
 namespace
@@ -18,17 +15,16 @@ namespace
 // The bullet put back against the side of the wall it came from.
 Box againstWall(const Box& bullet, float velocityX, const Box& wall)
 {
-    const float width = bullet.right - bullet.left;
     if (velocityX >= 0.f)
-        return {wall.left - width, bullet.top, wall.left, bullet.bottom};
-    return {wall.right, bullet.top, wall.right + width, bullet.bottom};
+        return {wall.left - bullet.width, bullet.top, bullet.width, bullet.height};
+    return {hitbox::rightOf(wall), bullet.top, bullet.width, bullet.height};
 }
 } // namespace
 
 MoveResult discreteStep(const Box& bullet, float velocityX, float dt, const Box& wall)
 {
     MoveResult result{movedBy(bullet, velocityX * dt), false, 1};
-    if (overlaps(result.bullet, wall))
+    if (hitbox::boxVsBox(result.bullet, wall))
         result = {againstWall(result.bullet, velocityX, wall), true, 1};
     return result;
 }
@@ -48,7 +44,7 @@ MoveResult subSteppedStep(const Box& bullet, float velocityX, float dt, const Bo
     {
         result.bullet = movedBy(result.bullet, subMove);
         ++result.overlapTests;
-        if (overlaps(result.bullet, wall))
+        if (hitbox::boxVsBox(result.bullet, wall))
         {
             result.bullet = againstWall(result.bullet, velocityX, wall);
             result.hitWall = true;
@@ -72,19 +68,19 @@ MoveResult speculativeStep(const Box& bullet, float velocityX, float dt, const B
     // The gap is the free distance; a move shorter than the gap is safe in full, a longer
     // one ends at the gap, exactly touching (Catto, "Speculative
     // contacts", GDC 2013; the platformer article's fix for the bullet through paper).
-    const bool level = bullet.top < wall.bottom && wall.top < bullet.bottom;
+    const bool level = bullet.top < hitbox::bottomOf(wall) && wall.top < hitbox::bottomOf(bullet);
     const float move = velocityX * dt;
     result.overlapTests = 1;
-    if (level && move > 0.f && bullet.right <= wall.left)
+    if (level && move > 0.f && hitbox::rightOf(bullet) <= wall.left)
     {
-        result.hitWall = move >= wall.left - bullet.right;
+        result.hitWall = move >= wall.left - hitbox::rightOf(bullet);
         result.bullet =
             result.hitWall ? againstWall(bullet, velocityX, wall) : movedBy(bullet, move);
         return result;
     }
-    if (level && move < 0.f && wall.right <= bullet.left)
+    if (level && move < 0.f && hitbox::rightOf(wall) <= bullet.left)
     {
-        result.hitWall = -move >= bullet.left - wall.right;
+        result.hitWall = -move >= bullet.left - hitbox::rightOf(wall);
         result.bullet =
             result.hitWall ? againstWall(bullet, velocityX, wall) : movedBy(bullet, move);
         return result;

@@ -6,14 +6,11 @@
 // Units: pixels and seconds. Touching is not overlapping (Hitbox's edge rule).
 #pragma once
 
-// An upright box by its sides.
-struct Box
-{
-    float left = 0.f;
-    float top = 0.f;
-    float right = 0.f;
-    float bottom = 0.f;
-};
+#include "hitbox/geometry/Shapes.h"
+
+// Boxes are Hitbox's hitbox::Box (hitbox/geometry/Shapes.h): left, top, width, height; its
+// right side is hitbox::rightOf(box), its bottom hitbox::bottomOf(box).
+using hitbox::Box;
 
 // Where one step left the bullet: its box, whether it hit the wall, and how many
 // overlap tests the step ran.
@@ -24,9 +21,8 @@ struct MoveResult
     int overlapTests = 0;
 };
 
-// Given: do two boxes share area (strict: touching does not count)?
-bool overlaps(const Box& a, const Box& b);
-// Given: the box moved by dx along x.
+// Given: the box moved by dx along x. (Whether two boxes share area is Hitbox's
+// hitbox::boxVsBox, hitbox/geometry/Overlap.h: touching does not count.)
 Box movedBy(const Box& box, float dx);
 
 // Given: the plain discrete step: move the whole way, then one overlap test. On a hit, the

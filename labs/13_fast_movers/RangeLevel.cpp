@@ -14,14 +14,14 @@ const sf::Color wallColor{200, 200, 210};
 
 void drawBox(sf::RenderTarget& target, const Box& box, sf::Color color)
 {
-    sf::RectangleShape picture({box.right - box.left, box.bottom - box.top});
+    sf::RectangleShape picture({box.width, box.height});
     picture.setPosition({box.left, box.top});
     picture.setFillColor(color);
     target.draw(picture);
 }
 } // namespace
 
-RangeLevel::RangeLevel() : wall{900.f, 60.f, 906.f, 620.f}
+RangeLevel::RangeLevel() : wall{900.f, 60.f, 6.f, 560.f}
 {
     fire();
 }
@@ -30,7 +30,7 @@ void RangeLevel::fire()
 {
     for (int lane = 0; lane < laneCount; ++lane)
     {
-        bullets[lane] = {100.f, laneY[lane] - 2.f, 108.f, laneY[lane] + 2.f};
+        bullets[lane] = {100.f, laneY[lane] - 2.f, 8.f, 4.f};
         flying[lane] = true;
     }
     ++shots;
@@ -70,11 +70,10 @@ void RangeLevel::render(sf::RenderTarget& target) const
     drawBox(target, wall, wallColor);
     for (int lane = 0; lane < laneCount; ++lane)
     {
-        drawBox(target, {0.f, laneY[lane] - 0.5f, getWorldSize().x, laneY[lane] + 0.5f},
-                sf::Color(60, 64, 80));
+        drawBox(target, {0.f, laneY[lane] - 0.5f, getWorldSize().x, 1.f}, sf::Color(60, 64, 80));
         const Box& bullet = bullets[lane];
         // Drawn at least 8 pixels wide, so a bullet against the wall shows.
-        drawBox(target, {bullet.left, bullet.top - 4.f, bullet.right, bullet.bottom + 4.f},
+        drawBox(target, {bullet.left, bullet.top - 4.f, bullet.width, bullet.height + 8.f},
                 bulletColor);
     }
 }

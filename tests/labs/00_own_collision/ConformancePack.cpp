@@ -2,8 +2,11 @@
 
 #include "MyCollision.h"
 
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Shapes.h"
 #include "hitbox/objects/Collision.h"
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/Rect.hpp>
@@ -124,24 +127,109 @@ void expectWorldBox(const char* rule, const GameObject& object, const Sides& exp
         << ": object = " << describe(&object);
 }
 
+// Tasks 2, 3 and 5 call task 1's worldBox (task 5 also task 4's worldCircle). They are
+// judged on the shapes YOUR functions give, so a mistake in worldBox or worldCircle costs
+// its own task alone: where your shapes are the framework's, the case's stated answer
+// stands; where they differ, the framework's edge rule (hitbox/geometry/Shapes.h and
+// Overlap.h) applied to your shapes decides.
+struct Judged
+{
+    bool expected = false;
+    std::string note; // empty when your shapes are the framework's
+};
+
+bool same(float a, float b)
+{
+    return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+bool same(const Sides& a, const Sides& b)
+{
+    return same(a.left, b.left) && same(a.top, b.top) && same(a.right, b.right) &&
+           same(a.bottom, b.bottom);
+}
+
+bool same(const WorldCircle& a, const hitbox::Circle& b)
+{
+    return same(a.center.x, b.center.x) && same(a.center.y, b.center.y) && same(a.radius, b.radius);
+}
+
+// The framework's world collision box: the answer to task 1.
+Sides referenceBox(const GameObject& object)
+{
+    return sidesOf(object.getCollisionBox());
+}
+
+std::string yourShapesNote(const std::string& shapes)
+{
+    return " (judged on the shapes your task 1 and 4 functions give, which differ from the "
+           "framework's: " +
+           shapes + ")";
+}
+
+Judged judgeBoxes(bool stated, GameObject& first, GameObject& second)
+{
+    if (!MyCollision::canCollide(&first, &second))
+        return {stated, ""};
+    const Sides a = MyCollision::worldBox(first);
+    const Sides b = MyCollision::worldBox(second);
+    if (same(a, referenceBox(first)) && same(b, referenceBox(second)))
+        return {stated, ""};
+    return {hitbox::spansOverlap(a.left, a.right, b.left, b.right) &&
+                hitbox::spansOverlap(a.top, a.bottom, b.top, b.bottom),
+            yourShapesNote("worldBox A = " + text(a) + ", B = " + text(b))};
+}
+
+Judged judgePoint(bool stated, GameObject& object, sf::Vector2f point)
+{
+    if (!MyCollision::canCollide(&object))
+        return {stated, ""};
+    const Sides box = MyCollision::worldBox(object);
+    if (same(box, referenceBox(object)))
+        return {stated, ""};
+    return {hitbox::spansOverlap(point.x, point.x, box.left, box.right) &&
+                hitbox::spansOverlap(point.y, point.y, box.top, box.bottom),
+            yourShapesNote("worldBox = " + text(box))};
+}
+
+Judged judgeCircleBox(bool stated, GameObject& circleObject, GameObject& boxObject)
+{
+    if (!MyCollision::canCollide(&circleObject, &boxObject))
+        return {stated, ""};
+    const WorldCircle circle = MyCollision::worldCircle(circleObject);
+    const Sides box = MyCollision::worldBox(boxObject);
+    if (same(circle, circleObject.getBoundingCircle()) && same(box, referenceBox(boxObject)))
+        return {stated, ""};
+    // Sides the wrong way round (left > right) are no box, as NaN sides are: no collision.
+    const bool isABox = box.left <= box.right && box.top <= box.bottom;
+    const hitbox::Box plain{box.left, box.top, box.right - box.left, box.bottom - box.top};
+    return {isABox && hitbox::circleVsBox({hitbox::toVec2(circle.center), circle.radius}, plain),
+            yourShapesNote("worldCircle centre " + text(circle.center) + " radius " +
+                           std::to_string(circle.radius) + ", worldBox = " + text(box))};
+}
+
 // `rule` names the case, e.g. "boxes touching on the left edge". Both argument orders.
 void expectBoxes(bool collide, const std::string& rule, GameObject first, GameObject second)
 {
+    const Judged judged = judgeBoxes(collide, first, second);
     const bool answer = MyCollision::checkBoundingBox(&first, &second);
-    EXPECT_EQ(answer, collide) << rule << " were reported as "
-                               << (answer ? "colliding" : "not colliding")
-                               << ": A = " << describe(&first) << ", B = " << describe(&second);
+    EXPECT_EQ(answer, judged.expected)
+        << rule << " were reported as " << (answer ? "colliding" : "not colliding")
+        << ": A = " << describe(&first) << ", B = " << describe(&second) << judged.note;
     const bool swapped = MyCollision::checkBoundingBox(&second, &first);
-    EXPECT_EQ(swapped, collide) << rule << " with the arguments swapped were reported as "
-                                << (swapped ? "colliding" : "not colliding")
-                                << ": A = " << describe(&second) << ", B = " << describe(&first);
+    EXPECT_EQ(swapped, judged.expected)
+        << rule << " with the arguments swapped were reported as "
+        << (swapped ? "colliding" : "not colliding") << ": A = " << describe(&second)
+        << ", B = " << describe(&first) << judged.note;
 }
 
 void expectPoint(bool inside, const std::string& rule, GameObject object, sf::Vector2f point)
 {
+    const Judged judged = judgePoint(inside, object, point);
     const bool answer = MyCollision::checkBoundingBox(&object, point);
-    EXPECT_EQ(answer, inside) << rule << " was reported as " << (answer ? "inside" : "outside")
-                              << ": point = " << text(point) << ", box = " << describe(&object);
+    EXPECT_EQ(answer, judged.expected)
+        << rule << " was reported as " << (answer ? "inside" : "outside")
+        << ": point = " << text(point) << ", box = " << describe(&object) << judged.note;
 }
 
 void expectCircles(bool collide, const std::string& rule, GameObject first, GameObject second)
@@ -158,11 +246,12 @@ void expectCircles(bool collide, const std::string& rule, GameObject first, Game
 
 void expectCircleBox(bool collide, const std::string& rule, GameObject circle, GameObject boxObject)
 {
+    const Judged judged = judgeCircleBox(collide, circle, boxObject);
     const bool answer = MyCollision::checkCircleBox(&circle, &boxObject);
-    EXPECT_EQ(answer, collide) << rule << " was reported as "
-                               << (answer ? "colliding" : "not colliding")
-                               << ": circle object = " << describe(&circle)
-                               << ", box object = " << describe(&boxObject);
+    EXPECT_EQ(answer, judged.expected)
+        << rule << " was reported as " << (answer ? "colliding" : "not colliding")
+        << ": circle object = " << describe(&circle) << ", box object = " << describe(&boxObject)
+        << judged.note;
 }
 
 // Whole numbers between low and high: on a coarse grid, touching happens often.
@@ -330,13 +419,16 @@ void checkBoxAgainstBox(const Variant& variant)
     {
         GameObject first = randomPlainBox(variant, random);
         GameObject second = randomPlainBox(variant, random);
-        const bool expected = Collision::checkBoundingBox(&first, &second);
+        const Judged judged =
+            judgeBoxes(Collision::checkBoundingBox(&first, &second), first, second);
+        const bool expected = judged.expected;
         if (MyCollision::checkBoundingBox(&first, &second) != expected)
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed << "): boxes "
                           << (expected ? "that overlap" : "that do not overlap")
                           << " were reported as " << (expected ? "not colliding" : "colliding")
-                          << ": A = " << describe(&first) << ", B = " << describe(&second);
+                          << ": A = " << describe(&first) << ", B = " << describe(&second)
+                          << judged.note;
             return;
         }
     }
@@ -373,13 +465,15 @@ void checkPointInBox(const Variant& variant)
         GameObject object = randomPlainBox(variant, random);
         const sf::Vector2f point =
             at(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30));
-        const bool expected = Collision::checkBoundingBox(&object, point);
+        const Judged judged =
+            judgePoint(Collision::checkBoundingBox(&object, point), object, point);
+        const bool expected = judged.expected;
         if (MyCollision::checkBoundingBox(&object, point) != expected)
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed << "): a point "
                           << (expected ? "inside" : "outside") << " was reported "
                           << (expected ? "outside" : "inside") << ": point = " << text(point)
-                          << ", box = " << describe(&object);
+                          << ", box = " << describe(&object) << judged.note;
             return;
         }
     }
@@ -425,6 +519,10 @@ void checkBoundingCircle(const Variant& variant)
     mirrored.setScale({-1.f, 1.f});
     expectCircle("a square mirrored by a negative scale", mirrored,
                  p + sf::Vector2f(-20.f, 20.f) * u, 20.f * u);
+    GameObject flipped = box(variant, 100.f, 100.f, 40.f, 40.f);
+    flipped.setScale({1.f, -1.f});
+    expectCircle("a square flipped upside down by a negative scale", flipped,
+                 p + sf::Vector2f(20.f, -20.f) * u, 20.f * u);
     GameObject turned = box(variant, 100.f, 100.f, 80.f, 40.f);
     turned.setOrigin(sf::Vector2f(20.f, 20.f) * u);
     turn(turned, 90.f);
@@ -454,6 +552,16 @@ void checkBoundingCircle(const Variant& variant)
     scaledBall.setScale({2.f, 2.f});
     expectCircles(false, "a circle scaled to radius 20 that touches another", scaledBall,
                   ball(variant, 100.f, 100.f, 25.f));
+    // Objects that cannot collide (canCollide), even where their circles overlap.
+    GameObject alone = ball(variant, 100.f, 100.f, 20.f);
+    EXPECT_FALSE(MyCollision::checkBoundingCircle(&alone, &alone))
+        << "an object tested against itself was reported as colliding: A = B = "
+        << describe(&alone);
+    EXPECT_FALSE(MyCollision::checkBoundingCircle(&alone, nullptr))
+        << "a circle and a nullptr were reported as colliding: A = " << describe(&alone);
+    GameObject dead = ball(variant, 110.f, 100.f, 10.f);
+    dead.setAlive(false);
+    expectCircles(false, "a dead circle and a circle it overlaps", dead, b);
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
@@ -525,6 +633,26 @@ void checkCircleAgainstBox(const Variant& variant)
     lostBox.setPosition({notANumber, notANumber});
     expectCircleBox(false, "a circle against a box at a NaN position",
                     ball(variant, 110.f, 110.f, 5.f), lostBox);
+    // Only x is NaN: the circle is level with the box on y, which alone must not be enough.
+    GameObject lostBoxX = b;
+    lostBoxX.setPosition({notANumber, 100.f * variant.unit + variant.offset.y});
+    expectCircleBox(false, "a circle against a box whose x is NaN (level with it on y)",
+                    ball(variant, 110.f, 110.f, 5.f), lostBoxX);
+    GameObject lostBoxY = b;
+    lostBoxY.setPosition({100.f * variant.unit + variant.offset.x, notANumber});
+    expectCircleBox(false, "a circle against a box whose y is NaN (level with it on x)",
+                    ball(variant, 110.f, 110.f, 5.f), lostBoxY);
+    // Objects that cannot collide (canCollide), even where the circle reaches into the box.
+    GameObject alone = ball(variant, 110.f, 110.f, 5.f);
+    EXPECT_FALSE(MyCollision::checkCircleBox(&alone, &alone))
+        << "an object tested against itself was reported as colliding: " << describe(&alone);
+    EXPECT_FALSE(MyCollision::checkCircleBox(&alone, nullptr))
+        << "a circle and a nullptr were reported as colliding: " << describe(&alone);
+    EXPECT_FALSE(MyCollision::checkCircleBox(nullptr, &alone))
+        << "a nullptr and a box were reported as colliding: " << describe(&alone);
+    GameObject deadCircle = ball(variant, 110.f, 110.f, 5.f);
+    deadCircle.setAlive(false);
+    expectCircleBox(false, "a dead circle inside a box", deadCircle, b);
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
@@ -532,7 +660,9 @@ void checkCircleAgainstBox(const Variant& variant)
         GameObject circle = ball(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30),
                                  wholeBetween(random, 0, 8));
         GameObject boxObject = randomPlainBox(variant, random);
-        const bool expected = Collision::checkCircleBox(&circle, &boxObject);
+        const Judged judged =
+            judgeCircleBox(Collision::checkCircleBox(&circle, &boxObject), circle, boxObject);
+        const bool expected = judged.expected;
         if (MyCollision::checkCircleBox(&circle, &boxObject) != expected)
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed
@@ -540,7 +670,7 @@ void checkCircleAgainstBox(const Variant& variant)
                           << (expected ? "that overlap" : "that do not overlap")
                           << " were reported as " << (expected ? "not colliding" : "colliding")
                           << ": circle object = " << describe(&circle)
-                          << ", box object = " << describe(&boxObject);
+                          << ", box object = " << describe(&boxObject) << judged.note;
             return;
         }
     }

@@ -6,6 +6,8 @@
 #include "BallsLevel.h"
 
 #include "hitbox/app/App.h"
+#include "hitbox/geometry/Vec2.h"
+#include "hitbox/sfml/Conversions.h"
 
 #include <gtest/gtest.h>
 
@@ -26,19 +28,10 @@ constexpr float overlapTolerance = 0.5f;
 // decides when a ball reaches a wall.
 constexpr float testSpeed = 260.f;
 
-float dot(sf::Vector2f a, sf::Vector2f b)
-{
-    return hitbox::dot(hitbox::toVec2(a), hitbox::toVec2(b));
-}
-
-float length(sf::Vector2f v)
-{
-    return std::sqrt(dot(v, v));
-}
-
 float overlapOf(const Ball& a, const Ball& b)
 {
-    return a.getRadius() + b.getRadius() - length(a.getPosition() - b.getPosition());
+    return a.getRadius() + b.getRadius() -
+           hitbox::length(hitbox::toVec2(a.getPosition() - b.getPosition()));
 }
 
 void run(BallsLevel& level, float seconds)
@@ -100,7 +93,9 @@ TEST(Task1BounceOffTheWalls, BallComesBackFromEachWallAtTheSameSpeed)
         level.addBall(middle, direction * testSpeed);
         // Long enough to reach the wall it flies at, not the one across from it.
         const sf::Vector2f toWall = level.getWorldSize() / 2.f - sf::Vector2f(radius(), radius());
-        run(level, std::abs(dot(toWall, direction)) / testSpeed + 0.5f);
+        run(level,
+            std::abs(hitbox::dot(hitbox::toVec2(toWall), hitbox::toVec2(direction))) / testSpeed +
+                0.5f);
         const sf::Vector2f velocity = level.getBall(0).getVelocity();
         EXPECT_VEC_NEAR(velocity, -direction * testSpeed, 0.01f)
             << "a ball sent towards " << labtesting::text(direction)
@@ -174,7 +169,9 @@ TEST(Task1BounceOffTheWalls, EachWallBounceIsAHitTheBallIsToldAbout)
         BallsLevel level = emptyLevel();
         level.addBall(middle, direction * testSpeed);
         const sf::Vector2f toWall = level.getWorldSize() / 2.f - sf::Vector2f(radius(), radius());
-        run(level, std::abs(dot(toWall, direction)) / testSpeed + 0.5f);
+        run(level,
+            std::abs(hitbox::dot(hitbox::toVec2(toWall), hitbox::toVec2(direction))) / testSpeed +
+                0.5f);
         EXPECT_EQ(level.getBall(0).getHitCount(), 1)
             << "a ball sent towards " << labtesting::text(direction) << " hit one wall once";
     }
@@ -320,11 +317,16 @@ TEST(Task3BounceApartLikeBilliardBalls, GlancingHitKeepsMomentumAndEnergy)
     // They touch when 2r * cos(30 degrees) apart along x, closing at 1.5 * testSpeed.
     const float secondsToMeet = (4.f - std::sqrt(3.f)) * r / (1.5f * testSpeed);
     stepApart(balls, stepsFor(secondsToMeet + 0.2f));
-    const sf::Vector2f a = balls[0].getVelocity();
-    const sf::Vector2f b = balls[1].getVelocity();
-    ASSERT_GT(length(a - startA), 0.1f * testSpeed) << "the hit should change the velocities";
-    EXPECT_VEC_NEAR(a + b, startA + startB, 0.05f) << "total momentum is kept";
-    EXPECT_NEAR(dot(a, a) + dot(b, b), dot(startA, startA) + dot(startB, startB), 1.f)
+    const hitbox::Vec2 a = hitbox::toVec2(balls[0].getVelocity());
+    const hitbox::Vec2 b = hitbox::toVec2(balls[1].getVelocity());
+    const hitbox::Vec2 startAVec = hitbox::toVec2(startA);
+    const hitbox::Vec2 startBVec = hitbox::toVec2(startB);
+    ASSERT_GT(hitbox::length(a - startAVec), 0.1f * testSpeed)
+        << "the hit should change the velocities";
+    EXPECT_VEC_NEAR(balls[0].getVelocity() + balls[1].getVelocity(), startA + startB, 0.05f)
+        << "total momentum is kept";
+    EXPECT_NEAR(hitbox::dot(a, a) + hitbox::dot(b, b),
+                hitbox::dot(startAVec, startAVec) + hitbox::dot(startBVec, startBVec), 1.f)
         << "total kinetic energy is kept (an elastic collision)";
 }
 

@@ -147,3 +147,11 @@ TEST(Task3TilesUnder, IsClippedToTheMapAndEmptyBesideIt)
     EXPECT_TRUE(tenByTen.tilesUnder({-500.f, 40.f, 100.f, 10.f}).isEmpty());
     EXPECT_TRUE(tenByTen.tilesUnder({1e30f, 40.f, 10.f, 10.f}).isEmpty());
 }
+
+TEST(Task3TilesUnder, ABoxPastTheFarEdgesEndsAtTheLastColumnAndRow)
+{
+    // The map is 480 x 480 pixels; this box reaches 40 pixels past its right and bottom.
+    expectRegion(tenByTen.tilesUnder({400.f, 400.f, 120.f, 120.f}), 8, 9, 8, 9);
+    // Inside the map, touching its right and bottom edges: still the last column and row.
+    expectRegion(tenByTen.tilesUnder({432.f, 432.f, 48.f, 48.f}), 9, 9, 9, 9);
+}

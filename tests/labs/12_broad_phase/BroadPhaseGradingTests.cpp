@@ -26,8 +26,9 @@ std::vector<Box> crowdedBoxes(unsigned seed, int count, int spread)
     {
         const float left = static_cast<float>(place(random));
         const float top = static_cast<float>(place(random));
-        boxes.push_back({left, top, left + static_cast<float>(size(random)),
-                         top + static_cast<float>(size(random))});
+        // (A braced list is evaluated left to right: width first, then height.)
+        boxes.push_back(
+            {left, top, static_cast<float>(size(random)), static_cast<float>(size(random))});
     }
     return boxes;
 }
@@ -38,7 +39,7 @@ std::vector<Box> chain(int count)
 {
     std::vector<Box> boxes;
     for (int index = 0; index < count; ++index)
-        boxes.push_back({index * 15.f, index * 15.f, index * 15.f + 20.f, index * 15.f + 20.f});
+        boxes.push_back({index * 15.f, index * 15.f, 20.f, 20.f});
     return boxes;
 }
 
@@ -88,11 +89,11 @@ TEST(Task1SortAndSweep, FindsTheSamePairsAsBruteForce)
 
 TEST(Task1SortAndSweep, BoxesTouchingOnXAreNotAPair)
 {
-    // Each box starts exactly where the one before it ends.
+    // Each box starts exactly where the one before it ends (left, top, width, height).
     const std::vector<Box> chain = {
-        {0.f, 0.f, 10.f, 10.f}, {10.f, 0.f, 20.f, 10.f}, {20.f, 0.f, 30.f, 10.f}};
+        {0.f, 0.f, 10.f, 10.f}, {10.f, 0.f, 10.f, 10.f}, {20.f, 0.f, 10.f, 10.f}};
     EXPECT_TRUE(samePairs(sortAndSweepPairs(chain).pairs, {}));
-    const std::vector<Box> overlapping = {{0.f, 0.f, 10.f, 10.f}, {9.5f, 0.f, 20.f, 10.f}};
+    const std::vector<Box> overlapping = {{0.f, 0.f, 10.f, 10.f}, {9.5f, 0.f, 10.5f, 10.f}};
     EXPECT_TRUE(samePairs(sortAndSweepPairs(overlapping).pairs, {{0, 1}}));
 }
 
@@ -124,9 +125,9 @@ TEST(Task2UniformGrid, BoxesTouchingOnACellBorderAreNotAPair)
     // The edge rule where it meets the grid: two boxes that touch exactly on a cell border
     // share that border's cells, yet touching is not overlapping.
     const std::vector<Box> touching = {
-        {0.f, 0.f, 8.f, 8.f}, {8.f, 0.f, 16.f, 8.f}, {0.f, 8.f, 8.f, 16.f}};
+        {0.f, 0.f, 8.f, 8.f}, {8.f, 0.f, 8.f, 8.f}, {0.f, 8.f, 8.f, 8.f}};
     EXPECT_TRUE(samePairs(gridPairs(touching, 8.f).pairs, {}));
-    const std::vector<Box> overlapping = {{0.f, 0.f, 8.5f, 8.f}, {8.f, 0.f, 16.f, 8.f}};
+    const std::vector<Box> overlapping = {{0.f, 0.f, 8.5f, 8.f}, {8.f, 0.f, 8.f, 8.f}};
     EXPECT_TRUE(samePairs(gridPairs(overlapping, 8.f).pairs, {{0, 1}}));
 }
 
@@ -145,7 +146,7 @@ TEST(Task2UniformGrid, EachPairSharingCellsIsTestedOnce)
 {
     // Two overlapping boxes sharing four cells, and a third alone: one exact test, not four.
     const std::vector<Box> boxes = {
-        {1.f, 1.f, 14.f, 14.f}, {2.f, 2.f, 15.f, 15.f}, {40.f, 40.f, 44.f, 44.f}};
+        {1.f, 1.f, 13.f, 13.f}, {2.f, 2.f, 13.f, 13.f}, {40.f, 40.f, 4.f, 4.f}};
     const PairSearch search = gridPairs(boxes, 8.f);
     EXPECT_TRUE(samePairs(search.pairs, {{0, 1}}));
     EXPECT_EQ(search.exactTests, 1) << "a pair that shares several cells is tested once";
@@ -191,8 +192,8 @@ TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)
         {
             const Ball& a = balls[first];
             const Ball& b = balls[second];
-            if (overlaps(Box{a.x - a.radius, a.y - a.radius, a.x + a.radius, a.y + a.radius},
-                         Box{b.x - b.radius, b.y - b.radius, b.x + b.radius, b.y + b.radius}))
+            if (overlaps(Box{a.x - a.radius, a.y - a.radius, 2.f * a.radius, 2.f * a.radius},
+                         Box{b.x - b.radius, b.y - b.radius, 2.f * b.radius, 2.f * b.radius}))
                 ++boundsOverlapping;
         }
     const long long allPairs = static_cast<long long>(balls.size() * (balls.size() - 1) / 2);
@@ -202,4 +203,23 @@ TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)
            "otherwise; saved: "
         << allPairs - search.exactTests << " of " << allPairs;
     EXPECT_LT(search.exactTests, allPairs / 20);
+}
+
+TEST(Task3BoundFirst, TheBoundIsTheBallsOwnSquareNoBigger)
+{
+    // Two balls of radius 10 whose centres are 25 apart: their squares (x - radius to
+    // x + radius) are 5 apart, so no exact test runs. Each ball on either side, along x and
+    // along y: a square too wide or too tall on any side would reach the other one.
+    const std::vector<std::vector<Ball>> pairs = {{{0.f, 0.f, 10.f}, {25.f, 0.f, 10.f}},
+                                                  {{25.f, 0.f, 10.f}, {0.f, 0.f, 10.f}},
+                                                  {{0.f, 0.f, 10.f}, {0.f, 25.f, 10.f}},
+                                                  {{0.f, 25.f, 10.f}, {0.f, 0.f, 10.f}}};
+    for (const std::vector<Ball>& balls : pairs)
+    {
+        const PairSearch search = ballPairsBoundFirst(balls);
+        EXPECT_TRUE(search.pairs.empty());
+        EXPECT_EQ(search.exactTests, 0)
+            << "balls at (" << balls[0].x << ", " << balls[0].y << ") and (" << balls[1].x << ", "
+            << balls[1].y << "), radius 10: their bounding squares are 5 pixels apart";
+    }
 }

@@ -4,6 +4,9 @@
 // flight ends within a few steps, so no test loops long.
 #include "FastMove.h"
 
+#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Shapes.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,12 +15,12 @@
 namespace
 {
 constexpr float dt = 1.f / 120.f;
-constexpr float maxSubStep = 8.f; // less than wall (6) + bullet (8): no sub-step can jump it
-const Box wall{500.f, 0.f, 506.f, 100.f};
+constexpr float maxSubStep = 8.f;       // less than wall (6) + bullet (8): no sub-step can jump it
+const Box wall{500.f, 0.f, 6.f, 100.f}; // right side 506, bottom 100
 
 Box bulletAt(float left, float top = 48.f)
 {
-    return {left, top, left + 8.f, top + 4.f};
+    return {left, top, 8.f, 4.f};
 }
 
 using Step = std::function<MoveResult(const Box&, float)>;
@@ -31,19 +34,21 @@ void expectStopsAtTheWall(const Step& step, Box start, float velocityX, int step
     {
         const MoveResult result = step(bullet, velocityX);
         bullet = result.bullet;
-        ASSERT_FALSE(overlaps(bullet, wall)) << "the bullet overlaps the wall after a step at "
-                                             << velocityX << " px/s: left " << bullet.left;
+        ASSERT_FALSE(hitbox::boxVsBox(bullet, wall))
+            << "the bullet overlaps the wall after a step at " << velocityX << " px/s: left "
+            << bullet.left;
         if (result.hitWall)
         {
             if (velocityX > 0.f)
-                EXPECT_EQ(bullet.right, wall.left)
+                EXPECT_EQ(hitbox::rightOf(bullet), wall.left)
                     << "stopped, but not against the wall's left side";
             else
-                EXPECT_EQ(bullet.left, wall.right)
+                EXPECT_EQ(bullet.left, hitbox::rightOf(wall))
                     << "stopped, but not against the wall's right side";
             return;
         }
-        const bool past = velocityX > 0.f ? bullet.left >= wall.right : bullet.right <= wall.left;
+        const bool past = velocityX > 0.f ? bullet.left >= hitbox::rightOf(wall)
+                                          : hitbox::rightOf(bullet) <= wall.left;
         ASSERT_FALSE(past) << "the bullet went through the wall at " << velocityX
                            << " px/s (started at left " << start.left << "), now at left "
                            << bullet.left;
@@ -92,7 +97,7 @@ TEST(Task1SubSteps, StopsTestingAtTheFirstHit)
     const MoveResult result =
         subSteppedStep(bulletAt(wall.left - 8.f - 20.f), 12000.f, dt, wall, maxSubStep);
     EXPECT_TRUE(result.hitWall);
-    EXPECT_EQ(result.bullet.right, wall.left);
+    EXPECT_EQ(hitbox::rightOf(result.bullet), wall.left);
     EXPECT_EQ(result.overlapTests, 3) << "sub-steps 1 and 2 are free, the 3rd hits: then stop";
 }
 
@@ -109,10 +114,10 @@ TEST(Task1SubSteps, TouchingTheWallIsNotAHit)
     // Against the wall and moving away: free. Against it and moving in: it stays there.
     const MoveResult away = subSteppedStep(bulletAt(wall.left - 8.f), -600.f, dt, wall, maxSubStep);
     EXPECT_FALSE(away.hitWall);
-    EXPECT_LT(away.bullet.right, wall.left);
+    EXPECT_LT(hitbox::rightOf(away.bullet), wall.left);
     const MoveResult into = subSteppedStep(bulletAt(wall.left - 8.f), 600.f, dt, wall, maxSubStep);
     EXPECT_TRUE(into.hitWall);
-    EXPECT_EQ(into.bullet.right, wall.left);
+    EXPECT_EQ(hitbox::rightOf(into.bullet), wall.left);
 }
 
 TEST(Task2SpeculativeContact, NeverOverlapsTheWallAtAnySpeed)
@@ -133,20 +138,21 @@ TEST(Task2SpeculativeContact, OneTestAndTheWholeMoveWhenTheWallIsFar)
     EXPECT_EQ(far.overlapTests, 1);
     const MoveResult fast = speculativeStep(bulletAt(100.f), 1e7f, dt, wall);
     EXPECT_TRUE(fast.hitWall);
-    EXPECT_EQ(fast.bullet.right, wall.left) << "a move past the wall ends touching it";
+    EXPECT_EQ(hitbox::rightOf(fast.bullet), wall.left) << "a move past the wall ends touching it";
     EXPECT_EQ(fast.overlapTests, 1);
 }
 
 TEST(Task2SpeculativeContact, OnlyAWallLevelWithTheBulletStopsIt)
 {
     // Flying below the wall (the bullet's top exactly at the wall's bottom: touching).
-    const MoveResult below = speculativeStep(bulletAt(100.f, wall.bottom), 1e6f, dt, wall);
+    const MoveResult below =
+        speculativeStep(bulletAt(100.f, hitbox::bottomOf(wall)), 1e6f, dt, wall);
     EXPECT_FALSE(below.hitWall);
-    EXPECT_GT(below.bullet.left, wall.right);
+    EXPECT_GT(below.bullet.left, hitbox::rightOf(wall));
     // Moving away from a wall it touches.
-    const MoveResult away = speculativeStep(bulletAt(wall.right), 600.f, dt, wall);
+    const MoveResult away = speculativeStep(bulletAt(hitbox::rightOf(wall)), 600.f, dt, wall);
     EXPECT_FALSE(away.hitWall);
-    EXPECT_NEAR(away.bullet.left, wall.right + 5.f, 1e-3f);
+    EXPECT_NEAR(away.bullet.left, hitbox::rightOf(wall) + 5.f, 1e-3f);
 }
 
 TEST(Task2SpeculativeContact, TheEdgesOfTheRule)
@@ -154,12 +160,12 @@ TEST(Task2SpeculativeContact, TheEdgesOfTheRule)
     // Touching the wall's side and moving in: it stays there, a hit (both sides).
     MoveResult in = speculativeStep(bulletAt(wall.left - 8.f), 600.f, dt, wall);
     EXPECT_TRUE(in.hitWall);
-    EXPECT_EQ(in.bullet.right, wall.left);
-    in = speculativeStep(bulletAt(wall.right), -600.f, dt, wall);
+    EXPECT_EQ(hitbox::rightOf(in.bullet), wall.left);
+    in = speculativeStep(bulletAt(hitbox::rightOf(wall)), -600.f, dt, wall);
     EXPECT_TRUE(in.hitWall);
-    EXPECT_EQ(in.bullet.left, wall.right);
+    EXPECT_EQ(in.bullet.left, hitbox::rightOf(wall));
     // At rest against either side: touching is not a hit, and nothing moves.
-    for (const float left : {wall.left - 8.f, wall.right})
+    for (const float left : {wall.left - 8.f, hitbox::rightOf(wall)})
     {
         const MoveResult still = speculativeStep(bulletAt(left), 0.f, dt, wall);
         EXPECT_FALSE(still.hitWall) << "a bullet at rest touching the wall at left " << left;
@@ -167,11 +173,12 @@ TEST(Task2SpeculativeContact, TheEdgesOfTheRule)
     }
     // A tiny move (0.5 px) from 0.25 px away, from either side: it ends against the wall.
     const MoveResult tinyRight = speculativeStep(bulletAt(wall.left - 8.25f), 60.f, dt, wall);
-    EXPECT_EQ(tinyRight.bullet.right, wall.left);
-    const MoveResult tinyLeft = speculativeStep(bulletAt(wall.right + 0.25f), -60.f, dt, wall);
-    EXPECT_EQ(tinyLeft.bullet.left, wall.right);
+    EXPECT_EQ(hitbox::rightOf(tinyRight.bullet), wall.left);
+    const MoveResult tinyLeft =
+        speculativeStep(bulletAt(hitbox::rightOf(wall) + 0.25f), -60.f, dt, wall);
+    EXPECT_EQ(tinyLeft.bullet.left, hitbox::rightOf(wall));
     // Sliding past just above the wall (the bullet's bottom on the wall's top edge): no wall.
-    const Box above{wall.left - 20.f, wall.top - 4.f, wall.left - 12.f, wall.top};
+    const Box above{wall.left - 20.f, wall.top - 4.f, 8.f, 4.f};
     const MoveResult past = speculativeStep(above, 6000.f, dt, wall);
     EXPECT_FALSE(past.hitWall) << "touching the wall's top edge is not level with it";
     EXPECT_NEAR(past.bullet.left, above.left + 50.f, 1e-3f);
