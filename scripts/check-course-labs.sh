@@ -6,7 +6,7 @@
 #   ./scripts/check-course-labs.sh ~/labs/Week8 ...   your own lab folders
 #   ./scripts/check-course-labs.sh --screenshots DIR  keep what each window showed
 #
-# Each folder is built as `cmake -DHITBOX_COURSE_LAB_DIR=<folder>` (see README.md), then run
+# Each folder is built as `cmake -DHITBOX_COURSE_LAB_DIR=<folder>` (see docs/course-labs.md), then run
 # for a few seconds under Xvfb and photographed. A lab passes when it builds, is still
 # running when it is closed, every picture, font and sound it asked for loaded, and the
 # picture is not blank (more than the screen's black and one clear colour), and its output

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what Hitbox needs on Debian/Ubuntu, skipping what is already there.
-# Safe to run any number of times. Other systems: see README.md ("Windows" and "macOS").
+# Safe to run any number of times. Other systems: see docs/windows-macos.md.
 # Prints a few progress lines; apt's full output goes to a log file (named on failure).
 set -euo pipefail
 
