@@ -9,6 +9,7 @@ standard library only; Linux, macOS and Windows).
     python3 scripts/lab.py mark CSV LAB TASK   exit 0 when the gradebook gives LAB's TASK its mark
     python3 scripts/lab.py labs | tasks LAB | folder LAB | student-files
     python3 scripts/lab.py exercise IN OUT [--solved 1,2]   write a solution file's exercise version
+    python3 scripts/lab.py handout OUT         write the student handout (instructor; needs PyYAML)
 
 Exit status: 0 success, 1 a test failed (grade) or the mark is missing (mark), 2 bad input.
 """
@@ -117,6 +118,11 @@ def command_gradescope(options):
     return classgrade.run_gradescope(options)
 
 
+def command_handout(options):
+    from labtool import handout
+    return handout.run(options)
+
+
 def command_tricks(options):
     from labtool import tricks
     if options.action == "make":
@@ -179,6 +185,10 @@ def main(argv=None):
     exercise.add_argument("output")
     exercise.add_argument("--solved", default="", help="tasks to keep solved, e.g. 1,3")
     exercise.set_defaults(run=command_exercise)
+
+    handout = commands.add_parser("handout", help="write the student handout into OUT (new or empty)")
+    handout.add_argument("out", metavar="OUT", help="a relative OUT is taken from the folder you are in")
+    handout.set_defaults(run=command_handout)
 
     tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
     tricks.add_argument("action", choices=("make", "check", "bench"))
