@@ -5,7 +5,8 @@
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libbox2d-dev xvfb xauth clang-format ccache)
+          libbox2d-dev xvfb xauth clang-format ccache
+          python3-pil python3-yaml) # pictures compared (compare-png.py); the handout's workflow
 
 missing=()
 for package in "${packages[@]}"; do
