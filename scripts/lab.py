@@ -9,6 +9,7 @@ standard library only; Linux, macOS and Windows).
     python3 scripts/lab.py mark CSV LAB TASK   exit 0 when the gradebook gives LAB's TASK its mark
     python3 scripts/lab.py labs | tasks LAB | folder LAB | student-files
     python3 scripts/lab.py exercise IN OUT [--solved 1,2]   write a solution file's exercise version
+    python3 scripts/lab.py check WHAT ARG...   CI: check the grader's output (check-grading.sh)
     python3 scripts/lab.py handout OUT         write the student handout (instructor; needs PyYAML)
 
 Exit status: 0 success, 1 a test failed (grade) or the mark is missing (mark), 2 bad input.
@@ -123,6 +124,21 @@ def command_handout(options):
     return handout.run(options)
 
 
+def command_check(options):
+    from labtool import checks
+    try:
+        problems, summary = checks.CHECKS[options.what](*options.paths)
+    except TypeError:
+        raise BadInput(f"check {options.what}: wrong arguments: {' '.join(options.paths)}") from None
+    except (OSError, ValueError, KeyError) as error:
+        problems, summary = [f"{options.what}: cannot read what was written: {error!r}"], ""
+    for problem in problems:
+        print(f"check: {problem}", file=sys.stderr)
+    if not problems:
+        print(f"check: {summary}")
+    return 1 if problems else 0
+
+
 def command_tricks(options):
     from labtool import tricks
     if options.action == "make":
@@ -189,6 +205,12 @@ def main(argv=None):
     handout = commands.add_parser("handout", help="write the student handout into OUT (new or empty)")
     handout.add_argument("out", metavar="OUT", help="a relative OUT is taken from the folder you are in")
     handout.set_defaults(run=command_handout)
+
+    check = commands.add_parser("check", help="CI: check what the grader wrote (results, Classroom workflow)")
+    check.add_argument("what", choices=("class-results", "classroom-workflow", "gradescope-results"))
+    check.add_argument("paths", nargs="+", metavar="ARG", help="class-results DIR | classroom-workflow FILE | "
+                       "gradescope-results FILE SCORE")
+    check.set_defaults(run=command_check)
 
     tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
     tricks.add_argument("action", choices=("make", "check", "bench"))
