@@ -139,6 +139,19 @@ def command_check(options):
     return 1 if problems else 0
 
 
+def command_fair_marks(options):
+    from labtool import fairmarks
+    labs = lablist.all_labs()
+    chosen = [lablist.find_lab(given, labs) for given in options.lab] if options.lab else labs
+    if options.action == "make":
+        fairmarks.make_class(options.path, chosen)
+        return 0
+    problems = fairmarks.check(options.path, chosen)
+    for problem in problems:
+        print(f"check-fair-marks: {problem}", file=sys.stderr)
+    return 1 if problems else 0
+
+
 def command_tricks(options):
     from labtool import tricks
     if options.action == "make":
@@ -211,6 +224,12 @@ def main(argv=None):
     check.add_argument("paths", nargs="+", metavar="ARG", help="class-results DIR | classroom-workflow FILE | "
                        "gradescope-results FILE SCORE")
     check.set_defaults(run=command_check)
+
+    fair = commands.add_parser("fair-marks", help="check-fair-marks: make its class, or check its gradebook")
+    fair.add_argument("action", choices=("make", "check"))
+    fair.add_argument("path", help="make: the class folder to write; check: the grades folder")
+    fair.add_argument("--lab", action="append", help="only this lab (repeatable; default every lab)")
+    fair.set_defaults(run=command_fair_marks)
 
     tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
     tricks.add_argument("action", choices=("make", "check", "bench"))
