@@ -28,8 +28,7 @@ grade() {
     rm -rf "$root/autograder/submission" "$root/autograder/results"
     mkdir -p "$root/autograder/submission" "$root/autograder/results"
     while IFS= read -r source; do
-        cmake "-DINPUT=$source" "-DOUTPUT=$root/autograder/submission/$(basename "$source")" \
-            "-DSOLVED_TASKS=$1" -P framework/cmake/HitboxMakeExercise.cmake
+        python3 scripts/lab.py exercise "$source" "$root/autograder/submission/$(basename "$source")" --solved "$1"
     done < <(lab_sources "$folder")
     local inside='/autograder/run_autograder'
     if [[ $first == yes ]]; then
@@ -47,15 +46,7 @@ grade() {
         for fs in proc sys dev dev/pts; do mount --bind "/$fs" "$0/$fs"; done
         chroot "$0" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
             bash -c "$1"' "$root" "$inside"
-    python3 - "$root/autograder/results/results.json" "$2" <<'EOF'
-import json, sys
-results = json.load(open(sys.argv[1]))
-tests = results["tests"]
-assert all({"name", "score", "max_score", "output"} <= set(t) for t in tests), tests
-assert results["score"] == int(sys.argv[2]), f"score {results['score']}, expected {sys.argv[2]}"
-print(f"check-gradescope: results.json: score {results['score']}/{sum(t['max_score'] for t in tests)}:",
-      ", ".join(f"{t['name']} {t['score']}" for t in tests))
-EOF
+    python3 scripts/lab.py check gradescope-results "$root/autograder/results/results.json" "$2"
 }
 tasks=$(lab_tasks "$folder" | paste -sd, -)
 grade "$tasks" "$(lab_tasks "$folder" | wc -l)"

@@ -27,41 +27,14 @@ python3 scripts/lab.py same-exercise # the build's exercise generator follows ma
 python3 scripts/lab.py tricks make "$work/class"
 ./scripts/grade-class.sh "$work/class" --lab 02 --out "$work/grades" "${build_options[@]}"
 python3 scripts/lab.py tricks check "$work/grades/grades.csv"
-python3 - "$work/grades/students" <<'EOF_PY'
-import json, pathlib, sys
-students = pathlib.Path(sys.argv[1])
-solution = json.loads((students / "solution.results.json").read_text())
-assert solution["score"] == 3 and solution["output_format"] == "md", solution["score"]
-hidden = [t for t in solution["tests"] if t["visibility"] == "after_published"]
-assert hidden and all(t["max_score"] == 0 for t in hidden), "hidden checks must be after_published"
-starter = json.loads((students / "starter.results.json").read_text())
-shown = "".join(t["output"] for t in starter["tests"] if t["visibility"] == "visible") + starter["output"]
-assert "Hidden" not in shown and "labs-hidden" not in shown, "a hidden test is named before release"
-assert "symbolic link" in (students / "symlink-to-solution.md").read_text()
-assert "tests/labs/02_bouncing_balls/BallsGradingTests.cpp" in (students / "disabled-own-tests.md").read_text()
-print("check-grading: results.json: md, hidden checks after_published and unnamed before; feedback says why")
-EOF_PY
+python3 scripts/lab.py check class-results "$work/grades/students"
 echo "check-grading: every faked submission got no marks for the tasks it faked; the honest ones got all"
 
 # The handout's GitHub Classroom workflow parses as YAML, has one 1-point test per task, and
 # every step runs even after a failed one (a lab that does not compile costs that lab only).
 rm -rf "$work/handout"
 ./scripts/make-handout.sh "$work/handout" >/dev/null
-python3 - "$work/handout/.github/workflows/classroom.yml" "$(for lab in $(lab_names); do lab_tasks "$lab"; done | wc -l)" <<'EOF_PY'
-import sys
-import yaml  # Debian: python3-yaml
-workflow = yaml.safe_load(open(sys.argv[1]))
-steps = workflow["jobs"]["grade"]["steps"]
-graders = [s for s in steps if str(s.get("uses", "")).startswith("classroom-resources/autograding-command-grader")]
-reporter = [s for s in steps if str(s.get("uses", "")).startswith("classroom-resources/autograding-grading-reporter")]
-assert len(graders) == int(sys.argv[2]), f"{len(graders)} Classroom tests for {sys.argv[2]} tasks"
-assert all(g["with"]["max-score"] == 1 and "lab.py mark" in g["with"]["command"] for g in graders)
-assert all(s.get("if") == "always()" for s in steps[2:]), "a step that does not always run"
-assert len(reporter) == 1 and reporter[0]["with"]["runners"].split(",") == [g["id"] for g in graders]
-for g in graders:
-    assert f"{g['id'].upper()}_RESULTS" in reporter[0]["env"], g["id"]
-print(f"check-grading: the Classroom workflow parses: {len(graders)} tests of 1 point, one per task, every step always runs")
-EOF_PY
+python3 scripts/lab.py check classroom-workflow "$work/handout/.github/workflows/classroom.yml"
 
 # The Classroom path on the handout: lab 1 does not compile, lab 2 is solved; the workflow's own
 # grading command must still give lab 2 every mark (a lab that does not compile costs that lab only).
@@ -78,21 +51,7 @@ echo "check-grading: Classroom: lab 1 does not compile, lab 2 still earns every 
 
 # The labs whose tests are proven fair (one mistake costs one task): check-fair-marks.sh
 # leaves each of their tasks undone in turn. Add a lab here once its tests pass that check.
-fair_labs=(
-    lab01_point_in_box
-    lab02_bouncing_balls
-    lab03_bouncing_squares
-    lab04_bullet_through_paper
-    lab05_ray_caster
-    lab06_rotated_boxes
-    lab07_swept_circles
-    lab08_many_objects
-    lab09_platformer
-    lab10_top_down
-    lab11_pong
-    lab12_broad_phase
-    lab13_fast_movers
-    lab14_resting_stack
-    lab15_world
-)
+fair_labs=(lab01_point_in_box lab02_bouncing_balls lab03_bouncing_squares lab04_bullet_through_paper
+    lab05_ray_caster lab06_rotated_boxes lab07_swept_circles lab08_many_objects lab09_platformer
+    lab10_top_down lab11_pong lab12_broad_phase lab13_fast_movers lab14_resting_stack lab15_world)
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"

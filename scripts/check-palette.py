@@ -12,13 +12,12 @@ and each state against the window's background, must stay at least MIN_DELTA_E a
 colour difference in CIELAB; about 2.3 is just noticeable). The shapes differ too (solid,
 dashed, hatched: DebugRenderer.h), so colour is never the only cue; this checks the colours.
 Writes each screenshot as seen with each deficiency into OUTPUT_FOLDER (NAME-deuteranopia.png).
-Exits 1 naming the pair that came too close, 2 on bad input. Python's standard library only.
+Exits 1 naming the pair that came too close, 2 on bad input. Pictures are read and written
+with Pillow (python3-pil), through scripts/compare-png.py.
 """
 import importlib.util
 import re
-import struct
 import sys
-import zlib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -39,11 +38,13 @@ SIMULATIONS = {  # Machado et al. 2009, table of severity 1.0
 }
 
 
-def load_png_reader():
+def load_png_module():
+    """scripts/compare-png.py: reads and writes pictures with Pillow (python3-pil)."""
     spec = importlib.util.spec_from_file_location("compare_png", ROOT / "scripts" / "compare-png.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
-    return module.pixels
+    module.pillow_image()  # (under a python3 without Pillow, this script restarts under Debian's)
+    return module
 
 
 def palette():
@@ -84,18 +85,6 @@ def delta_e(a, b):
     return sum((x - y) ** 2 for x, y in zip(lab(a), lab(b))) ** 0.5
 
 
-def write_png(path, width, height, rgba):
-    rows = b"".join(b"\x00" + rgba[y * width * 4:(y + 1) * width * 4] for y in range(height))
-
-    def chunk(kind, body):
-        return (struct.pack(">I", len(body)) + kind + body +
-                struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
-
-    path.write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height,
-                                                                         8, 6, 0, 0, 0)) +
-                     chunk(b"IDAT", zlib.compress(rows, 6)) + chunk(b"IEND", b""))
-
-
 def main():
     if len(sys.argv) < 3:
         print("usage: check-palette.py OUTPUT_FOLDER SCREENSHOT.png...", file=sys.stderr)
@@ -116,11 +105,11 @@ def main():
     if missing:
         print(f"check-palette: DebugRenderer.cpp defines no {', '.join(missing)}", file=sys.stderr)
         return 2
-    read = load_png_reader()
+    png = load_png_module()
     output.mkdir(parents=True, exist_ok=True)
     drawn = {name: 0 for name in STATES}
     for shot in shots:
-        width, height, rgba = read(shot)
+        width, height, rgba = png.pixels(shot)
         counts = {}
         for i in range(0, len(rgba), 4):
             key = rgba[i:i + 3]
@@ -132,7 +121,7 @@ def main():
             pixels = bytearray(rgba)
             for i in range(0, len(pixels), 4):
                 pixels[i:i + 3] = seen[bytes(pixels[i:i + 3])]
-            write_png(output / f"{shot.stem}-{deficiency}.png", width, height, bytes(pixels))
+            png.write_png(output / f"{shot.stem}-{deficiency}.png", width, height, bytes(pixels))
     failures = [f"{name} is not drawn in any screenshot" for name in STATES
                 if drawn[name] < MIN_PIXELS]
     for deficiency, matrix in SIMULATIONS.items():

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Compares the PNG files of two folders pixel by pixel (python3's standard library only).
+"""Compares the PNG files of two folders pixel by pixel (Pillow decodes them).
 
 Usage: scripts/compare-png.py FOLDER_A FOLDER_B
 Prints the share of pixels that differ for each picture and exits 1 if a picture is missing,
@@ -7,53 +7,40 @@ has another size, or differs in more than TOLERANCE_PERCENT of its pixels. SFML 
 text and the edges of circles slightly differently (SFML 3's letters are a little narrower;
 measured on the 24 lab screenshots: 0.6-3.3 % of the pixels differ), so an exact match is
 not expected; a moved object or a missing shape changes far more.
+Pillow is Debian's python3-pil (scripts/install-deps.sh installs it), which Debian's own
+python3 imports: run under another python3 (a pyenv, a venv) without Pillow, the script
+starts itself again under /usr/bin/python3. Exit 2 when neither has Pillow.
 """
-import struct
+import os
 import sys
-import zlib
 from pathlib import Path
+
+DEBIAN_PYTHON = "/usr/bin/python3"
+
+
+def pillow_image():
+    """PIL.Image; restarts the running script under Debian's python3 when this one lacks Pillow."""
+    try:
+        from PIL import Image
+        return Image
+    except ImportError:
+        if os.path.exists(DEBIAN_PYTHON) and os.path.realpath(sys.executable) != os.path.realpath(DEBIAN_PYTHON):
+            os.execv(DEBIAN_PYTHON, [DEBIAN_PYTHON, *sys.argv])
+        print(f"{Path(sys.argv[0]).name}: needs Pillow (Debian: python3-pil; scripts/install-deps.sh installs it)",
+              file=sys.stderr)
+        sys.exit(2)
 
 
 def pixels(path):
-    """Width, height and the unfiltered RGBA rows of an 8-bit RGB or RGBA PNG."""
-    data = path.read_bytes()
-    width = height = channels = 0
-    packed = b""
-    position = 8  # after the signature
-    while position < len(data):
-        length, kind = struct.unpack(">I4s", data[position:position + 8])
-        body = data[position + 8:position + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            channels = {2: 3, 6: 4}[colour]
-            assert depth == 8, "only 8-bit pictures"
-        elif kind == b"IDAT":
-            packed += body
-        position += 12 + length
-    raw = zlib.decompress(packed)
-    stride = width * channels
-    rows, previous = [], bytearray(stride)
-    for y in range(height):
-        start = y * (stride + 1)
-        kind, row = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        for x in range(stride):  # the five PNG filters (PNG specification, section 9)
-            left = row[x - channels] if x >= channels else 0
-            up, corner = previous[x], previous[x - channels] if x >= channels else 0
-            if kind == 1:
-                row[x] = (row[x] + left) & 255
-            elif kind == 2:
-                row[x] = (row[x] + up) & 255
-            elif kind == 3:
-                row[x] = (row[x] + (left + up) // 2) & 255
-            elif kind == 4:
-                guess = left + up - corner
-                near = min((abs(guess - left), 0, left), (abs(guess - up), 1, up),
-                           (abs(guess - corner), 2, corner))[2]
-                row[x] = (row[x] + near) & 255
-        rows.append(bytes(row) if channels == 4 else bytes(
-            b for i in range(0, stride, 3) for b in row[i:i + 3] + b"\xff"))
-        previous = row
-    return width, height, b"".join(rows)
+    """Width, height and the RGBA bytes, row by row, of a picture."""
+    with pillow_image().open(path) as picture:
+        rgba = picture.convert("RGBA")
+        return rgba.width, rgba.height, rgba.tobytes()
+
+
+def write_png(path, width, height, rgba):
+    """Writes RGBA bytes, row by row, as a PNG."""
+    pillow_image().frombytes("RGBA", (width, height), bytes(rgba)).save(path, format="PNG")
 
 
 TOLERANCE_PERCENT = 4.0

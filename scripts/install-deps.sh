@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Installs what Hitbox needs on Debian/Ubuntu, skipping what is already there.
-# Safe to run any number of times. Other systems: see README.md ("Windows" and "macOS").
+# Safe to run any number of times. Other systems: see docs/windows-macos.md.
 # Prints a few progress lines; apt's full output goes to a log file (named on failure).
 set -euo pipefail
 
 packages=(g++ make cmake pkg-config libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libbox2d-dev xvfb xauth clang-format ccache)
+          libbox2d-dev xvfb xauth clang-format ccache
+          python3-pil python3-yaml) # pictures compared (compare-png.py); the handout's workflow
 
 missing=()
 for package in "${packages[@]}"; do

@@ -10,6 +10,8 @@ standard library only; Linux, macOS and Windows).
     python3 scripts/lab.py labs | tasks LAB | folder LAB | student-files
     python3 scripts/lab.py exercise IN OUT [--solved 1,2]   write a solution file's exercise version
     python3 scripts/lab.py check-exercises | check-handout     the course's checks of its labs (labchecks.py)
+    python3 scripts/lab.py check WHAT ARG...   CI: check the grader's output (check-grading.sh)
+    python3 scripts/lab.py handout OUT         write the student handout (instructor; needs PyYAML)
 
 Exit status: 0 success, 1 a test failed (grade) or the mark is missing (mark), 2 bad input.
 """
@@ -128,6 +130,39 @@ def command_check_handout(options):
     return labchecks.check_handout(options)
 
 
+def command_handout(options):
+    from labtool import handout
+    return handout.run(options)
+
+
+def command_check(options):
+    from labtool import checks
+    try:
+        problems, summary = checks.CHECKS[options.what](*options.paths)
+    except TypeError:
+        raise BadInput(f"check {options.what}: wrong arguments: {' '.join(options.paths)}") from None
+    except (OSError, ValueError, KeyError) as error:
+        problems, summary = [f"{options.what}: cannot read what was written: {error!r}"], ""
+    for problem in problems:
+        print(f"check: {problem}", file=sys.stderr)
+    if not problems:
+        print(f"check: {summary}")
+    return 1 if problems else 0
+
+
+def command_fair_marks(options):
+    from labtool import fairmarks
+    labs = lablist.all_labs()
+    chosen = [lablist.find_lab(given, labs) for given in options.lab] if options.lab else labs
+    if options.action == "make":
+        fairmarks.make_class(options.path, chosen)
+        return 0
+    problems = fairmarks.check(options.path, chosen)
+    for problem in problems:
+        print(f"check-fair-marks: {problem}", file=sys.stderr)
+    return 1 if problems else 0
+
+
 def command_tricks(options):
     from labtool import tricks
     if options.action == "make":
@@ -199,6 +234,21 @@ def main(argv=None):
     handout.add_argument("--out", default=str(lablist.REPO / "build" / "handout-check"),
                          help="where to write the handout (default build/handout-check; replaced)")
     handout.set_defaults(run=command_check_handout)
+    handout = commands.add_parser("handout", help="write the student handout into OUT (new or empty)")
+    handout.add_argument("out", metavar="OUT", help="a relative OUT is taken from the folder you are in")
+    handout.set_defaults(run=command_handout)
+
+    check = commands.add_parser("check", help="CI: check what the grader wrote (results, Classroom workflow)")
+    check.add_argument("what", choices=("class-results", "classroom-workflow", "gradescope-results"))
+    check.add_argument("paths", nargs="+", metavar="ARG", help="class-results DIR | classroom-workflow FILE | "
+                       "gradescope-results FILE SCORE")
+    check.set_defaults(run=command_check)
+
+    fair = commands.add_parser("fair-marks", help="check-fair-marks: make its class, or check its gradebook")
+    fair.add_argument("action", choices=("make", "check"))
+    fair.add_argument("path", help="make: the class folder to write; check: the grades folder")
+    fair.add_argument("--lab", action="append", help="only this lab (repeatable; default every lab)")
+    fair.set_defaults(run=command_fair_marks)
 
     tricks = commands.add_parser("tricks", help="check-grading: make the class of tricks, or check its gradebook")
     tricks.add_argument("action", choices=("make", "check", "bench"))

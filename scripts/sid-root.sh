@@ -1,44 +1,31 @@
 #!/usr/bin/env bash
 # Builds and tests Hitbox against SFML 3 on a Debian 12 machine, whose own SFML is 2.5.
-#
 # Debian unstable ("sid") ships libsfml-dev 3.x, which replaces 2.x, so SFML 3 lives in a
-# separate Debian root made with debootstrap. The root is made once and kept (it takes a few
-# minutes); later calls reuse it.
+# separate Debian root made with debootstrap, once (a few minutes), and kept.
 #
 # Usage: scripts/sid-root.sh create          make the root if it is missing (needs root)
 #        scripts/sid-root.sh run COMMAND...  run COMMAND inside the root, in this
 #                                            checkout (mounted at /hitbox)
 # HITBOX_SID_ROOT chooses where the root lives (default /var/cache/hitbox/sid-root).
 set -euo pipefail
-
 root=${HITBOX_SID_ROOT:-/var/cache/hitbox/sid-root}
 here=$(cd "$(dirname "$0")/.." && pwd)
-# What a new student installs inside the root (install-deps.sh adds the rest itself).
-base_packages=(git ca-certificates sudo)
-
+base_packages=(git ca-certificates sudo) # what a new student installs (install-deps.sh adds the rest)
 log() { echo "sid-root: $*"; }
 
-mirror() {
-    # The same mirror this machine's apt uses.
-    local uri
-    uri=$(grep -rhoE '^(URIs:|deb) *https?://[^ ]+/debian/?' /etc/apt/sources.list /etc/apt/sources.list.d/ 2>/dev/null |
-          head -n 1 | grep -oE 'https?://[^ ]+' || true)
-    echo "${uri:-http://deb.debian.org/debian}"
-}
-
 create() {
-    if [[ -f $root/.hitbox-ready ]]; then
-        return 0
-    fi
+    [[ ! -f $root/.hitbox-ready ]] || return 0
     [[ $(id -u) -eq 0 ]] || { echo "sid-root: making the root needs root (run with sudo)" >&2; exit 1; }
     command -v debootstrap >/dev/null || {
         log "installing debootstrap"
         apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >/dev/null
     }
-    rm -rf "$root"
-    mkdir -p "$root"
+    # The same mirror this machine's apt uses.
+    mirror=$(grep -rhoE '^(URIs:|deb) *https?://[^ ]+/debian/?' /etc/apt/sources.list /etc/apt/sources.list.d/ \
+        2>/dev/null | head -n 1 | grep -oE 'https?://[^ ]+' || true)
+    rm -rf "$root" && mkdir -p "$root"
     log "debootstrap sid into $root (a few minutes; log in $root.log)"
-    debootstrap --variant=minbase sid "$root" "$(mirror)" >"$root.log" 2>&1 ||
+    debootstrap --variant=minbase sid "$root" "${mirror:-http://deb.debian.org/debian}" >"$root.log" 2>&1 ||
         { tail -n 20 "$root.log" >&2; exit 1; }
     # This mirror's sid Release file is past its valid-until date.
     echo 'Acquire::Check-Valid-Until "false";' >"$root/etc/apt/apt.conf.d/99hitbox-no-valid-until"
@@ -62,16 +49,11 @@ in_root() {
         exec chroot "$root" "$@"' bash "$root" "$@"
 }
 
-run() {
-    create
-    # This checkout appears inside the root at /hitbox (the same files, not a copy).
-    HITBOX_SID_CHECKOUT=$here in_root env -i HOME=/root LANG=C.UTF-8 CI="${CI:-}" \
-        PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        bash -c 'cd /hitbox && "$@"' bash "$@"
-}
-
 case ${1:-} in
 create) create ;;
-run) shift; run "$@" ;;
+run) # This checkout appears inside the root at /hitbox (the same files, not a copy).
+    shift && create
+    HITBOX_SID_CHECKOUT=$here in_root env -i HOME=/root LANG=C.UTF-8 CI="${CI:-}" \
+        PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin bash -c 'cd /hitbox && "$@"' bash "$@" ;;
 *) echo "usage: scripts/sid-root.sh create | run COMMAND..." >&2; exit 2 ;;
 esac

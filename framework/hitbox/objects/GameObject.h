@@ -2,7 +2,7 @@
 //
 // The base class of every object in the labs and in Pong, and the same API as the course's
 // old Framework/GameObject.h (so old lab code builds unchanged). What changed from the old
-// framework is listed in the README ("Differences from the course's old framework").
+// framework is listed in docs/course-labs.md ("Differences from the course's framework").
 //
 // The collision box is measured from the object's position, i.e. from its origin point:
 //     setOrigin({16, 16});
