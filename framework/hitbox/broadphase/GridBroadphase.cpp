@@ -220,11 +220,11 @@ void GridBroadphase::prepare(Half& half)
     double sideSum = 0.0;
     std::size_t usable = 0;
     std::uint32_t rules = 0;
-    for (std::size_t i = half.begin; i < half.end; ++i)
+    // Any box, in plain C++: NaN and infinite boxes, negative sizes, and every box where the
+    // SSE path below is not compiled.
+    auto loadOne = [&](std::size_t i)
     {
-        const BroadphaseItem& item = source[i];
-        rules |= ~item.mask | std::uint32_t(item.layer == 0);
-        const Box& box = item.box;
+        const Box& box = source[i].box;
         Edges edge = {inf, inf, inf, inf}; // min = +inf, max = -inf: overlaps nothing
         // All four finite, in one test: x - x is 0 for a finite x and NaN for NaN or
         // infinity, and NaN spreads through the sum (four isfinite calls were four branches).
@@ -257,6 +257,79 @@ void GridBroadphase::prepare(Half& half)
             outRanges[i] = range;
             finder.count(range, counts);
         }
+    };
+    std::size_t i = half.begin;
+#if defined(HITBOX_GRID_SSE)
+    // Four lanes per box: the usual box (finite, sizes not negative) is loaded, bounded and
+    // placed in its cells with four-wide SSE steps and no branch but the one that sends the
+    // rare other boxes to loadOne. The same float operations as loadOne, so the same edges
+    // and cells to the last bit; the bounds and sizes are summed in other lanes (and the
+    // sizes in another order), which moves the grid's cell size in its last bits at most,
+    // and any grid finds the same pairs.
+    const __m128 signs = _mm_set_ps(-0.f, -0.f, 0.f, 0.f);
+    const __m128 lowest = _mm_set1_ps(-largest);
+    const __m128 highest = _mm_set1_ps(largest);
+    const __m128 origin = _mm_set_ps(finder.originY, finder.originX, finder.originY, finder.originX);
+    const __m128 scale = _mm_set1_ps(finder.scale);
+    const __m128 last = _mm_set_ps(finder.lastRow, finder.lastColumn, finder.lastRow,
+                                   finder.lastColumn);
+    const __m128 zero = _mm_setzero_ps();
+    __m128 lowBounds = _mm_set1_ps(inf);   // (left, top, -, -)
+    __m128 highBounds = _mm_set1_ps(-inf); // (-, -, right, bottom)
+    __m128d sizeSums = _mm_setzero_pd();   // (sum of widths, sum of heights)
+    std::size_t fastBoxes = 0;
+    for (; i < half.end; ++i)
+    {
+        const BroadphaseItem& item = source[i];
+        rules |= ~item.mask | std::uint32_t(item.layer == 0);
+        const __m128 box = _mm_loadu_ps(&item.box.left); // (left, top, width, height)
+        // Finite (x - x == 0) and no negative size, all four lanes at once.
+        const int finite = _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(box, box), zero));
+        const int negative = _mm_movemask_ps(_mm_cmplt_ps(box, zero)) & 0xC;
+        if (finite != 0xF || negative != 0)
+        {
+            loadOne(i);
+            continue;
+        }
+        // (left, top, left + width, top + height): the box's min and max corners.
+        const __m128 corners = _mm_movelh_ps(box, _mm_add_ps(box, _mm_movehl_ps(box, box)));
+        _mm_store_ps(&out[i].minX, _mm_xor_ps(corners, signs));
+        const __m128 finiteCorners = _mm_min_ps(_mm_max_ps(corners, lowest), highest);
+        lowBounds = _mm_min_ps(lowBounds, finiteCorners);
+        highBounds = _mm_max_ps(highBounds, finiteCorners);
+        sizeSums = _mm_add_pd(sizeSums, _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(finiteCorners,
+                                                                              finiteCorners)),
+                                                   _mm_cvtps_pd(finiteCorners)));
+        ++fastBoxes;
+        if (count)
+        {
+            // column(x) and row(y) of both corners at once, as CellFinder works them out.
+            const __m128 scaled = _mm_mul_ps(_mm_sub_ps(corners, origin), scale);
+            const __m128i cells =
+                _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(scaled, zero), last)); // (x0, y0, x1, y1)
+            CellRange& range = outRanges[i];
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(&range),
+                             _mm_shuffle_epi32(cells, _MM_SHUFFLE(3, 1, 2, 0)));
+            finder.count(range, counts);
+        }
+    }
+    alignas(16) float low[4], high[4];
+    alignas(16) double sizes[2];
+    _mm_store_ps(low, lowBounds);
+    _mm_store_ps(high, highBounds);
+    _mm_store_pd(sizes, sizeSums);
+    left = std::min(left, low[0]);
+    top = std::min(top, low[1]);
+    right = std::max(right, high[2]);
+    bottom = std::max(bottom, high[3]);
+    sideSum += 0.5 * (sizes[0] + sizes[1]);
+    usable += fastBoxes;
+#endif
+    for (; i < half.end; ++i)
+    {
+        const BroadphaseItem& item = source[i];
+        rules |= ~item.mask | std::uint32_t(item.layer == 0);
+        loadOne(i);
     }
     half.left = left;
     half.top = top;
