@@ -112,8 +112,8 @@ void addSquare(std::vector<sf::Vertex>& vertices, const hitbox::Box& box, sf::Co
     const sf::Vector2f topRight{box.left + box.width, box.top};
     const sf::Vector2f bottomLeft{box.left, box.top + box.height};
     const sf::Vector2f bottomRight{box.left + box.width, box.top + box.height};
-    for (const sf::Vector2f& corner : {topLeft, topRight, bottomRight, topLeft, bottomRight,
-                                       bottomLeft})
+    for (const sf::Vector2f& corner :
+         {topLeft, topRight, bottomRight, topLeft, bottomRight, bottomLeft})
         vertices.push_back({corner, color});
 }
 

@@ -260,6 +260,8 @@ void GridBroadphase::prepare(Half& half)
     };
     std::size_t i = half.begin;
 #if defined(HITBOX_GRID_SSE)
+    if (!gridSettings.simd)
+        i = half.end; // the plain loop below does every box
     // Four lanes per box: the usual box (finite, sizes not negative) is loaded, bounded and
     // placed in its cells with four-wide SSE steps and no branch but the one that sends the
     // rare other boxes to loadOne. The same float operations as loadOne, so the same edges
@@ -269,10 +271,11 @@ void GridBroadphase::prepare(Half& half)
     const __m128 signs = _mm_set_ps(-0.f, -0.f, 0.f, 0.f);
     const __m128 lowest = _mm_set1_ps(-largest);
     const __m128 highest = _mm_set1_ps(largest);
-    const __m128 origin = _mm_set_ps(finder.originY, finder.originX, finder.originY, finder.originX);
+    const __m128 origin =
+        _mm_set_ps(finder.originY, finder.originX, finder.originY, finder.originX);
     const __m128 scale = _mm_set1_ps(finder.scale);
-    const __m128 last = _mm_set_ps(finder.lastRow, finder.lastColumn, finder.lastRow,
-                                   finder.lastColumn);
+    const __m128 last =
+        _mm_set_ps(finder.lastRow, finder.lastColumn, finder.lastRow, finder.lastColumn);
     const __m128 zero = _mm_setzero_ps();
     __m128 lowBounds = _mm_set1_ps(inf);   // (left, top, -, -)
     __m128 highBounds = _mm_set1_ps(-inf); // (-, -, right, bottom)
@@ -297,9 +300,9 @@ void GridBroadphase::prepare(Half& half)
         const __m128 finiteCorners = _mm_min_ps(_mm_max_ps(corners, lowest), highest);
         lowBounds = _mm_min_ps(lowBounds, finiteCorners);
         highBounds = _mm_max_ps(highBounds, finiteCorners);
-        sizeSums = _mm_add_pd(sizeSums, _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(finiteCorners,
-                                                                              finiteCorners)),
-                                                   _mm_cvtps_pd(finiteCorners)));
+        sizeSums = _mm_add_pd(sizeSums,
+                              _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(finiteCorners, finiteCorners)),
+                                         _mm_cvtps_pd(finiteCorners)));
         ++fastBoxes;
         if (count)
         {
@@ -325,11 +328,11 @@ void GridBroadphase::prepare(Half& half)
     sideSum += 0.5 * (sizes[0] + sizes[1]);
     usable += fastBoxes;
 #endif
-    for (; i < half.end; ++i)
+    for (std::size_t k = gridSettings.simd ? i : half.begin; k < half.end; ++k)
     {
-        const BroadphaseItem& item = source[i];
+        const BroadphaseItem& item = source[k];
         rules |= ~item.mask | std::uint32_t(item.layer == 0);
-        loadOne(i);
+        loadOne(k);
     }
     half.left = left;
     half.top = top;
@@ -499,11 +502,50 @@ void GridBroadphase::fillCells(Half& half)
     // [/slide]
 }
 
-void GridBroadphase::testCells(Half& half)
+namespace
+{
+
+// Negated-max edges: a box's query is its (maxX, maxY, -minX, -minY), so that b overlaps it
+// exactly when each of b's (minX, minY, -maxX, -maxY) is less: bMin < aMax, -bMax < -aMin.
+// Two versions of the same four comparisons: PlainPairTest in C++ (every machine), and
+// SsePairTest, one four-wide "less than" where the compiler offers SSE.
+struct PlainPairTest
+{
+    float maxX, maxY, negMinX, negMinY;
+    explicit PlainPairTest(const float* edges) // (minX, minY, -maxX, -maxY)
+        : maxX(-edges[2]), maxY(-edges[3]), negMinX(-edges[0]), negMinY(-edges[1])
+    {
+    }
+    // Branch-free: `&` of the four comparisons, not `&&`.
+    bool overlaps(const float* other) const
+    {
+        return (other[0] < maxX) & (other[1] < maxY) & (other[2] < negMinX) & (other[3] < negMinY);
+    }
+};
+
+#if defined(HITBOX_GRID_SSE)
+struct SsePairTest
+{
+    __m128 query;
+    explicit SsePairTest(const float* edges)
+    {
+        const __m128 negated = _mm_xor_ps(_mm_load_ps(edges), _mm_set1_ps(-0.f));
+        query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+    }
+    bool overlaps(const float* other) const
+    {
+        return _mm_movemask_ps(_mm_cmplt_ps(_mm_load_ps(other), query)) == 0xF;
+    }
+};
+#endif
+
+} // namespace
+
+template <typename PairTest>
+std::size_t GridBroadphase::testCellRange(const Half& half, Pair* out) const
 {
     const Edges* boxes = cellEdges.data();
     const std::uint32_t* items = cellItems.data();
-    Pair* out = half.found.get(); // sized by startCells
     std::size_t found = 0;
     for (std::size_t cell = half.firstCell; cell < half.endCell; ++cell)
     {
@@ -516,27 +558,10 @@ void GridBroadphase::testCells(Half& half)
         {
             const std::uint32_t a = items[p];
             const std::uint32_t first = a & kItemIndexMask;
-            // Negated-max edges: a's (maxX, maxY, -minX, -minY), so that b overlaps a exactly
-            // when each of b's (minX, minY, -maxX, -maxY) is less: bMin < aMax, -bMax < -aMin.
-#if defined(HITBOX_GRID_SSE)
-            const __m128 signs = _mm_set1_ps(-0.f);
-            const __m128 negated = _mm_xor_ps(_mm_loadu_ps(&boxes[p].minX), signs);
-            const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
-#else
-            const Edges query = {-boxes[p].negMaxX, -boxes[p].negMaxY, -boxes[p].minX,
-                                 -boxes[p].minY};
-#endif
+            const PairTest test(&boxes[p].minX);
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
-#if defined(HITBOX_GRID_SSE)
-                const int less = _mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(&boxes[q].minX), query));
-                const bool overlap = less == 0xF;
-#else
-                const Edges& other = boxes[q];
-                const bool overlap = (other.minX < query.minX) & (other.minY < query.minY) &
-                                     (other.negMaxX < query.negMaxX) &
-                                     (other.negMaxY < query.negMaxY);
-#endif
+                const bool overlap = test.overlaps(&boxes[q].minX);
                 // Each pair once: only the top-left cell two boxes share reports them.
                 const std::uint32_t b = items[q];
                 const bool reportHere = ((a | b) & kBothFlags) == kBothFlags;
@@ -547,7 +572,20 @@ void GridBroadphase::testCells(Half& half)
         }
         // [/slide]
     }
-    half.foundCount = found;
+    return found;
+}
+
+void GridBroadphase::testCells(Half& half)
+{
+    Pair* out = half.found.get(); // sized by startCells
+#if defined(HITBOX_GRID_SSE)
+    if (gridSettings.simd)
+    {
+        half.foundCount = testCellRange<SsePairTest>(half, out);
+        return;
+    }
+#endif
+    half.foundCount = testCellRange<PlainPairTest>(half, out);
 }
 
 void GridBroadphase::gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
