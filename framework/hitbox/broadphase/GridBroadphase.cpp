@@ -7,6 +7,7 @@
 //   - Last frame's grid: the cells are worked out with last frame's grid and only worked out
 //     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
+//   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
 //   - Split entries: 16 aligned bytes of edges plus a 4-byte item word in a second array.
 //   - Pairs in cell order: no sort when the caller does not need (first, second) order.
 //   - Two halves: with two threads, each half of the items is prepared and filled in by one
@@ -116,6 +117,21 @@ double runHalves(bool twoThreads, Work work)
 // guesses cost more than the extra calls. Why dummies rather than naming the box's own cell
 // again: four read-modify-writes of one counter in a row each wait for the one before.
 // Bigger boxes get one call per cell they cover. Measured: docs/performance.md.
+// The four calls of a box that covers one cell, two or 2 x 2: `cell` its top-left cell,
+// right / down 1 if it reaches the next column / row.
+template <typename Visit>
+inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, std::size_t width,
+                         std::size_t dummies, std::uint32_t firstColumn, std::uint32_t firstRow,
+                         Visit visit)
+{
+    const std::size_t both = right & down;
+    // The cell below and to the right is covered only if the box reaches both.
+    visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
+    visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
+    visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
+    visit(cell, 1u, firstColumn | firstRow);
+}
+
 template <typename Range, typename Visit>
 inline void forEachCell(const Range& range, std::size_t width, std::size_t dummies,
                         std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
@@ -128,18 +144,32 @@ inline void forEachCell(const Range& range, std::size_t width, std::size_t dummi
     const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
     if (right <= 1 && down <= 1)
     {
-        const std::size_t both = right & down;
-        // The cell below and to the right is covered only if the box reaches both.
-        visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
-        visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
-        visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
-        visit(cell, 1u, firstColumn | firstRow);
+        forFourCells(cell, right, down, width, dummies, firstColumn, firstRow, visit);
         return;
     }
     for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
         for (int cx = range.x0; cx <= range.x1; ++cx)
             visit(std::size_t(cy) * width + std::size_t(cx), 1u,
                   (cx == range.x0 ? firstColumn : 0u) | (cy == range.y0 ? firstRow : 0u));
+}
+
+// Packed cell words: what the fill pass needs of a box's cells in 4 bytes, not a 16-byte
+// range (at 100,000 boxes 1.2 MB less written and read again every frame): its top-left cell
+// in the low 30 bits, "reaches the next column" in bit 30, "reaches the next row" in bit 31.
+// kWideBox for the rare others (bigger than 2 x 2 cells, NaN, or a cell number that does not
+// fit): the fill works their cells out again from their edges.
+constexpr std::uint32_t kWideBox = 0xFFFFFFFFu;
+constexpr std::size_t kPackedCellLimit = (std::size_t(1) << 30) - 1;
+
+template <typename Range>
+inline std::uint32_t packCells(const Range& range, std::size_t width)
+{
+    const std::size_t right = std::size_t(range.x1 - range.x0); // huge when empty, as above
+    const std::size_t down = std::size_t(range.y1 - range.y0);
+    const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
+    if (right > 1 || down > 1 || cell >= kPackedCellLimit)
+        return kWideBox;
+    return std::uint32_t(cell) | std::uint32_t(right) << 30 | std::uint32_t(down) << 31;
 }
 
 // The three dummy counters forEachCell uses, after the grid's cells.
@@ -205,7 +235,7 @@ void GridBroadphase::prepare(Half& half)
     // (with last frame's grid) the box's cells and their counts, in one walk over the items.
     const BroadphaseItem* source = currentItems;
     Edges* out = edges.data();
-    CellRange* outRanges = ranges.data();
+    std::uint32_t* outWords = cellWords.data();
     const CellFinder finder(shape);
     const bool count = hasShape;
     if (count)
@@ -254,7 +284,7 @@ void GridBroadphase::prepare(Half& half)
         if (count)
         {
             const CellRange range = finder.cellsOf(edge);
-            outRanges[i] = range;
+            outWords[i] = packCells(range, finder.width);
             finder.count(range, counts);
         }
     };
@@ -310,9 +340,10 @@ void GridBroadphase::prepare(Half& half)
             const __m128 scaled = _mm_mul_ps(_mm_sub_ps(corners, origin), scale);
             const __m128i cells =
                 _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(scaled, zero), last)); // (x0, y0, x1, y1)
-            CellRange& range = outRanges[i];
+            CellRange range;
             _mm_storeu_si128(reinterpret_cast<__m128i*>(&range),
                              _mm_shuffle_epi32(cells, _MM_SHUFFLE(3, 1, 2, 0)));
+            outWords[i] = packCells(range, finder.width);
             finder.count(range, counts);
         }
     }
@@ -351,8 +382,9 @@ void GridBroadphase::countCells(Half& half)
     const CellFinder finder(shape);
     for (std::size_t i = half.begin; i < half.end; ++i)
     {
-        ranges[i] = finder.cellsOf(edges[i]);
-        finder.count(ranges[i], counts);
+        const CellRange range = finder.cellsOf(edges[i]);
+        cellWords[i] = packCells(range, finder.width);
+        finder.count(range, counts);
     }
 }
 
@@ -481,7 +513,8 @@ void GridBroadphase::fillCells(Half& half)
     std::uint32_t* outItems = cellItems.data();
     const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
     const Edges* box = edges.data();
-    const CellRange* range = ranges.data();
+    const std::uint32_t* words = cellWords.data();
+    const CellFinder finder(shape);
     // From the half's last box back, each cell from its end back: every cell's boxes end up in
     // item order.
     // [slide:grid-fill]
@@ -489,15 +522,20 @@ void GridBroadphase::fillCells(Half& half)
     {
         const Edges b = box[i];
         const std::uint32_t item = std::uint32_t(i);
-        forEachCell(range[i], width, cellCount, kFirstColumnFlag, kFirstRowFlag,
-                    [cursor, outEdges, outItems, spare, b,
-                     item](std::size_t target, std::uint32_t covered, std::uint32_t flags)
-                    {
-                        const std::uint32_t slot = --cursor[target];
-                        const std::uint32_t at = selectWithoutBranch(covered, slot, spare);
-                        outEdges[at] = b;
-                        outItems[at] = item | flags;
-                    });
+        auto put = [cursor, outEdges, outItems, spare, b,
+                    item](std::size_t target, std::uint32_t covered, std::uint32_t flags)
+        {
+            const std::uint32_t slot = --cursor[target];
+            const std::uint32_t at = selectWithoutBranch(covered, slot, spare);
+            outEdges[at] = b;
+            outItems[at] = item | flags;
+        };
+        const std::uint32_t word = words[i];
+        if (word != kWideBox)
+            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
+                         kFirstColumnFlag, kFirstRowFlag, put);
+        else
+            forEachCell(finder.cellsOf(b), width, cellCount, kFirstColumnFlag, kFirstRowFlag, put);
     }
     // [/slide]
 }
@@ -655,7 +693,7 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     itemCount = count;
     currentItems = items.data();
     edges.resize(count);
-    ranges.resize(count);
+    cellWords.resize(count);
     // Always the same two halves, so the sums (and so the grid) do not depend on the threads.
     halves[0].begin = 0;
     halves[0].end = count / 2;

@@ -145,7 +145,7 @@ private:
     std::size_t itemCount = 0;
     const BroadphaseItem* currentItems = nullptr; // during findPairs
     std::vector<Edges> edges;                     // per item
-    std::vector<CellRange> ranges;                // per item
+    std::vector<std::uint32_t> cellWords;         // per item: its cells, packed (see .cpp)
     std::vector<std::uint32_t> start;             // cell c's entries are [start[c], start[c + 1])
     // The entries, cell after cell: each box's edges and its item word (index and flags) in
     // two arrays, so an entry's edges are 16 aligned bytes. The last two entries are spares
