@@ -4,6 +4,9 @@
 //     is compiled where SSE is missing (ARM, 32-bit x86 without SSE2).
 //   - One preparation pass: loading a box, its share of the grid's bounds and average size,
 //     its cells and the count of its cells happen in one walk over the items.
+//   - Four-lane preparation: in that pass the usual box is loaded, bounded and placed in its
+//     cells with SSE steps on its four numbers at once (GridSettings::simd = false, and
+//     machines without SSE, run the same steps in plain C++; the tests run both).
 //   - Last frame's grid: the cells are worked out with last frame's grid and only worked out
 //     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
