@@ -109,17 +109,6 @@ double runHalves(bool twoThreads, Work work)
     return std::max(0.0, workerSeconds - ownSeconds);
 }
 
-// Calls visit(target, covered, flags) for each cell of the range: target = row * width +
-// column, flags = the entry's kFirstColumnFlag / kFirstRowFlag.
-// Loop-free listing: small boxes get four calls. Most boxes cover one cell, two (side by side
-// or one above the other) or 2 x 2, and all of them get the same four calls, so the caller
-// needs no branch: a call for a column or row the box does not reach has covered = 0 and a
-// target of its own, a dummy counter past the grid's cells (dummies + 0, 1 or 2; the caller
-// keeps three spare counters there). Why: whether the next box crosses a column border (one
-// time in three for an average box) or a row border is unpredictable, and the CPU's wrong
-// guesses cost more than the extra calls. Why dummies rather than naming the box's own cell
-// again: four read-modify-writes of one counter in a row each wait for the one before.
-// Bigger boxes get one call per cell they cover. Measured: docs/performance.md.
 // The four calls of a box that covers one cell, two or 2 x 2: `cell` its top-left cell,
 // right / down 1 if it reaches the next column / row.
 template <typename Visit>
@@ -135,6 +124,17 @@ inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, 
     visit(cell, 1u, firstColumn | firstRow);
 }
 
+// Calls visit(target, covered, flags) for each cell of the range: target = row * width +
+// column, flags = the entry's kFirstColumnFlag / kFirstRowFlag.
+// Loop-free listing: small boxes get four calls. Most boxes cover one cell, two (side by side
+// or one above the other) or 2 x 2, and all of them get the same four calls, so the caller
+// needs no branch: a call for a column or row the box does not reach has covered = 0 and a
+// target of its own, a dummy counter past the grid's cells (dummies + 0, 1 or 2; the caller
+// keeps three spare counters there). Why: whether the next box crosses a column border (one
+// time in three for an average box) or a row border is unpredictable, and the CPU's wrong
+// guesses cost more than the extra calls. Why dummies rather than naming the box's own cell
+// again: four read-modify-writes of one counter in a row each wait for the one before.
+// Bigger boxes get one call per cell they cover. Measured: docs/performance.md.
 template <typename Range, typename Visit>
 inline void forEachCell(const Range& range, std::size_t width, std::size_t dummies,
                         std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
