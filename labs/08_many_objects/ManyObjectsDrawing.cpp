@@ -36,6 +36,12 @@ const hitbox::Box tableArea{660.f, 60.f, 500.f, 500.f};
 // Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
 // that size nobody can tell.
 const float squareBelowRadius = 2.5f;
+// Triangles around a disc: edges about this many pixels long, so a ball gets as few corners as
+// its size allows (a 5 px ball 7, a 15 px one 23) and no big ball looks like a polygon.
+const float discEdgePixels = 4.f;
+const int fewestDiscSegments = 6;
+const int mostDiscSegments = 32;
+
 // Above this many balls the debug view draws the grid's lines but not its busy cells: at
 // 10,000 balls that is thousands of outlines, most of the grid, and the software renderer
 // drew 4 frames a second instead of 17 (docs/performance.md).
@@ -75,12 +81,6 @@ void addQuad(sf::VertexArray& vertices, const hitbox::Box& box, sf::Color color)
     addTriangle(vertices, topLeft, topRight, bottomRight, color);
     addTriangle(vertices, topLeft, bottomRight, bottomLeft, color);
 }
-
-// Triangles around a disc: edges about this many pixels long, so a ball gets as few corners as
-// its size allows (a 5 px ball 8, a 15 px one 24) and no big ball looks like a polygon.
-const float discEdgePixels = 4.f;
-const int fewestDiscSegments = 6;
-const int mostDiscSegments = 32;
 
 int discSegments(float radius)
 {
