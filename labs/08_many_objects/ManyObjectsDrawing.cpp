@@ -9,6 +9,7 @@
 #include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
+#include <SFML/Graphics/PrimitiveType.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Graphics/Text.hpp>
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
+#include <vector>
 
 namespace
 {
@@ -33,6 +36,12 @@ const hitbox::Box tableArea{660.f, 60.f, 500.f, 500.f};
 // Balls smaller than this are drawn as squares: two triangles instead of a dozen, and at
 // that size nobody can tell.
 const float squareBelowRadius = 2.5f;
+// Triangles around a disc: edges about this many pixels long, so a ball gets as few corners as
+// its size allows (a 5 px ball 7, a 15 px one 23) and no big ball looks like a polygon.
+const float discEdgePixels = 4.f;
+const int fewestDiscSegments = 6;
+const int mostDiscSegments = 32;
+
 // Above this many balls the debug view draws the grid's lines but not its busy cells: at
 // 10,000 balls that is thousands of outlines, most of the grid, and the software renderer
 // drew 4 frames a second instead of 17 (docs/performance.md).
@@ -73,18 +82,39 @@ void addQuad(sf::VertexArray& vertices, const hitbox::Box& box, sf::Color color)
     addTriangle(vertices, topLeft, bottomRight, bottomLeft, color);
 }
 
-void addDisc(sf::VertexArray& vertices, sf::Vector2f center, float radius, sf::Color color)
+int discSegments(float radius)
 {
-    const int segments = radius > 15.f ? 32 : 12;
+    const float perimeter = 2.f * hitbox::pi * radius;
+    return std::clamp(static_cast<int>(perimeter / discEdgePixels), fewestDiscSegments,
+                      mostDiscSegments);
+}
+
+void addDisc(std::vector<sf::Vertex>& vertices, sf::Vector2f center, float radius, sf::Color color)
+{
+    const int segments = discSegments(radius);
     const float step = 2.f * hitbox::pi / static_cast<float>(segments);
     sf::Vector2f previous = center + sf::Vector2f(radius, 0.f);
     for (int i = 1; i <= segments; ++i)
     {
         const float angle = step * static_cast<float>(i);
         const sf::Vector2f next = center + sf::Vector2f(std::cos(angle), std::sin(angle)) * radius;
-        addTriangle(vertices, center, previous, next, color);
+        vertices.push_back({center, color});
+        vertices.push_back({previous, color});
+        vertices.push_back({next, color});
         previous = next;
     }
+}
+
+// A small ball as a square: two triangles.
+void addSquare(std::vector<sf::Vertex>& vertices, const hitbox::Box& box, sf::Color color)
+{
+    const sf::Vector2f topLeft{box.left, box.top};
+    const sf::Vector2f topRight{box.left + box.width, box.top};
+    const sf::Vector2f bottomLeft{box.left, box.top + box.height};
+    const sf::Vector2f bottomRight{box.left + box.width, box.top + box.height};
+    for (const sf::Vector2f& corner :
+         {topLeft, topRight, bottomRight, topLeft, bottomRight, bottomLeft})
+        vertices.push_back({corner, color});
 }
 
 // 12345678 -> "12,345,678": big counts are the point of this lab, so make them readable.
@@ -124,16 +154,16 @@ void ManyObjectsLevel::render(sf::RenderTarget& target) const
 void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
 {
     // Every ball goes into ONE vertex array and ONE draw call. 10,000 sf::CircleShape draws
-    // would cost more than all the collision detection.
-    sf::VertexArray ballVertices(sf::PrimitiveType::Triangles);
+    // would cost more than all the collision detection. The array is last frame's, refilled.
+    ballVertices.clear();
     for (const Ball& ball : balls)
     {
         if (ball.radius < squareBelowRadius)
-            addQuad(ballVertices, ball.box(), colorOf(ball));
+            addSquare(ballVertices, ball.box(), colorOf(ball));
         else
             addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, colorOf(ball));
     }
-    target.draw(ballVertices);
+    target.draw(ballVertices.data(), ballVertices.size(), sf::PrimitiveType::Triangles);
 }
 // [/slide]
 

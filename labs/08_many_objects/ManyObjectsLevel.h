@@ -20,6 +20,7 @@
 #include "hitbox/app/Level.h"
 #include "hitbox/broadphase/Broadphase.h"
 
+#include <SFML/Graphics/Vertex.hpp>
 #include <SFML/System/Clock.hpp>
 #include <SFML/System/Time.hpp>
 
@@ -166,6 +167,9 @@ private:
     int stepsMeasured = 0;
 
     hitbox::LazyFont font; // read by the first render(): tests need no font file
+    // The balls' triangles, refilled by every render(): kept so a frame reuses last frame's
+    // memory instead of growing a new array of 60,000 vertices (drawing only, not state).
+    mutable std::vector<sf::Vertex> ballVertices;
 };
 
 // "brute force", "sort and sweep", "grid", "quadtree": the readout's words.

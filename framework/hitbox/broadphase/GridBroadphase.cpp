@@ -4,9 +4,13 @@
 //     is compiled where SSE is missing (ARM, 32-bit x86 without SSE2).
 //   - One preparation pass: loading a box, its share of the grid's bounds and average size,
 //     its cells and the count of its cells happen in one walk over the items.
+//   - Four-lane preparation: in that pass the usual box is loaded, bounded and placed in its
+//     cells with SSE steps on its four numbers at once (GridSettings::simd = false, and
+//     machines without SSE, run the same steps in plain C++; the tests run both).
 //   - Last frame's grid: the cells are worked out with last frame's grid and only worked out
 //     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
+//   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
 //   - Split entries: 16 aligned bytes of edges plus a 4-byte item word in a second array.
 //   - Pairs in cell order: no sort when the caller does not need (first, second) order.
 //   - Two halves: with two threads, each half of the items is prepared and filled in by one
@@ -105,6 +109,21 @@ double runHalves(bool twoThreads, Work work)
     return std::max(0.0, workerSeconds - ownSeconds);
 }
 
+// The four calls of a box that covers one cell, two or 2 x 2: `cell` its top-left cell,
+// right / down 1 if it reaches the next column / row.
+template <typename Visit>
+inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, std::size_t width,
+                         std::size_t dummies, std::uint32_t firstColumn, std::uint32_t firstRow,
+                         Visit visit)
+{
+    const std::size_t both = right & down;
+    // The cell below and to the right is covered only if the box reaches both.
+    visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
+    visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
+    visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
+    visit(cell, 1u, firstColumn | firstRow);
+}
+
 // Calls visit(target, covered, flags) for each cell of the range: target = row * width +
 // column, flags = the entry's kFirstColumnFlag / kFirstRowFlag.
 // Loop-free listing: small boxes get four calls. Most boxes cover one cell, two (side by side
@@ -128,18 +147,32 @@ inline void forEachCell(const Range& range, std::size_t width, std::size_t dummi
     const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
     if (right <= 1 && down <= 1)
     {
-        const std::size_t both = right & down;
-        // The cell below and to the right is covered only if the box reaches both.
-        visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
-        visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
-        visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
-        visit(cell, 1u, firstColumn | firstRow);
+        forFourCells(cell, right, down, width, dummies, firstColumn, firstRow, visit);
         return;
     }
     for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
         for (int cx = range.x0; cx <= range.x1; ++cx)
             visit(std::size_t(cy) * width + std::size_t(cx), 1u,
                   (cx == range.x0 ? firstColumn : 0u) | (cy == range.y0 ? firstRow : 0u));
+}
+
+// Packed cell words: what the fill pass needs of a box's cells in 4 bytes, not a 16-byte
+// range (at 100,000 boxes 1.2 MB less written and read again every frame): its top-left cell
+// in the low 30 bits, "reaches the next column" in bit 30, "reaches the next row" in bit 31.
+// kWideBox for the rare others (bigger than 2 x 2 cells, NaN, or a cell number that does not
+// fit): the fill works their cells out again from their edges.
+constexpr std::uint32_t kWideBox = 0xFFFFFFFFu;
+constexpr std::size_t kPackedCellLimit = (std::size_t(1) << 30) - 1;
+
+template <typename Range>
+inline std::uint32_t packCells(const Range& range, std::size_t width)
+{
+    const std::size_t right = std::size_t(range.x1 - range.x0); // huge when empty, as above
+    const std::size_t down = std::size_t(range.y1 - range.y0);
+    const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
+    if (right > 1 || down > 1 || cell >= kPackedCellLimit)
+        return kWideBox;
+    return std::uint32_t(cell) | std::uint32_t(right) << 30 | std::uint32_t(down) << 31;
 }
 
 // The three dummy counters forEachCell uses, after the grid's cells.
@@ -205,7 +238,7 @@ void GridBroadphase::prepare(Half& half)
     // (with last frame's grid) the box's cells and their counts, in one walk over the items.
     const BroadphaseItem* source = currentItems;
     Edges* out = edges.data();
-    CellRange* outRanges = ranges.data();
+    std::uint32_t* outWords = cellWords.data();
     const CellFinder finder(shape);
     const bool count = hasShape;
     if (count)
@@ -220,11 +253,11 @@ void GridBroadphase::prepare(Half& half)
     double sideSum = 0.0;
     std::size_t usable = 0;
     std::uint32_t rules = 0;
-    for (std::size_t i = half.begin; i < half.end; ++i)
+    // Any box, in plain C++: NaN and infinite boxes, negative sizes, and every box where the
+    // SSE path below is not compiled.
+    auto loadOne = [&](std::size_t i)
     {
-        const BroadphaseItem& item = source[i];
-        rules |= ~item.mask | std::uint32_t(item.layer == 0);
-        const Box& box = item.box;
+        const Box& box = source[i].box;
         Edges edge = {inf, inf, inf, inf}; // min = +inf, max = -inf: overlaps nothing
         // All four finite, in one test: x - x is 0 for a finite x and NaN for NaN or
         // infinity, and NaN spreads through the sum (four isfinite calls were four branches).
@@ -254,9 +287,86 @@ void GridBroadphase::prepare(Half& half)
         if (count)
         {
             const CellRange range = finder.cellsOf(edge);
-            outRanges[i] = range;
+            outWords[i] = packCells(range, finder.width);
             finder.count(range, counts);
         }
+    };
+    std::size_t i = half.begin;
+#if defined(HITBOX_GRID_SSE)
+    if (!gridSettings.simd)
+        i = half.end; // the plain loop below does every box
+    // Four lanes per box: the usual box (finite, sizes not negative) is loaded, bounded and
+    // placed in its cells with four-wide SSE steps and no branch but the one that sends the
+    // rare other boxes to loadOne. The same float operations as loadOne, so the same edges
+    // and cells to the last bit; the bounds and sizes are summed in other lanes (and the
+    // sizes in another order), which moves the grid's cell size in its last bits at most,
+    // and any grid finds the same pairs.
+    const __m128 signs = _mm_set_ps(-0.f, -0.f, 0.f, 0.f);
+    const __m128 lowest = _mm_set1_ps(-largest);
+    const __m128 highest = _mm_set1_ps(largest);
+    const __m128 origin =
+        _mm_set_ps(finder.originY, finder.originX, finder.originY, finder.originX);
+    const __m128 scale = _mm_set1_ps(finder.scale);
+    const __m128 last =
+        _mm_set_ps(finder.lastRow, finder.lastColumn, finder.lastRow, finder.lastColumn);
+    const __m128 zero = _mm_setzero_ps();
+    __m128 lowBounds = _mm_set1_ps(inf);   // (left, top, -, -)
+    __m128 highBounds = _mm_set1_ps(-inf); // (-, -, right, bottom)
+    __m128d sizeSums = _mm_setzero_pd();   // (sum of widths, sum of heights)
+    std::size_t fastBoxes = 0;
+    for (; i < half.end; ++i)
+    {
+        const BroadphaseItem& item = source[i];
+        rules |= ~item.mask | std::uint32_t(item.layer == 0);
+        const __m128 box = _mm_loadu_ps(&item.box.left); // (left, top, width, height)
+        // Finite (x - x == 0) and no negative size, all four lanes at once.
+        const int finite = _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(box, box), zero));
+        const int negative = _mm_movemask_ps(_mm_cmplt_ps(box, zero)) & 0xC;
+        if (finite != 0xF || negative != 0)
+        {
+            loadOne(i);
+            continue;
+        }
+        // (left, top, left + width, top + height): the box's min and max corners.
+        const __m128 corners = _mm_movelh_ps(box, _mm_add_ps(box, _mm_movehl_ps(box, box)));
+        _mm_store_ps(&out[i].minX, _mm_xor_ps(corners, signs));
+        const __m128 finiteCorners = _mm_min_ps(_mm_max_ps(corners, lowest), highest);
+        lowBounds = _mm_min_ps(lowBounds, finiteCorners);
+        highBounds = _mm_max_ps(highBounds, finiteCorners);
+        sizeSums = _mm_add_pd(sizeSums,
+                              _mm_sub_pd(_mm_cvtps_pd(_mm_movehl_ps(finiteCorners, finiteCorners)),
+                                         _mm_cvtps_pd(finiteCorners)));
+        ++fastBoxes;
+        if (count)
+        {
+            // column(x) and row(y) of both corners at once, as CellFinder works them out.
+            const __m128 scaled = _mm_mul_ps(_mm_sub_ps(corners, origin), scale);
+            const __m128i cells =
+                _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(scaled, zero), last)); // (x0, y0, x1, y1)
+            CellRange range;
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(&range),
+                             _mm_shuffle_epi32(cells, _MM_SHUFFLE(3, 1, 2, 0)));
+            outWords[i] = packCells(range, finder.width);
+            finder.count(range, counts);
+        }
+    }
+    alignas(16) float low[4], high[4];
+    alignas(16) double sizes[2];
+    _mm_store_ps(low, lowBounds);
+    _mm_store_ps(high, highBounds);
+    _mm_store_pd(sizes, sizeSums);
+    left = std::min(left, low[0]);
+    top = std::min(top, low[1]);
+    right = std::max(right, high[2]);
+    bottom = std::max(bottom, high[3]);
+    sideSum += 0.5 * (sizes[0] + sizes[1]);
+    usable += fastBoxes;
+#endif
+    for (std::size_t k = gridSettings.simd ? i : half.begin; k < half.end; ++k)
+    {
+        const BroadphaseItem& item = source[k];
+        rules |= ~item.mask | std::uint32_t(item.layer == 0);
+        loadOne(k);
     }
     half.left = left;
     half.top = top;
@@ -275,8 +385,9 @@ void GridBroadphase::countCells(Half& half)
     const CellFinder finder(shape);
     for (std::size_t i = half.begin; i < half.end; ++i)
     {
-        ranges[i] = finder.cellsOf(edges[i]);
-        finder.count(ranges[i], counts);
+        const CellRange range = finder.cellsOf(edges[i]);
+        cellWords[i] = packCells(range, finder.width);
+        finder.count(range, counts);
     }
 }
 
@@ -405,7 +516,8 @@ void GridBroadphase::fillCells(Half& half)
     std::uint32_t* outItems = cellItems.data();
     const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
     const Edges* box = edges.data();
-    const CellRange* range = ranges.data();
+    const std::uint32_t* words = cellWords.data();
+    const CellFinder finder(shape);
     // From the half's last box back, each cell from its end back: every cell's boxes end up in
     // item order.
     // [slide:grid-fill]
@@ -413,24 +525,68 @@ void GridBroadphase::fillCells(Half& half)
     {
         const Edges b = box[i];
         const std::uint32_t item = std::uint32_t(i);
-        forEachCell(range[i], width, cellCount, kFirstColumnFlag, kFirstRowFlag,
-                    [cursor, outEdges, outItems, spare, b,
-                     item](std::size_t target, std::uint32_t covered, std::uint32_t flags)
-                    {
-                        const std::uint32_t slot = --cursor[target];
-                        const std::uint32_t at = selectWithoutBranch(covered, slot, spare);
-                        outEdges[at] = b;
-                        outItems[at] = item | flags;
-                    });
+        auto put = [cursor, outEdges, outItems, spare, b,
+                    item](std::size_t target, std::uint32_t covered, std::uint32_t flags)
+        {
+            const std::uint32_t slot = --cursor[target];
+            const std::uint32_t at = selectWithoutBranch(covered, slot, spare);
+            outEdges[at] = b;
+            outItems[at] = item | flags;
+        };
+        const std::uint32_t word = words[i];
+        if (word != kWideBox)
+            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
+                         kFirstColumnFlag, kFirstRowFlag, put);
+        else
+            forEachCell(finder.cellsOf(b), width, cellCount, kFirstColumnFlag, kFirstRowFlag, put);
     }
     // [/slide]
 }
 
-void GridBroadphase::testCells(Half& half)
+namespace
+{
+
+// Negated-max edges: a box's query is its (maxX, maxY, -minX, -minY), so that b overlaps it
+// exactly when each of b's (minX, minY, -maxX, -maxY) is less: bMin < aMax, -bMax < -aMin.
+// Two versions of the same four comparisons: PlainPairTest in C++ (every machine), and
+// SsePairTest, one four-wide "less than" where the compiler offers SSE.
+struct PlainPairTest
+{
+    float maxX, maxY, negMinX, negMinY;
+    explicit PlainPairTest(const float* edges) // (minX, minY, -maxX, -maxY)
+        : maxX(-edges[2]), maxY(-edges[3]), negMinX(-edges[0]), negMinY(-edges[1])
+    {
+    }
+    // Branch-free: `&` of the four comparisons, not `&&`.
+    bool overlaps(const float* other) const
+    {
+        return (other[0] < maxX) & (other[1] < maxY) & (other[2] < negMinX) & (other[3] < negMinY);
+    }
+};
+
+#if defined(HITBOX_GRID_SSE)
+struct SsePairTest
+{
+    __m128 query;
+    explicit SsePairTest(const float* edges)
+    {
+        const __m128 negated = _mm_xor_ps(_mm_load_ps(edges), _mm_set1_ps(-0.f));
+        query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+    }
+    bool overlaps(const float* other) const
+    {
+        return _mm_movemask_ps(_mm_cmplt_ps(_mm_load_ps(other), query)) == 0xF;
+    }
+};
+#endif
+
+} // namespace
+
+template <typename PairTest>
+std::size_t GridBroadphase::testCellRange(const Half& half, Pair* out) const
 {
     const Edges* boxes = cellEdges.data();
     const std::uint32_t* items = cellItems.data();
-    Pair* out = half.found.get(); // sized by startCells
     std::size_t found = 0;
     for (std::size_t cell = half.firstCell; cell < half.endCell; ++cell)
     {
@@ -443,27 +599,10 @@ void GridBroadphase::testCells(Half& half)
         {
             const std::uint32_t a = items[p];
             const std::uint32_t first = a & kItemIndexMask;
-            // Negated-max edges: a's (maxX, maxY, -minX, -minY), so that b overlaps a exactly
-            // when each of b's (minX, minY, -maxX, -maxY) is less: bMin < aMax, -bMax < -aMin.
-#if defined(HITBOX_GRID_SSE)
-            const __m128 signs = _mm_set1_ps(-0.f);
-            const __m128 negated = _mm_xor_ps(_mm_loadu_ps(&boxes[p].minX), signs);
-            const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
-#else
-            const Edges query = {-boxes[p].negMaxX, -boxes[p].negMaxY, -boxes[p].minX,
-                                 -boxes[p].minY};
-#endif
+            const PairTest test(&boxes[p].minX);
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
-#if defined(HITBOX_GRID_SSE)
-                const int less = _mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(&boxes[q].minX), query));
-                const bool overlap = less == 0xF;
-#else
-                const Edges& other = boxes[q];
-                const bool overlap = (other.minX < query.minX) & (other.minY < query.minY) &
-                                     (other.negMaxX < query.negMaxX) &
-                                     (other.negMaxY < query.negMaxY);
-#endif
+                const bool overlap = test.overlaps(&boxes[q].minX);
                 // Each pair once: only the top-left cell two boxes share reports them.
                 const std::uint32_t b = items[q];
                 const bool reportHere = ((a | b) & kBothFlags) == kBothFlags;
@@ -474,7 +613,20 @@ void GridBroadphase::testCells(Half& half)
         }
         // [/slide]
     }
-    half.foundCount = found;
+    return found;
+}
+
+void GridBroadphase::testCells(Half& half)
+{
+    Pair* out = half.found.get(); // sized by startCells
+#if defined(HITBOX_GRID_SSE)
+    if (gridSettings.simd)
+    {
+        half.foundCount = testCellRange<SsePairTest>(half, out);
+        return;
+    }
+#endif
+    half.foundCount = testCellRange<PlainPairTest>(half, out);
 }
 
 void GridBroadphase::gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
@@ -544,7 +696,7 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     itemCount = count;
     currentItems = items.data();
     edges.resize(count);
-    ranges.resize(count);
+    cellWords.resize(count);
     // Always the same two halves, so the sums (and so the grid) do not depend on the threads.
     halves[0].begin = 0;
     halves[0].end = count / 2;

@@ -54,6 +54,9 @@ struct GridSettings
     // twoThreadsFromItems boxes; the pairs and their order are the same as with one.
     int threads = 1;
     std::size_t twoThreadsFromItems = kGridTwoThreadsFromItems; // tests lower it to 0
+    // true: the SSE steps where the compiler offers SSE (x86-64); false: the plain C++ steps
+    // every other machine (ARM, 32-bit x86) runs, so tests check both give the same pairs.
+    bool simd = true;
 };
 
 class GridBroadphase : public Broadphase
@@ -119,6 +122,9 @@ private:
     void startCells();
     void fillCells(Half& half);
     void testCells(Half& half);
+    // The pairs found in half's cells, written to `out`; PairTest: the SSE or the plain test.
+    template <typename PairTest>
+    [[nodiscard]] std::size_t testCellRange(const Half& half, Pair* out) const;
     void gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs);
     void sortPairs(std::vector<Pair>& pairs);
 
@@ -139,7 +145,7 @@ private:
     std::size_t itemCount = 0;
     const BroadphaseItem* currentItems = nullptr; // during findPairs
     std::vector<Edges> edges;                     // per item
-    std::vector<CellRange> ranges;                // per item
+    std::vector<std::uint32_t> cellWords;         // per item: its cells, packed (see .cpp)
     std::vector<std::uint32_t> start;             // cell c's entries are [start[c], start[c + 1])
     // The entries, cell after cell: each box's edges and its item word (index and flags) in
     // two arrays, so an entry's edges are 16 aligned bytes. The last two entries are spares

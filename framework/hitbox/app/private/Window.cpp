@@ -177,6 +177,19 @@ public:
     // --frames N in a window: it closes after N steps (stepsLeft -1: runs until closed).
     bool isRunning() const override { return window.isOpen() && stepsLeft != 0; }
 
+    // After a --frames run: the frames drawn per second over the whole run, the same count as
+    // the help line's (which a long debug legend can push out of the window), so a script can
+    // read how fast a scene draws. Nothing for a window the user closes.
+    void reportFrameRate(const Options& options, const ProgramInfo& info) const
+    {
+        const float seconds = runClock.getElapsedTime().asSeconds();
+        if (options.frames < 0 || seconds <= 0.f)
+            return;
+        std::cout << info.title << ": drew " << framesDrawn << " frames in " << seconds
+                  << " s: " << static_cast<float>(framesDrawn) / seconds << " frames per second"
+                  << std::endl;
+    }
+
     float processInput(Input& input) override
     {
         if (settings.paused)
@@ -265,6 +278,7 @@ private:
     void countFrame()
     {
         ++framesCounted;
+        ++framesDrawn;
         if (fpsClock.getElapsedTime().asSeconds() >= 0.5f)
         {
             settings.framesPerSecond =
@@ -283,7 +297,9 @@ private:
     sf::Vector2i mousePixel;
     sf::Clock frameClock;
     sf::Clock fpsClock;
+    sf::Clock runClock;
     int framesCounted = 0;
+    long long framesDrawn = 0;
     long long stepsLeft;
 };
 
@@ -293,6 +309,7 @@ int runWindow(Level& level, const Options& options, const ProgramInfo& info)
 {
     WindowHost host(level, options, info);
     runLoop(level, host);
+    host.reportFrameRate(options, info);
     return 0;
 }
 
