@@ -4,6 +4,8 @@
 #include "hitbox/app/Display.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Loop.h"
+#include "hitbox/app/ReplayLevel.h"
+#include "hitbox/app/WholeFile.h"
 #include "hitbox/app/private/LongRun.h"
 #include "hitbox/app/private/Window.h"
 
@@ -47,6 +49,97 @@ public:
 private:
     long long framesLeft;
 };
+
+int runLevel(Level& level, const Options& options, const ProgramInfo& info)
+{
+    if (options.headless)
+        return runHeadless(level, options, info);
+    if (!options.screenshotPath.empty())
+        return saveScreenshot(level, options, info);
+    return runWindow(level, options, info);
+}
+
+// Reads --replay's file into `replay` and sets what the replay decides (how long to run,
+// where to pause); false after printing the one line that says why it cannot be replayed.
+bool prepareReplay(Options& options, const ProgramInfo& info, Recording& replay)
+{
+    ReplayRead read = readReplayFile(options.replayPath);
+    if (read && read.recording.program != info.title)
+        read = {false,
+                {},
+                "'" + printable(options.replayPath, 200) + "' was recorded by '" +
+                    printable(read.recording.program) + "', not by this program"};
+    if (read && !options.extra.empty())
+        read = {false,
+                {},
+                "the program's own options come from the replay: leave out " +
+                    options.extra.begin()->first};
+    if (!read)
+    {
+        std::cerr << info.title << ": --replay: " << read.problem << std::endl;
+        return false;
+    }
+    replay = read.recording;
+    const bool window = !options.headless && options.screenshotPath.empty();
+    if (options.frames < 0 && !window)
+        options.frames = replay.steps;
+    if (options.pauseAtStep < 0 && window)
+        options.pauseAtStep = replay.steps;
+    return true;
+}
+
+// The level the program makes, wrapped for --record or --replay (Replay.h), run as asked.
+int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& makeLevel)
+{
+    Recording replay;
+    if (!options.replayPath.empty() && !prepareReplay(options, info, replay))
+        return 2;
+    const bool recording = !options.recordPath.empty();
+    const SaveResult writable =
+        recording ? checkTextPath(options.recordPath) : SaveResult{true, ""};
+    if (!writable)
+    {
+        std::cerr << info.title << ": --record: cannot save '" << printable(options.recordPath, 200)
+                  << "': " << writable.problem << std::endl;
+        return 2;
+    }
+    Options levelOptions = options;
+    if (!options.replayPath.empty())
+    {
+        // The level is built exactly as it was when recorded.
+        levelOptions.seed = replay.seed;
+        levelOptions.extra = replay.options;
+        levelOptions.headless = replay.headless;
+    }
+    std::unique_ptr<Level> level = makeLevel(levelOptions);
+    if (!options.replayPath.empty())
+    {
+        ReplayingLevel replaying(*level, replay);
+        return runLevel(replaying, options, info);
+    }
+    if (!recording)
+        return runLevel(*level, options, info);
+
+    Recording header;
+    header.program = info.title;
+    header.seed = options.seed;
+    header.headless = options.headless;
+    header.options = options.extra;
+    RecordingLevel recorder(*level, header);
+    const int code = runLevel(recorder, options, info);
+    if (code != 0)
+        return code; // a run stopped by Ctrl-C or an error leaves no half a recording
+    const SaveResult saved = saveWholeFile(options.recordPath, replayText(recorder.getRecording()));
+    if (!saved)
+    {
+        std::cerr << info.title << ": --record: could not save '"
+                  << printable(options.recordPath, 200) << "': " << saved.problem << std::endl;
+        return 1;
+    }
+    std::cout << info.title << ": recorded " << recorder.getStep() << " steps in "
+              << printable(options.recordPath, 200) << std::endl;
+    return 0;
+}
 
 } // namespace
 
@@ -114,12 +207,7 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
     }
     try
     {
-        std::unique_ptr<Level> level = makeLevel(options);
-        if (options.headless)
-            return runHeadless(*level, options, info);
-        if (!options.screenshotPath.empty())
-            return saveScreenshot(*level, options, info);
-        return runWindow(*level, options, info);
+        return runRecordable(options, info, makeLevel);
     }
     catch (const std::invalid_argument& error)
     {

@@ -168,7 +168,7 @@ class WindowHost : public LoopHost
 public:
     WindowHost(Level& level, const Options& options, const ProgramInfo& info)
         : level(level), font(loadFont()), window(windowMode(level.getWorldSize()), info.title),
-          stepsLeft(options.frames)
+          stepsLeft(options.frames), pauseAtStep(options.pauseAtStep)
     {
         window.setFramerateLimit(static_cast<unsigned>(stepsPerSecond));
         settings.showDebug = options.debugBoxes;
@@ -214,6 +214,14 @@ public:
             steps = static_cast<int>(std::min<long long>(steps, stepsLeft));
             stepsLeft -= steps;
         }
+        if (pauseAtStep >= stepsRun && !settings.paused)
+        {
+            // --pause-at-step N: run up to step N exactly, then pause there.
+            steps = static_cast<int>(std::min<long long>(steps, pauseAtStep - stepsRun));
+            if (stepsRun + steps == pauseAtStep)
+                pausedByKey = settings.paused = true;
+        }
+        stepsRun += steps;
         return steps;
     }
 
@@ -285,6 +293,8 @@ private:
     sf::Clock fpsClock;
     int framesCounted = 0;
     long long stepsLeft;
+    long long pauseAtStep;
+    long long stepsRun = 0;
 };
 
 } // namespace
