@@ -198,6 +198,8 @@ void PongLevel::handleInput(const Input& input, float)
 void PongLevel::update(float dt)
 {
     ++stepCount;
+    leftStepStart = leftPaddle.getPosition();
+    rightStepStart = rightPaddle.getPosition();
     events.clear();
     secondsSinceContact += dt;
     if (screen == Screen::Title)

@@ -126,7 +126,8 @@ TEST(Replay, ABadFileIsRefusedNamingTheRowAndWhy)
         const hitbox::ReplayRead read = hitbox::readReplayText(text);
         EXPECT_FALSE(read) << text;
         EXPECT_NE(read.problem.find(message), std::string::npos)
-            << "for:\n" << text << "\ngot: " << read.problem;
+            << "for:\n"
+            << text << "\ngot: " << read.problem;
         EXPECT_EQ(read.problem.find('\n'), std::string::npos) << "one line: " << read.problem;
     }
 }

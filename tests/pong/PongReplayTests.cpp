@@ -36,10 +36,9 @@ std::string stateBits(const PongLevel& pong)
         std::memcpy(raw, &value, sizeof(float));
         bits.append(raw, sizeof(float));
     };
-    for (const GameObject* object :
-         {static_cast<const GameObject*>(&pong.getBall()),
-          static_cast<const GameObject*>(&pong.getPaddle(Side::Left)),
-          static_cast<const GameObject*>(&pong.getPaddle(Side::Right))})
+    for (const GameObject* object : {static_cast<const GameObject*>(&pong.getBall()),
+                                     static_cast<const GameObject*>(&pong.getPaddle(Side::Left)),
+                                     static_cast<const GameObject*>(&pong.getPaddle(Side::Right))})
     {
         add(object->getPosition().x);
         add(object->getPosition().y);

@@ -69,9 +69,9 @@ public:
     {
         namespace fs = std::filesystem;
         const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = test == nullptr ? std::string("scene")
-                                           : std::string(test->test_suite_name()) + "." +
-                                                 test->name();
+        std::string name = test == nullptr
+                               ? std::string("scene")
+                               : std::string(test->test_suite_name()) + "." + test->name();
         for (char& c : name)
             if (c == '/' || c == '\\' || c == ':' || c == ' ')
                 c = '_';

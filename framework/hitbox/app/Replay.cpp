@@ -98,8 +98,8 @@ long long wholeNumber(const std::string& text, long long lowest, long long highe
     if (text.empty() || result.ec != std::errc() || result.ptr != end || value < lowest ||
         value > highest)
         throw std::invalid_argument(what + " needs a whole number from " + std::to_string(lowest) +
-                                    " to " + std::to_string(highest) + ", not '" +
-                                    printable(text) + "'");
+                                    " to " + std::to_string(highest) + ", not '" + printable(text) +
+                                    "'");
     return value;
 }
 
@@ -181,14 +181,14 @@ Recording readRows(std::istream& in)
                 expectFields(row, 2);
                 const long long version = wholeNumber(row[1], 1, 1000000, "the version");
                 if (version != replayFormatVersion)
-                    throw std::invalid_argument(
-                        "a replay of format " + std::to_string(version) +
-                        "; this Hitbox reads format " + std::to_string(replayFormatVersion));
+                    throw std::invalid_argument("a replay of format " + std::to_string(version) +
+                                                "; this Hitbox reads format " +
+                                                std::to_string(replayFormatVersion));
                 continue;
             }
             const std::string& kind = row[0];
-            const bool once = kind == "program" || kind == "seed" || kind == "headless" ||
-                              kind == "steps";
+            const bool once =
+                kind == "program" || kind == "seed" || kind == "headless" || kind == "steps";
             if (once && std::find(seen.begin(), seen.end(), kind) != seen.end())
                 throw std::invalid_argument("'" + kind + "' is given twice");
             seen.push_back(kind);
@@ -317,10 +317,9 @@ std::string replayText(const Recording& recording)
         csv.row({"option", name, value});
     csv.row({"steps", std::to_string(recording.steps)});
     for (const auto& [step, input] : recording.changes)
-        csv.row({"input", std::to_string(step), keyList(input.keysDown),
-                 keyList(input.keysPressed), keyList(input.keysReleased), exactText(input.mouseX),
-                 exactText(input.mouseY), flags(input.left), flags(input.right),
-                 exactText(input.wheel)});
+        csv.row({"input", std::to_string(step), keyList(input.keysDown), keyList(input.keysPressed),
+                 keyList(input.keysReleased), exactText(input.mouseX), exactText(input.mouseY),
+                 flags(input.left), flags(input.right), exactText(input.wheel)});
     return text.str();
 }
 

@@ -7,6 +7,11 @@
 namespace hitbox
 {
 
+void WrappedLevel::handleInput(const Input& input, float dt)
+{
+    inner.handleInput(input, dt);
+}
+
 void WrappedLevel::update(float dt)
 {
     inner.update(dt);
@@ -16,6 +21,11 @@ void WrappedLevel::update(float dt)
 void WrappedLevel::render(sf::RenderTarget& target) const
 {
     inner.render(target);
+}
+
+void WrappedLevel::renderBlended(sf::RenderTarget& target, float leftover) const
+{
+    inner.renderBlended(target, leftover);
 }
 
 void WrappedLevel::renderDebug(DebugRenderer& debug) const
@@ -41,6 +51,27 @@ std::string WrappedLevel::describeState() const
 bool WrappedLevel::handleEscape()
 {
     return inner.handleEscape();
+}
+
+std::vector<PairEvent> WrappedLevel::getContactEvents() const
+{
+    return inner.getContactEvents();
+}
+
+std::unique_ptr<LevelState> WrappedLevel::saveState() const
+{
+    return inner.saveState();
+}
+
+void WrappedLevel::restoreState(const LevelState& state)
+{
+    inner.restoreState(state);
+}
+
+void TimelineLevel::update(float dt)
+{
+    WrappedLevel::update(dt);
+    timeline.addStep(step, inner.getContactEvents());
 }
 
 RecordingLevel::RecordingLevel(Level& inner, Recording header)
@@ -71,10 +102,10 @@ void ReplayingLevel::handleInput(const Input& input, float dt)
 
 std::string ReplayingLevel::getHelpText() const
 {
-    const std::string where = step < recording.steps
-                                  ? "replay step " + std::to_string(step) + " of " +
-                                        std::to_string(recording.steps)
-                                  : "replay over: live input";
+    const std::string where =
+        step < recording.steps
+            ? "replay step " + std::to_string(step) + " of " + std::to_string(recording.steps)
+            : "replay ended at step " + std::to_string(recording.steps) + ": live input from here";
     return where + "   |   " + inner.getHelpText();
 }
 

@@ -5,6 +5,7 @@
 
 #include "hitbox/app/Level.h"
 #include "hitbox/app/Replay.h"
+#include "hitbox/app/Timeline.h"
 
 namespace hitbox
 {
@@ -15,13 +16,18 @@ class WrappedLevel : public Level
 public:
     explicit WrappedLevel(Level& inner) : inner(inner) {}
 
+    void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
+    void renderBlended(sf::RenderTarget& target, float leftover) const override;
     void renderDebug(DebugRenderer& debug) const override;
     sf::Vector2f getWorldSize() const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
     bool handleEscape() override;
+    std::vector<PairEvent> getContactEvents() const override;
+    std::unique_ptr<LevelState> saveState() const override;
+    void restoreState(const LevelState& state) override;
 
     // Fixed steps run so far.
     [[nodiscard]] long long getStep() const { return step; }
@@ -44,6 +50,20 @@ public:
 
 private:
     Recording recording;
+};
+
+// Writes down every contact event the level reports, step by step (--timeline).
+class TimelineLevel : public WrappedLevel
+{
+public:
+    explicit TimelineLevel(Level& inner) : WrappedLevel(inner) {}
+
+    void update(float dt) override;
+
+    [[nodiscard]] const Timeline& getTimeline() const { return timeline; }
+
+private:
+    Timeline timeline;
 };
 
 // Gives the level the recorded input of each step instead of the live one; after the last

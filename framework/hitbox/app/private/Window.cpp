@@ -3,6 +3,7 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Keys.h"
+#include "hitbox/app/Letterbox.h"
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/Screenshot.h"
 #include "hitbox/app/private/LongRun.h"
@@ -72,14 +73,14 @@ void drawPanel(sf::RenderTarget& target, const sf::Font& font,
         target.draw(text);
 }
 
-// Scene, then debug shapes, then the help line: the same picture in the window and in a
-// --screenshot file.
+// Scene (`leftover` of a step after the last one, Loop.h), then debug shapes, then the help
+// line: the same picture in the window and in a --screenshot file.
 void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& font,
-               const FrameSettings& settings)
+               const FrameSettings& settings, float leftover)
 {
     const sf::Vector2f world = level.getWorldSize();
     target.clear(sf::Color(18, 20, 28));
-    level.render(target);
+    level.renderBlended(target, leftover);
     if (settings.showDebug)
     {
         DebugRenderer debug;
@@ -177,7 +178,9 @@ public:
     // --frames N in a window: it closes after N steps (stepsLeft -1: runs until closed).
     bool isRunning() const override { return window.isOpen() && stepsLeft != 0; }
 
-    float processInput(Input& input) override
+    float secondsSinceLastFrame() override { return frameClock.restart().asSeconds(); }
+
+    void processInput(Input& input) override
     {
         if (settings.paused)
             input.update(); // presses while paused are not saved up for later
@@ -201,7 +204,6 @@ public:
         // Recomputed every frame, so the mouse is right after a resize or a view change.
         input.setMousePosition(
             window.mapPixelToCoords(mousePixel, worldView(level, window.getSize())));
-        return frameClock.restart().asSeconds();
     }
 
     int stepsToRun(int due) override
@@ -225,11 +227,12 @@ public:
         return steps;
     }
 
-    void render(const Level& drawn) override
+    void render(const Level& drawn, float leftover) override
     {
         countFrame();
         window.setView(worldView(drawn, window.getSize()));
-        drawFrame(window, drawn, font, settings);
+        // Paused, the picture is the step itself (what N and --pause-at-step stop at).
+        drawFrame(window, drawn, font, settings, settings.paused ? 1.f : leftover);
         window.display();
     }
 
@@ -343,7 +346,7 @@ int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info
     FrameSettings settings;
     settings.showDebug = options.debugBoxes;
     canvas.setView(sf::View(sf::FloatRect({0.f, 0.f}, world)));
-    drawFrame(canvas, level, font, settings);
+    drawFrame(canvas, level, font, settings, 1.f);
     canvas.display();
     const SaveResult saved = saveImage(canvas.getTexture().copyToImage(), options.screenshotPath);
     if (!saved)

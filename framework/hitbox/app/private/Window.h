@@ -2,7 +2,8 @@
 // the shared keys (Keys.h) act, the help line and screenshots. Only App.cpp calls these.
 #pragma once
 
-#include "hitbox/app/App.h"
+#include "hitbox/app/Level.h"
+#include "hitbox/app/Options.h"
 
 namespace hitbox
 {
