@@ -75,6 +75,12 @@ public:
     void render(sf::RenderTarget& target) const override;
     // The ball and paddles drawn `leftover` of a step past the step before (Level.h).
     void renderBlended(sf::RenderTarget& target, float leftover) const override;
+    // A paddle hit as an enter and an exit in the same step (the swept ball touches the paddle
+    // and leaves it within the step): what the window's rewind strip marks (Level.h).
+    std::vector<hitbox::PairEvent> getContactEvents() const override;
+    // Rewinding (Level.h, PongSnapshot.cpp): every value a step changes.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     sf::Vector2f getWorldSize() const override;
     std::string getHelpText() const override;

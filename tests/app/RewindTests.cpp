@@ -65,8 +65,8 @@ public:
     std::string bits() const
     {
         std::string text(reinterpret_cast<const char*>(state->x.data()), 4 * state->x.size());
-        return text + std::string(reinterpret_cast<const char*>(state->v.data()),
-                                  4 * state->v.size());
+        return text +
+               std::string(reinterpret_cast<const char*>(state->v.data()), 4 * state->v.size());
     }
 
     std::unique_ptr<State> state;
@@ -125,8 +125,8 @@ TEST(Rewind, EveryKeptStepIsShownExactlyAndTheRunGoesOnUnchanged)
                 ASSERT_EQ(rewind.show(at), at);
                 ASSERT_EQ(rewound.bits(), history[static_cast<std::size_t>(at)]) << "step " << at;
             }
-            for (long long at : {rewind.oldestStep() + 7, rewind.newestStep() - 1,
-                                 rewind.oldestStep() + 99})
+            for (long long at :
+                 {rewind.oldestStep() + 7, rewind.newestStep() - 1, rewind.oldestStep() + 99})
             {
                 rewind.show(at);
                 ASSERT_EQ(rewound.bits(), history[static_cast<std::size_t>(at)]) << "step " << at;

@@ -6,12 +6,14 @@
 #include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/ReplayLevel.h"
+#include "hitbox/app/Rewind.h"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -106,4 +108,46 @@ TEST(PongReplay, ARecordedMatchAndItsReplayEndBitForBitTheSame)
     unplayed.startMatch(Mode::TwoPlayers);
     hitbox::simulate(unplayed, steps);
     EXPECT_NE(stateBits(unplayed), stateBits(recorded));
+}
+
+TEST(PongRewind, EveryKeptStepOfAMatchIsShownAsItWasAndTheMatchGoesOnUnchanged)
+{
+    PongLevel reference(twoPlayers());
+    reference.startMatch(Mode::TwoPlayers);
+    PongLevel rewound(twoPlayers());
+    rewound.startMatch(Mode::TwoPlayers);
+    hitbox::RewindLevel rewind(rewound);
+    std::vector<std::string> history{stateBits(reference)};
+    Input referenceInput;
+    Input input;
+    std::mt19937 referenceRandom(3);
+    std::mt19937 random(3);
+    const long long run = 2000;
+    for (long long i = 0; i < run; ++i)
+    {
+        scriptInput(referenceInput, referenceRandom);
+        reference.handleInput(referenceInput, hitbox::stepSeconds);
+        reference.update(hitbox::stepSeconds);
+        referenceInput.update();
+        history.push_back(stateBits(reference));
+        scriptInput(input, random);
+        rewind.handleInput(input, hitbox::stepSeconds);
+        rewind.update(hitbox::stepSeconds);
+        input.update();
+    }
+    ASSERT_TRUE(rewind.canRewind());
+    EXPECT_EQ(rewind.oldestStep(), run - hitbox::rewindSteps);
+    for (long long at : {run - 1, run - 2, rewind.oldestStep(), run - 600, run - 599, run})
+    {
+        ASSERT_EQ(rewind.show(at), at);
+        EXPECT_EQ(stateBits(rewound), history[static_cast<std::size_t>(at)]) << "step " << at;
+    }
+    rewind.show(run - 700);
+    scriptInput(referenceInput, referenceRandom);
+    reference.handleInput(referenceInput, hitbox::stepSeconds);
+    reference.update(hitbox::stepSeconds);
+    scriptInput(input, random);
+    rewind.handleInput(input, hitbox::stepSeconds); // a live step: back to the newest first
+    rewind.update(hitbox::stepSeconds);
+    EXPECT_EQ(stateBits(rewound), stateBits(reference));
 }

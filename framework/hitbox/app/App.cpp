@@ -47,13 +47,13 @@ private:
     long long framesLeft;
 };
 
-int runLevel(Level& level, const Options& options, const ProgramInfo& info)
+int runLevel(Level& level, const Options& options, const ProgramInfo& info, RewindTools tools = {})
 {
     if (options.headless)
         return runHeadless(level, options, info);
     if (!options.screenshotPath.empty())
         return saveScreenshot(level, options, info);
-    return runWindow(level, options, info);
+    return runWindow(level, options, info, tools);
 }
 
 // Reads --replay's file into `replay` and sets what the replay decides (how long to run,
@@ -125,10 +125,15 @@ int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& 
         levelOptions.extra = replay.options;
         levelOptions.headless = replay.headless;
     }
-    std::unique_ptr<Level> level = makeLevel(levelOptions);
+    std::unique_ptr<Level> made = makeLevel(levelOptions);
+    // In the window, the rewind sits right around the level (Rewind.h: looking back never
+    // changes what the replay, the recording or the timeline see).
+    const bool window = !options.headless && options.screenshotPath.empty();
+    std::unique_ptr<RewindLevel> rewind = window ? std::make_unique<RewindLevel>(*made) : nullptr;
+    Level* level = rewind ? rewind.get() : made.get();
     std::unique_ptr<ReplayingLevel> replaying;
     std::unique_ptr<RecordingLevel> recorder;
-    Level* inner = level.get();
+    Level* inner = level;
     if (!options.replayPath.empty())
         inner = (replaying = std::make_unique<ReplayingLevel>(*level, replay)).get();
     else if (!options.recordPath.empty())
@@ -141,9 +146,10 @@ int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& 
         inner = (recorder = std::make_unique<RecordingLevel>(*level, header)).get();
     }
     std::unique_ptr<TimelineLevel> timeline;
-    if (!options.timelinePath.empty())
+    if (!options.timelinePath.empty() || window) // the window's rewind strip shows it
         timeline = std::make_unique<TimelineLevel>(*inner);
-    const int code = runLevel(timeline ? *timeline : *inner, options, info);
+    const int code = runLevel(timeline ? *timeline : *inner, options, info,
+                              {rewind.get(), timeline ? &timeline->getTimeline() : nullptr});
     if (code != 0)
         return code; // a run stopped by Ctrl-C or an error leaves no half-written file
 
@@ -151,10 +157,11 @@ int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& 
         !saveReporting(info, "--record", options.recordPath, replayText(recorder->getRecording()),
                        "recorded " + std::to_string(recorder->getStep()) + " steps"))
         return 1;
-    if (timeline && !saveReporting(info, "--timeline", options.timelinePath,
-                                   timelineCsv(timeline->getTimeline().getEvents()),
-                                   std::to_string(timeline->getTimeline().getEvents().size()) +
-                                       " contact events"))
+    if (timeline && !options.timelinePath.empty() &&
+        !saveReporting(info, "--timeline", options.timelinePath,
+                       timelineCsv(timeline->getTimeline().getEvents()),
+                       std::to_string(timeline->getTimeline().getEvents().size()) +
+                           " contact events"))
         return 1;
     return 0;
 }

@@ -15,13 +15,13 @@ namespace hitbox
 // One event, with names rather than pointers (an object may be gone by the time it is read).
 struct TimelineEvent
 {
-    long long step = 0;  // fixed steps run when it happened: 1 is the first step (the number
-                         // --pause-at-step takes to stop right after it)
-    std::string a;       // the pair's first object: its name, else GameObject::describe()
-    std::string b;       // "(destroyed)" for an object destroyed before its Exit
+    long long step = 0; // fixed steps run when it happened: 1 is the first step (the number
+                        // --pause-at-step takes to stop right after it)
+    std::string a;      // the pair's first object: its name, else GameObject::describe()
+    std::string b;      // "(destroyed)" for an object destroyed before its Exit
     ContactPhase kind = ContactPhase::Enter;
-    Vec2 normal;         // out of b towards a; for an Exit, the last contact's
-    float depth = 0.f;   // > 0 (an Exit: the last depth while they collided)
+    Vec2 normal;       // out of b towards a; for an Exit, the last contact's
+    float depth = 0.f; // > 0 (an Exit: the last depth while they collided)
     bool trigger = false;
 };
 

@@ -21,8 +21,7 @@ std::string ballBits(const ManyObjectsLevel& level)
     std::string bits;
     for (const Ball& ball : level.getBalls())
     {
-        const float values[] = {ball.position.x, ball.position.y, ball.velocity.x,
-                                ball.velocity.y};
+        const float values[] = {ball.position.x, ball.position.y, ball.velocity.x, ball.velocity.y};
         bits.append(reinterpret_cast<const char*>(values), sizeof(values));
     }
     return bits;
@@ -87,7 +86,8 @@ TEST(Rewind, TenSecondsAtTenThousandBallsCostWhatTheSnapshotsHold)
               << std::endl;
     RecordProperty("rewind_bytes_10000_balls", std::to_string(used));
     const std::size_t most = hitbox::rewindSteps / hitbox::rewindSnapshotSteps + 2;
-    EXPECT_LE(used, most * (snapshot + 64) + 2 * hitbox::rewindSteps * sizeof(hitbox::InputSnapshot));
+    EXPECT_LE(used,
+              most * (snapshot + 64) + 2 * hitbox::rewindSteps * sizeof(hitbox::InputSnapshot));
     EXPECT_GE(used, (most - 2) * snapshot);
     EXPECT_EQ(rewind.oldestStep(), steps - hitbox::rewindSteps);
 }

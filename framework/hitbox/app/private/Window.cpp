@@ -8,6 +8,7 @@
 #include "hitbox/app/Screenshot.h"
 #include "hitbox/app/private/LongRun.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/debug/TimelineStrip.h"
 #include "hitbox/sfml/Events.h"
 #include "hitbox/sfml/Graphics.h"
 
@@ -31,7 +32,33 @@ struct FrameSettings
     bool showDebug = false;
     bool paused = false;
     int framesPerSecond = 0;
+    RewindTools rewind; // while paused: the strip and Left/Right
 };
+
+// Where the rewind strip lies: along the bottom, just above the help line.
+Box stripArea(sf::Vector2f world)
+{
+    return {8.f, world.y - 24.f - 26.f, world.x - 16.f, 22.f};
+}
+
+bool canRewind(const FrameSettings& settings)
+{
+    return settings.paused && settings.rewind.rewind != nullptr &&
+           settings.rewind.rewind->canRewind();
+}
+
+// The paused window's strip: the kept steps, the enters and exits among them, the step shown.
+void drawRewindStrip(sf::RenderTarget& target, const Level& level, const FrameSettings& settings)
+{
+    const RewindLevel& rewind = *settings.rewind.rewind;
+    std::vector<StripMark> marks;
+    if (settings.rewind.timeline != nullptr)
+        for (const TimelineEvent& event : settings.rewind.timeline->getEvents())
+            if (event.kind != ContactPhase::Stay && event.step >= rewind.oldestStep())
+                marks.push_back({event.step, event.kind == ContactPhase::Enter});
+    drawTimelineStrip(target, stripArea(level.getWorldSize()),
+                      {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, marks);
+}
 
 std::string helpLine(const Level& level, const FrameSettings& settings)
 {
@@ -99,9 +126,15 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
     help.setPosition({8.f, world.y - barHeight + 3.f});
     target.draw(help);
 
+    if (canRewind(settings))
+        drawRewindStrip(target, level, settings);
     if (settings.paused)
     {
-        sf::Text paused = makeText(font, "PAUSED  -  P to resume, N for one step", 22);
+        std::string title = "PAUSED  -  P to resume, N for one step";
+        if (canRewind(settings))
+            title = "PAUSED at step " + std::to_string(settings.rewind.rewind->shownStep()) +
+                    "  -  Left/Right or click the strip: step back/forward, P resume";
+        sf::Text paused = makeText(font, title, 22);
         paused.setFillColor(sf::Color::White);
         paused.setOutlineColor(sf::Color::Black);
         paused.setOutlineThickness(2.f);
@@ -167,12 +200,13 @@ void feedInput(Input& input, const WindowEvent& event)
 class WindowHost : public LoopHost
 {
 public:
-    WindowHost(Level& level, const Options& options, const ProgramInfo& info)
+    WindowHost(Level& level, const Options& options, const ProgramInfo& info, RewindTools tools)
         : level(level), font(loadFont()), window(windowMode(level.getWorldSize()), info.title),
           stepsLeft(options.frames), pauseAtStep(options.pauseAtStep)
     {
         window.setFramerateLimit(static_cast<unsigned>(stepsPerSecond));
         settings.showDebug = options.debugBoxes;
+        settings.rewind = tools;
     }
 
     // --frames N in a window: it closes after N steps (stepsLeft -1: runs until closed).
@@ -198,7 +232,13 @@ public:
             else if (event.kind == WindowEvent::Kind::MouseMoved)
                 mousePixel = event.mousePixel;
             else if (event.kind == WindowEvent::Kind::KeyPressed)
+            {
                 actOnSharedKey(findSharedKey(static_cast<int>(event.key)));
+                rewindByKey(event.key);
+            }
+            else if (event.kind == WindowEvent::Kind::MouseButtonPressed &&
+                     event.button == sf::Mouse::Button::Left)
+                rewindByClick(mousePixel); // where the last move left the pointer
         }
         settings.paused = pausedByKey || pausedByFocus;
         // Recomputed every frame, so the mouse is right after a resize or a view change.
@@ -237,6 +277,32 @@ public:
     }
 
 private:
+    // Paused: Left and Right step back and forward through the kept steps (Rewind.h).
+    void rewindByKey(sf::Keyboard::Key key)
+    {
+        if (!canRewind(settings))
+            return;
+        RewindLevel& rewind = *settings.rewind.rewind;
+        if (key == sf::Keyboard::Key::Left)
+            rewind.show(rewind.shownStep() - 1);
+        else if (key == sf::Keyboard::Key::Right)
+            rewind.show(rewind.shownStep() + 1);
+    }
+
+    // Paused: a click on the strip shows the step under it.
+    void rewindByClick(sf::Vector2i pixel)
+    {
+        if (!canRewind(settings))
+            return;
+        const sf::Vector2f at = window.mapPixelToCoords(pixel, worldView(level, window.getSize()));
+        const Box area = stripArea(level.getWorldSize());
+        if (at.y < area.top || at.y > area.top + area.height)
+            return;
+        RewindLevel& rewind = *settings.rewind.rewind;
+        rewind.show(stripStepAt(
+            area, {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, at.x));
+    }
+
     void actOnSharedKey(const SharedKey* shared)
     {
         if (shared == nullptr)
@@ -302,9 +368,9 @@ private:
 
 } // namespace
 
-int runWindow(Level& level, const Options& options, const ProgramInfo& info)
+int runWindow(Level& level, const Options& options, const ProgramInfo& info, RewindTools tools)
 {
-    WindowHost host(level, options, info);
+    WindowHost host(level, options, info, tools);
     runLoop(level, host);
     return 0;
 }
