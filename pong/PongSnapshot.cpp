@@ -16,7 +16,10 @@ struct PongState : hitbox::LevelState
     {
     }
 
-    std::size_t bytes() const override { return sizeof(PongState) + events.capacity() * sizeof(GameEvent); }
+    std::size_t bytes() const override
+    {
+        return sizeof(PongState) + events.capacity() * sizeof(GameEvent);
+    }
 
     PongSettings settings;
     Arena arena;
@@ -138,8 +141,9 @@ std::vector<hitbox::PairEvent> PongLevel::getContactEvents() const
             contact.phase = phase;
             contact.first = const_cast<Ball*>(&ball);
             contact.second = const_cast<Paddle*>(&paddle);
-            contact.contact = lastHit.hit ? hitbox::Contact{true, lastHit.normal, 0.f, lastHit.point}
-                                          : hitbox::Contact{};
+            contact.contact = lastHit.hit
+                                  ? hitbox::Contact{true, lastHit.normal, 0.f, lastHit.point}
+                                  : hitbox::Contact{};
             contact.step = static_cast<std::uint64_t>(stepCount);
             contacts.push_back(contact);
         }

@@ -15,9 +15,13 @@
 //     --screenshot F.png  simulate --frames steps (default 0), draw one frame into F.png
 //     --debug             start with the debug boxes shown
 //     --seed N            seed for anything random (default 1)
+//     --record FILE       write the seed, options and each step's input (Replay.h)
+//     --replay FILE       run a recording again, exactly; --pause-at-step N pauses there
+//     --timeline F.csv    write every contact event (Timeline.h)
 //     --help, -h          print the usage page (Options.h, usagePage)
 // and the same keys in the window:
 //     F1 debug boxes   P pause   N one step while paused   F12 screenshot   Esc quit
+// and, paused, Left/Right (or a click on the strip) to step through the last 10 s (Rewind.h).
 #pragma once
 
 #include "hitbox/app/Letterbox.h"

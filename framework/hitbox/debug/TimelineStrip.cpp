@@ -53,8 +53,7 @@ void drawTimelineStrip(sf::RenderTarget& target, const Box& area, StripRange ran
         // Told apart by height as well as colour, so no one needs the colour.
         const float height = mark.enter ? area.height - 4.f : (area.height - 4.f) / 2.f;
         bar(target, stripXOf(area, range, mark.step) - 1.f, area.top + area.height - 2.f - height,
-            2.f, height,
-            mark.enter ? DebugRenderer::overlappingColor : DebugRenderer::freeColor);
+            2.f, height, mark.enter ? DebugRenderer::overlappingColor : DebugRenderer::freeColor);
     }
     bar(target, stripXOf(area, range, range.shown) - 1.5f, area.top, 3.f, area.height,
         sf::Color::White);
