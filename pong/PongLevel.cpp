@@ -60,6 +60,10 @@ PongLevel::PongLevel(const PongSettings& pongSettings)
 {
     ball.placeAt({arena.centerX(), arena.centerY()});
     ballStepStart = ball.getPosition();
+    // Names for the debugger's words (explain, the --timeline file).
+    ball.setName("ball");
+    leftPaddle.setName("left paddle");
+    rightPaddle.setName("right paddle");
 }
 
 PongLevel::~PongLevel() = default;
@@ -198,6 +202,8 @@ void PongLevel::handleInput(const Input& input, float)
 void PongLevel::update(float dt)
 {
     ++stepCount;
+    leftStepStart = leftPaddle.getPosition();
+    rightStepStart = rightPaddle.getPosition();
     events.clear();
     secondsSinceContact += dt;
     if (screen == Screen::Title)

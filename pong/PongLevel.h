@@ -73,6 +73,14 @@ public:
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
+    // The ball and paddles drawn `leftover` of a step past the step before (Level.h).
+    void renderBlended(sf::RenderTarget& target, float leftover) const override;
+    // A paddle hit as an enter and an exit in the same step (the swept ball touches the paddle
+    // and leaves it within the step): what the window's rewind strip marks (Level.h).
+    std::vector<hitbox::PairEvent> getContactEvents() const override;
+    // Rewinding (Level.h, PongSnapshot.cpp): every value a step changes.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     sf::Vector2f getWorldSize() const override;
     std::string getHelpText() const override;
@@ -131,6 +139,8 @@ private:
     std::vector<GameEvent> events;
     hitbox::Hit lastHit;        // the ball's last contact, for the debug view
     sf::Vector2f ballStepStart; // where the ball began the last step (debug view)
+    sf::Vector2f leftStepStart; // where the paddles began it (drawing between steps)
+    sf::Vector2f rightStepStart;
     long long stepCount = 0;
     int matchesFinished = 0;
     int leftMatchesWon = 0;

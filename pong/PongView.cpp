@@ -8,6 +8,7 @@
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/Graphics/RenderStates.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 #include <SFML/Graphics/Text.hpp>
 
@@ -61,8 +62,31 @@ std::string winnerLine(Mode mode, Side winner)
 }
 } // namespace
 
+namespace
+{
+// Draws `object` where it was `leftover` of the way from `stepStart` to where it is now
+// (Nystrom, Game Programming Patterns, "Game Loop": render(lag / MS_PER_UPDATE)). A jump
+// longer than any step's move (a serve from the middle) is drawn where it landed.
+sf::RenderStates between(const GameObject& object, sf::Vector2f stepStart, float leftover)
+{
+    const float longestMove = 60.f;
+    const sf::Vector2f move = object.getPosition() - stepStart;
+    sf::RenderStates states;
+    if (std::abs(move.x) < longestMove && std::abs(move.y) < longestMove)
+        states.transform.translate((leftover - 1.f) * move);
+    return states;
+}
+} // namespace
+
 void PongLevel::render(sf::RenderTarget& target) const
 {
+    renderBlended(target, 1.f);
+}
+
+void PongLevel::renderBlended(sf::RenderTarget& target, float leftover) const
+{
+    const sf::RenderStates leftAt = between(leftPaddle, leftStepStart, leftover);
+    const sf::RenderStates rightAt = between(rightPaddle, rightStepStart, leftover);
     const float centerX = arena.centerX();
 
     // The court: walls and the dashed centre line (the "net").
@@ -85,8 +109,8 @@ void PongLevel::render(sf::RenderTarget& target) const
 
     if (screen == Screen::Title)
     {
-        target.draw(leftPaddle);
-        target.draw(rightPaddle);
+        target.draw(leftPaddle, leftAt);
+        target.draw(rightPaddle, rightAt);
         const hitbox::Box panel{centerX - 330.f, 110.f, 660.f, 420.f};
         drawPanel(target, panel);
         drawCentered(target, font.get(), "PONG", 96, centerX, 140.f, scoreColor);
@@ -126,11 +150,11 @@ void PongLevel::render(sf::RenderTarget& target) const
         drawCentered(target, font.get(), "sound off (M)", 16, arena.size.x - 80.f, 24.f,
                      dimTextColor);
 
-    target.draw(leftPaddle);
-    target.draw(rightPaddle);
+    target.draw(leftPaddle, leftAt);
+    target.draw(rightPaddle, rightAt);
     if (screen == Screen::Play)
     {
-        target.draw(ball);
+        target.draw(ball, between(ball, ballStepStart, leftover));
         return;
     }
 

@@ -168,6 +168,8 @@ function(hitbox_add_lab_tests name)
     add_executable(${name}_tests ${LAB_SOURCES})
     target_link_libraries(${name}_tests PRIVATE ${name}_level hitbox_test_support)
     _hitbox_lab_target_settings(${name}_tests)
+    # The program a failing scene test's replay opens in (tests/support/SceneReplay.h).
+    target_compile_definitions(${name}_tests PRIVATE HITBOX_LAB_PROGRAM="$<TARGET_FILE:${name}>")
     gtest_discover_tests(${name}_tests
         TEST_PREFIX "${name}."
         DISCOVERY_TIMEOUT 60
@@ -181,6 +183,8 @@ function(hitbox_add_lab_tests name)
     add_executable(${name}_exercise_tests ${LAB_SOURCES})
     target_link_libraries(${name}_exercise_tests PRIVATE ${name}_exercise_level hitbox_test_support)
     _hitbox_lab_target_settings(${name}_exercise_tests)
+    target_compile_definitions(${name}_exercise_tests PRIVATE
+        HITBOX_LAB_PROGRAM="$<TARGET_FILE:${name}_exercise>")
 endfunction()
 
 # Adds every numbered folder NN_name/ of the current source folder that has a

@@ -115,6 +115,11 @@ public:
     // The grid's cell width in pixels (grid method only).
     float getGridCellSize() const;
 
+    // For rewinding (hitbox::RewindLevel; LevelSnapshot.cpp): the balls and every other value
+    // a step changes. Restoring builds the broadphase afresh for the restored balls.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
+
 private:
     void spawnCrowd(int count);
     void spawnPairTableBalls(int count);

@@ -242,6 +242,11 @@ std::string WorldLevel::describeState() const
     return text;
 }
 
+std::vector<hitbox::PairEvent> WorldLevel::getContactEvents() const
+{
+    return world.getEvents();
+}
+
 const Player& WorldLevel::getPlayer() const
 {
     return *player;

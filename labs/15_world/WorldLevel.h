@@ -31,6 +31,7 @@ public:
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
+    std::vector<hitbox::PairEvent> getContactEvents() const override;
 
     // For the grading tests (and for experiments): set up any scene you like.
     // Removes every coin and enemy; the player stays, still, with autopilot off.

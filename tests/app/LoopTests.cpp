@@ -6,11 +6,13 @@
 #include "hitbox/app/App.h"
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Loop.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace
@@ -151,4 +153,45 @@ TEST(Simulate, RunsExactlyTheFramesAskedWithNoInput)
     hitbox::simulate(level, 240);
     EXPECT_EQ(level.steps, 240);
     EXPECT_GT(level.height, 0.f);
+}
+
+namespace
+{
+// A host whose frames take the given times; it writes down what the loop asks it to draw.
+class ScriptedHost : public hitbox::LoopHost
+{
+public:
+    explicit ScriptedHost(std::vector<float> frames) : frames(std::move(frames)) {}
+    bool isRunning() const override { return next < frames.size(); }
+    float secondsSinceLastFrame() override { return frames[next++]; }
+    void processInput(Input&) override { ++inputs; }
+    int stepsToRun(int due) override { return due; }
+    void render(const hitbox::Level& level, float leftover) override
+    {
+        const auto& ball = static_cast<const FallingBallLevel&>(level);
+        drawn.push_back({ball.steps, leftover});
+    }
+    std::vector<float> frames;
+    std::size_t next = 0;
+    int inputs = 0;
+    std::vector<std::pair<int, float>> drawn; // steps run so far, leftover fraction
+};
+} // namespace
+
+TEST(Loop, InputThenTheDueStepsThenOneDrawingWithTheLeftoverFraction)
+{
+    // Frames of 0.4, 1.3 and 0.5 steps: 0, 1 and 1 steps run (0.4, 0.7 and 0.2 left over).
+    const float step = hitbox::stepSeconds;
+    ScriptedHost host({0.4f * step, 1.3f * step, 0.5f * step});
+    FallingBallLevel level;
+    hitbox::runLoop(level, host);
+    EXPECT_EQ(host.inputs, 3);
+    ASSERT_EQ(host.drawn.size(), 3u);
+    const int steps[] = {0, 1, 2};
+    const float leftovers[] = {0.4f, 0.7f, 0.2f};
+    for (int frame = 0; frame < 3; ++frame)
+    {
+        EXPECT_EQ(host.drawn[frame].first, steps[frame]) << "frame " << frame;
+        EXPECT_NEAR(host.drawn[frame].second, leftovers[frame], 1e-3f) << "frame " << frame;
+    }
 }

@@ -58,14 +58,20 @@ row 2 "Pong: --seconds needs a number from 0 to 100000000, not '1537228672809129
 row 2 "Pong: --seed needs a whole number from 0 to 4294967295, not '4294967297'" "${nodisplay[@]}" "$pong" --headless --seed 4294967297
 row 2 "Pong: --screenshot draws a picture, so it cannot be --headless" "${nodisplay[@]}" "$pong" --headless --screenshot x.png
 row 2 "Pong: --screenshot needs a file name, e.g. shot.png" "$pong" --screenshot ""
-row 2 "Pong: unknown option '--bogus' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N --mode VALUE --difficulty VALUE --points-to-win VALUE --screen VALUE; --help explains)" "${nodisplay[@]}" "$pong" --bogus
-row 2 "Hitbox sandbox: unknown option '\\xEF\\xBB\\xBF' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N; --help explains)" "${nodisplay[@]}" "$sandbox" $'\xEF\xBB\xBF'
+row 2 "Pong: unknown option '--bogus' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N --record FILE --replay FILE --timeline F.csv --pause-at-step N --mode VALUE --difficulty VALUE --points-to-win VALUE --screen VALUE; --help explains)" "${nodisplay[@]}" "$pong" --bogus
+row 2 "Hitbox sandbox: unknown option '\\xEF\\xBB\\xBF' (the options are: --headless --frames N --seconds S --screenshot FILE.png --debug --seed N --record FILE --replay FILE --timeline F.csv --pause-at-step N; --help explains)" "${nodisplay[@]}" "$sandbox" $'\xEF\xBB\xBF'
 # Issue 25, items 23 and 24: numbers are decimal only (as Options.h says), and an option that
 # would silently override another is refused.
 for bad in 0x10 0x1p3 1e-400 1e2 ' 5' '+5' .5 5. inf; do
     row 2 "Lab 6 - Rotated boxes: --spin needs a number from -720 to 720, not '$bad'" "${nodisplay[@]}" "$lab06" --headless --spin "$bad"
 done
 row 2 "Pong: --seconds needs a number from 0 to 100000000, not '1e3'" "${nodisplay[@]}" "$pong" --headless --seconds 1e3
+# Record and replay (docs/debugging.md): a bad file is one line and exit 2, before any run.
+row 2 "Pong: --replay: cannot open '/no/such.replay'" "${nodisplay[@]}" "$pong" --headless --replay /no/such.replay
+row 2 "Pong: --record and --replay: give one of them" "${nodisplay[@]}" "$pong" --headless --record a --replay b
+row 2 "Pong: --record: cannot save '/no/such/folder/a.replay': the folder '/no/such/folder' does not exist" "${nodisplay[@]}" "$pong" --headless --record /no/such/folder/a.replay
+row 2 "Pong: --timeline: cannot save '/no/such/folder/t.csv': the folder '/no/such/folder' does not exist" "${nodisplay[@]}" "$pong" --headless --timeline /no/such/folder/t.csv
+row 2 "Pong: --pause-at-step pauses the window, so it needs one (not --headless or --screenshot)" "${nodisplay[@]}" "$pong" --headless --pause-at-step 3
 row 2 "Pong: --frames is given twice; give it once" "${nodisplay[@]}" "$pong" --headless --frames 5 --frames 7
 row 2 "Pong: --mode is given twice; give it once" "${nodisplay[@]}" "$pong" --headless --mode 1p --mode 2p
 row 2 "Pong: --frames and --seconds both set how long to run; give one of them" "${nodisplay[@]}" "$pong" --headless --frames 5 --seconds 7

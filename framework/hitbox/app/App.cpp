@@ -4,6 +4,8 @@
 #include "hitbox/app/Display.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Loop.h"
+#include "hitbox/app/ReplayLevel.h"
+#include "hitbox/app/WholeFile.h"
 #include "hitbox/app/private/LongRun.h"
 #include "hitbox/app/private/Window.h"
 
@@ -36,17 +38,133 @@ public:
     explicit HeadlessHost(long long frames) : framesLeft(frames) {}
 
     bool isRunning() const override { return framesLeft > 0; }
-    float processInput(Input&) override
-    {
-        --framesLeft;
-        return stepSeconds;
-    }
+    float secondsSinceLastFrame() override { return stepSeconds; }
+    void processInput(Input&) override { --framesLeft; }
     int stepsToRun(int) override { return 1; }
-    void render(const Level&) override {}
+    void render(const Level&, float) override {}
 
 private:
     long long framesLeft;
 };
+
+int runLevel(Level& level, const Options& options, const ProgramInfo& info, RewindTools tools = {})
+{
+    if (options.headless)
+        return runHeadless(level, options, info);
+    if (!options.screenshotPath.empty())
+        return saveScreenshot(level, options, info);
+    return runWindow(level, options, info, tools);
+}
+
+// Reads --replay's file into `replay` and sets what the replay decides (how long to run,
+// where to pause); false after printing the one line that says why it cannot be replayed.
+bool prepareReplay(Options& options, const ProgramInfo& info, Recording& replay)
+{
+    ReplayRead read = readReplayFile(options.replayPath);
+    if (read && read.recording.program != info.title)
+        read = {false,
+                {},
+                "'" + printable(options.replayPath, 200) + "' was recorded by '" +
+                    printable(read.recording.program) + "', not by this program"};
+    if (read && !options.extra.empty())
+        read = {false,
+                {},
+                "the program's own options come from the replay: leave out " +
+                    options.extra.begin()->first};
+    if (!read)
+    {
+        std::cerr << info.title << ": --replay: " << read.problem << std::endl;
+        return false;
+    }
+    replay = read.recording;
+    const bool window = !options.headless && options.screenshotPath.empty();
+    if (options.frames < 0 && !window)
+        options.frames = replay.steps;
+    if (options.pauseAtStep < 0 && window)
+        options.pauseAtStep = replay.steps;
+    return true;
+}
+
+// Saves `text` as `path`, printing one line: what was saved, or why it could not be.
+bool saveReporting(const ProgramInfo& info, const std::string& option, const std::string& path,
+                   const std::string& text, const std::string& what)
+{
+    const SaveResult saved = saveWholeFile(path, text);
+    if (!saved)
+        std::cerr << info.title << ": " << option << ": could not save '" << printable(path, 200)
+                  << "': " << saved.problem << std::endl;
+    else
+        std::cout << info.title << ": " << what << " in " << printable(path, 200) << std::endl;
+    return static_cast<bool>(saved);
+}
+
+// The level the program makes, wrapped for --replay or --record, then --timeline
+// (ReplayLevel.h), run as asked; the files are written only after a run that ended well.
+int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& makeLevel)
+{
+    Recording replay;
+    if (!options.replayPath.empty() && !prepareReplay(options, info, replay))
+        return 2;
+    for (const auto& [option, path] :
+         {std::pair<std::string, std::string>{"--record", options.recordPath},
+          {"--timeline", options.timelinePath}})
+    {
+        const SaveResult writable = path.empty() ? SaveResult{true, ""} : checkTextPath(path);
+        if (!writable)
+        {
+            std::cerr << info.title << ": " << option << ": cannot save '" << printable(path, 200)
+                      << "': " << writable.problem << std::endl;
+            return 2;
+        }
+    }
+    Options levelOptions = options;
+    if (!options.replayPath.empty())
+    {
+        // The level is built exactly as it was when recorded.
+        levelOptions.seed = replay.seed;
+        levelOptions.extra = replay.options;
+        levelOptions.headless = replay.headless;
+    }
+    std::unique_ptr<Level> made = makeLevel(levelOptions);
+    // In the window, the rewind sits right around the level (Rewind.h: looking back never
+    // changes what the replay, the recording or the timeline see).
+    const bool window = !options.headless && options.screenshotPath.empty();
+    std::unique_ptr<RewindLevel> rewind = window ? std::make_unique<RewindLevel>(*made) : nullptr;
+    Level* level = rewind ? rewind.get() : made.get();
+    std::unique_ptr<ReplayingLevel> replaying;
+    std::unique_ptr<RecordingLevel> recorder;
+    Level* inner = level;
+    if (!options.replayPath.empty())
+        inner = (replaying = std::make_unique<ReplayingLevel>(*level, replay)).get();
+    else if (!options.recordPath.empty())
+    {
+        Recording header;
+        header.program = info.title;
+        header.seed = options.seed;
+        header.headless = options.headless;
+        header.options = options.extra;
+        inner = (recorder = std::make_unique<RecordingLevel>(*level, header)).get();
+    }
+    std::unique_ptr<TimelineLevel> timeline;
+    if (!options.timelinePath.empty() || window) // the window's rewind strip shows it
+        timeline = std::make_unique<TimelineLevel>(*inner);
+    const int code = runLevel(timeline ? *timeline : *inner, options, info,
+                              {rewind.get(), timeline ? &timeline->getTimeline() : nullptr});
+    if (code != 0)
+        return code; // a run stopped by Ctrl-C or an error leaves no half-written file
+
+    if (recorder &&
+        !saveReporting(info, "--record", options.recordPath, replayText(recorder->getRecording()),
+                       "recorded " + std::to_string(recorder->getStep()) + " steps"))
+        return 1;
+    if (timeline && !options.timelinePath.empty() &&
+        !saveReporting(info, "--timeline", options.timelinePath,
+                       timelineCsv(timeline->getTimeline().getEvents()),
+                       std::to_string(timeline->getTimeline().getEvents().size()) +
+                           " contact events"))
+        return 1;
+    return 0;
+}
 
 } // namespace
 
@@ -54,35 +172,6 @@ void simulate(Level& level, long long frames)
 {
     HeadlessHost host(frames);
     runLoop(level, host);
-}
-
-sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit)
-{
-    const double width = size.x >= 1.f ? static_cast<double>(size.x) : 1.0;
-    const double height = size.y >= 1.f ? static_cast<double>(size.y) : 1.0;
-    const double wide = std::max(1u, limit.x);
-    const double tall = std::max(1u, limit.y);
-    const double scale = std::min({1.0, wide / width, tall / height});
-    auto side = [](double pixels, double most)
-    { return static_cast<unsigned>(std::clamp(std::floor(pixels), 1.0, most)); };
-    return {side(width * scale, wide), side(height * scale, tall)};
-}
-
-sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize)
-{
-    if (windowSize.x == 0 || windowSize.y == 0 || !(worldSize.x > 0.f) || !(worldSize.y > 0.f))
-        return sf::FloatRect({0.f, 0.f}, {1.f, 1.f});
-    const float windowAspect = static_cast<float>(windowSize.x) / static_cast<float>(windowSize.y);
-    const float worldAspect = worldSize.x / worldSize.y;
-    if (windowAspect > worldAspect)
-    {
-        // Window too wide: bars left and right.
-        const float width = worldAspect / windowAspect;
-        return sf::FloatRect({(1.f - width) / 2.f, 0.f}, {width, 1.f});
-    }
-    // Window too tall: bars above and below.
-    const float height = windowAspect / worldAspect;
-    return sf::FloatRect({0.f, (1.f - height) / 2.f}, {1.f, height});
 }
 
 int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel)
@@ -114,12 +203,7 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
     }
     try
     {
-        std::unique_ptr<Level> level = makeLevel(options);
-        if (options.headless)
-            return runHeadless(*level, options, info);
-        if (!options.screenshotPath.empty())
-            return saveScreenshot(*level, options, info);
-        return runWindow(*level, options, info);
+        return runRecordable(options, info, makeLevel);
     }
     catch (const std::invalid_argument& error)
     {

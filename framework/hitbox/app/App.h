@@ -15,15 +15,19 @@
 //     --screenshot F.png  simulate --frames steps (default 0), draw one frame into F.png
 //     --debug             start with the debug boxes shown
 //     --seed N            seed for anything random (default 1)
+//     --record FILE       write the seed, options and each step's input (Replay.h)
+//     --replay FILE       run a recording again, exactly; --pause-at-step N pauses there
+//     --timeline F.csv    write every contact event (Timeline.h)
 //     --help, -h          print the usage page (Options.h, usagePage)
 // and the same keys in the window:
 //     F1 debug boxes   P pause   N one step while paused   F12 screenshot   Esc quit
+// and, paused, Left/Right (or a click on the strip) to step through the last 10 s (Rewind.h).
 #pragma once
 
+#include "hitbox/app/Letterbox.h"
 #include "hitbox/app/Level.h"
+#include "hitbox/app/Loop.h"
 #include "hitbox/app/Options.h"
-
-#include <SFML/Graphics/Rect.hpp>
 
 #include <functional>
 #include <map>
@@ -34,10 +38,6 @@
 namespace hitbox
 {
 
-// Simulation steps per second. Every program and every test uses the same step.
-constexpr float stepsPerSecond = 120.f;
-constexpr float stepSeconds = 1.f / stepsPerSecond;
-
 using LevelFactory = std::function<std::unique_ptr<Level>(const Options&)>;
 
 // Runs the program; returns main()'s exit code (0 fine, 1 error, 2 bad usage / no display,
@@ -46,17 +46,5 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
 
 // Runs `frames` fixed steps with no input and no window. Used by --headless and tests.
 void simulate(Level& level, long long frames);
-
-// The longest side of a --screenshot picture: a world larger than this (or than the
-// graphics driver's largest texture) is drawn shrunk to fit, whole.
-constexpr unsigned maxPictureSide = 4096;
-
-// `size` in whole pixels, shrunk (never grown, never stretched) to fit inside `limit`;
-// at least 1 x 1. A zero, negative or NaN side counts as 1 pixel.
-sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit);
-
-// The part of a window, as fractions of its size (a view's viewport), that shows a world
-// of `worldSize` as large as possible without stretching: bars fill the rest (letterbox).
-sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
 
 } // namespace hitbox

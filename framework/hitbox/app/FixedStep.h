@@ -9,7 +9,7 @@ namespace hitbox
 class FixedStep
 {
 public:
-    // Steps of `stepSeconds` (every program passes hitbox::stepSeconds, App.h). A frame
+    // Steps of `stepSeconds` (every program passes hitbox::stepSeconds, Loop.h). A frame
     // counts for at most `maxFrameSeconds` (never less than one step): after a stall the
     // game slows down for a moment instead of running hundreds of steps at once.
     explicit FixedStep(float stepSeconds, float maxFrameSeconds = 0.25f);

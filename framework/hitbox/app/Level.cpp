@@ -5,6 +5,11 @@ namespace hitbox
 
 void Level::handleInput(const Input&, float) {}
 
+void Level::renderBlended(sf::RenderTarget& target, float) const
+{
+    render(target);
+}
+
 void Level::renderDebug(DebugRenderer&) const {}
 
 sf::Vector2f Level::getWorldSize() const
@@ -21,6 +26,18 @@ std::string Level::describeState() const
 {
     return {};
 }
+
+std::vector<PairEvent> Level::getContactEvents() const
+{
+    return {};
+}
+
+std::unique_ptr<LevelState> Level::saveState() const
+{
+    return nullptr;
+}
+
+void Level::restoreState(const LevelState&) {}
 
 bool Level::handleEscape()
 {

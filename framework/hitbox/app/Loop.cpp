@@ -1,27 +1,27 @@
 #include "hitbox/app/Loop.h"
 
-#include "hitbox/app/App.h"
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Level.h"
 
 namespace hitbox
 {
 
 void runLoop(Level& level, LoopHost& host)
 {
-    FixedStep fixedStep(stepSeconds);
+    FixedStep lag(stepSeconds);
     Input input;
     while (host.isRunning())
     {
-        const float frameSeconds = host.processInput(input);
-        const int steps = host.stepsToRun(fixedStep.advance(frameSeconds));
+        host.processInput(input);
+        const int steps = host.stepsToRun(lag.advance(host.secondsSinceLastFrame()));
         for (int step = 0; step < steps; ++step)
         {
             level.handleInput(input, stepSeconds);
             level.update(stepSeconds);
             input.update(); // a key press is seen by exactly one step
         }
-        host.render(level);
+        host.render(level, lag.getLeftoverFraction());
     }
 }
 

@@ -1,7 +1,7 @@
 #include "hitbox/app/Options.h"
 
-#include "hitbox/app/App.h"
 #include "hitbox/app/Keys.h"
+#include "hitbox/app/Loop.h"
 
 #include <charconv>
 #include <cmath>
@@ -173,6 +173,11 @@ std::string usagePage(const ProgramInfo& info)
     page += "  --screenshot F.png  draw one frame into F.png after --frames steps\n";
     page += "  --debug             start with the debug boxes shown\n";
     page += "  --seed N            seed for anything random (0 to 4294967295)\n";
+    page += "  --record FILE       write the seed, options and every step's input to FILE\n";
+    page += "  --replay FILE       run FILE's recording again, exactly (its seed and options)\n";
+    page +=
+        "  --timeline F.csv    write every contact event (step, time, a, b, kind, normal, depth)\n";
+    page += "  --pause-at-step N   in the window: pause after N steps (a replay: at its end)\n";
     page += "  --help, -h          print this page\n";
     if (!info.extraOptions.empty())
     {
@@ -210,14 +215,17 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
         };
         const bool isShared = option == "--headless" || option == "--debug" ||
                               option == "--frames" || option == "--seconds" ||
-                              option == "--screenshot" || option == "--seed";
+                              option == "--screenshot" || option == "--seed" ||
+                              option == "--record" || option == "--replay" ||
+                              option == "--timeline" || option == "--pause-at-step";
         bool known = isShared;
         for (const std::string& extraOption : info.extraOptions)
             known = known || extraOption == option;
         if (!known)
         {
             std::string usage = "--headless --frames N --seconds S --screenshot FILE.png "
-                                "--debug --seed N";
+                                "--debug --seed N --record FILE --replay FILE --timeline F.csv "
+                                "--pause-at-step N";
             for (const std::string& extraOption : info.extraOptions)
                 usage += " " + extraOption + " VALUE";
             throw std::invalid_argument("unknown option '" + printable(option) +
@@ -253,11 +261,27 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
         }
         else if (option == "--seed")
             options.seed = static_cast<unsigned>(toWholeNumber(option, value(), 0, 4294967295));
+        else if (option == "--record" || option == "--replay" || option == "--timeline")
+        {
+            std::string& path = option == "--record"   ? options.recordPath
+                                : option == "--replay" ? options.replayPath
+                                                       : options.timelinePath;
+            path = value();
+            if (path.empty())
+                throw std::invalid_argument(option + " needs a file name, e.g. run.csv");
+        }
+        else if (option == "--pause-at-step")
+            options.pauseAtStep = toWholeNumber(option, value(), 0, maxSeconds * framesPerSecond);
         else
             options.extra[option] = value();
     }
     if (options.headless && !options.screenshotPath.empty())
         throw std::invalid_argument("--screenshot draws a picture, so it cannot be --headless");
+    if (!options.recordPath.empty() && !options.replayPath.empty())
+        throw std::invalid_argument("--record and --replay: give one of them");
+    if (options.pauseAtStep >= 0 && (options.headless || !options.screenshotPath.empty()))
+        throw std::invalid_argument("--pause-at-step pauses the window, so it needs one "
+                                    "(not --headless or --screenshot)");
     return options;
 }
 

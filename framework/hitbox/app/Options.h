@@ -30,6 +30,10 @@ struct Options
     std::string screenshotPath;
     bool debugBoxes = false;
     unsigned seed = 1;
+    std::string recordPath;     // --record FILE: write the run's input down (Replay.h)
+    std::string replayPath;     // --replay FILE: run a recorded run again
+    std::string timelinePath;   // --timeline FILE.csv: every contact event (Timeline.h)
+    long long pauseAtStep = -1; // --pause-at-step N: the window pauses after N steps; -1 never
     std::map<std::string, std::string> extra; // the ProgramInfo::extraOptions that were given
 
     // The value of an extra option as typed, or `fallback` when it was not given.

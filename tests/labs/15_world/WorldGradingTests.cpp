@@ -7,6 +7,7 @@
 // 3's no coins. A mistake in one task costs that task alone.
 #include "labs/LabTesting.h"
 #include "support/CollisionMatchers.h"
+#include "support/SceneReplay.h"
 
 #include "Pieces.h"
 #include "Rules.h"
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <random>
 #include <vector>
 
 namespace
@@ -252,6 +254,42 @@ TEST(Task2CollectCoins, EachCoinCountsOnce)
     EXPECT_EQ(scene.score, 3);
     EXPECT_EQ(scene.coins.size(), 1u);
     EXPECT_EQ(scene.world.size(), 2u);
+}
+
+// The program's own scene (`lab15_world --seed 3`: coins, enemies, new waves), played by
+// scripted arrow keys, checked at every step: the score rises by exactly the coins that left.
+// A failure prints the command that opens the run in the window at the failing step.
+TEST(Task2CollectCoins, InTheProgramsSceneEveryCoinThatLeavesScoresOnce)
+{
+    const unsigned seed = 3;
+    WorldLevel level(seed);
+    scenereplay::RecordedScene scene(level, {"Lab 15 - Many objects in one World", seed});
+    const sf::Keyboard::Key arrows[] = {sf::Keyboard::Key::Left, sf::Keyboard::Key::Right,
+                                        sf::Keyboard::Key::Up, sf::Keyboard::Key::Down};
+    std::mt19937 random(11);
+    std::uniform_int_distribution<int> pick(0, 4); // 4: let go (the autopilot stays off)
+    Input input;
+    for (int i = 0; i < 120 * 40; ++i)
+    {
+        if (i % 30 == 0)
+        {
+            for (sf::Keyboard::Key arrow : arrows)
+                input.setKeyUp(arrow);
+            const int chosen = pick(random);
+            if (chosen < 4)
+                input.setKeyDown(arrows[chosen]);
+        }
+        const int scoreBefore = level.getScore();
+        const int coinsBefore = level.getCoinCount();
+        scene.step(input);
+        const bool newWave = level.getCoinCount() > coinsBefore;
+        const int coinsLeft = coinsBefore - level.getCoinCount() + (newWave ? startCoins : 0);
+        ASSERT_EQ(level.getScore() - scoreBefore, coinsLeft)
+            << "step " << scene.stepCount() - 1 << ": the score rose by "
+            << level.getScore() - scoreBefore << " while " << coinsLeft << " coin(s) left"
+            << scene.replayCommand();
+    }
+    EXPECT_GT(level.getScore(), 0) << "the scripted keys should have collected some coins";
 }
 
 TEST(Task2CollectCoins, CoinOnlyTouchingThePlayerStays)

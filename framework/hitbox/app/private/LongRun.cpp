@@ -1,6 +1,5 @@
 #include "hitbox/app/private/LongRun.h"
 
-#include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Loop.h"
 
@@ -43,7 +42,8 @@ public:
     ReportingHost(long long frames, const std::string& title) : total(frames), title(title) {}
 
     bool isRunning() const override { return done < total && interrupted == 0; }
-    float processInput(Input&) override
+    float secondsSinceLastFrame() override { return stepSeconds; }
+    void processInput(Input&) override
     {
         ++done;
         // The clock is read every 1024 steps only: a step of a small level takes microseconds.
@@ -56,10 +56,9 @@ public:
                 nextReport = elapsed + progressSeconds;
             }
         }
-        return stepSeconds;
     }
     int stepsToRun(int) override { return 1; }
-    void render(const Level&) override {}
+    void render(const Level&, float) override {}
 
     long long stepsDone() const { return done; }
 

@@ -3,10 +3,12 @@
 #include "hitbox/app/Assets.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Keys.h"
+#include "hitbox/app/Letterbox.h"
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/Screenshot.h"
 #include "hitbox/app/private/LongRun.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/debug/TimelineStrip.h"
 #include "hitbox/sfml/Events.h"
 #include "hitbox/sfml/Graphics.h"
 
@@ -30,7 +32,33 @@ struct FrameSettings
     bool showDebug = false;
     bool paused = false;
     int framesPerSecond = 0;
+    RewindTools rewind; // while paused: the strip and Left/Right
 };
+
+// Where the rewind strip lies: along the bottom, just above the help line.
+Box stripArea(sf::Vector2f world)
+{
+    return {8.f, world.y - 24.f - 26.f, world.x - 16.f, 22.f};
+}
+
+bool canRewind(const FrameSettings& settings)
+{
+    return settings.paused && settings.rewind.rewind != nullptr &&
+           settings.rewind.rewind->canRewind();
+}
+
+// The paused window's strip: the kept steps, the enters and exits among them, the step shown.
+void drawRewindStrip(sf::RenderTarget& target, const Level& level, const FrameSettings& settings)
+{
+    const RewindLevel& rewind = *settings.rewind.rewind;
+    std::vector<StripMark> marks;
+    if (settings.rewind.timeline != nullptr)
+        for (const TimelineEvent& event : settings.rewind.timeline->getEvents())
+            if (event.kind != ContactPhase::Stay && event.step >= rewind.oldestStep())
+                marks.push_back({event.step, event.kind == ContactPhase::Enter});
+    drawTimelineStrip(target, stripArea(level.getWorldSize()),
+                      {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, marks);
+}
 
 std::string helpLine(const Level& level, const FrameSettings& settings)
 {
@@ -72,14 +100,14 @@ void drawPanel(sf::RenderTarget& target, const sf::Font& font,
         target.draw(text);
 }
 
-// Scene, then debug shapes, then the help line: the same picture in the window and in a
-// --screenshot file.
+// Scene (`leftover` of a step after the last one, Loop.h), then debug shapes, then the help
+// line: the same picture in the window and in a --screenshot file.
 void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& font,
-               const FrameSettings& settings)
+               const FrameSettings& settings, float leftover)
 {
     const sf::Vector2f world = level.getWorldSize();
     target.clear(sf::Color(18, 20, 28));
-    level.render(target);
+    level.renderBlended(target, leftover);
     if (settings.showDebug)
     {
         DebugRenderer debug;
@@ -98,9 +126,15 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
     help.setPosition({8.f, world.y - barHeight + 3.f});
     target.draw(help);
 
+    if (canRewind(settings))
+        drawRewindStrip(target, level, settings);
     if (settings.paused)
     {
-        sf::Text paused = makeText(font, "PAUSED  -  P to resume, N for one step", 22);
+        std::string title = "PAUSED  -  P to resume, N for one step";
+        if (canRewind(settings))
+            title = "PAUSED at step " + std::to_string(settings.rewind.rewind->shownStep()) +
+                    "  -  Left/Right or click the strip: step back/forward, P resume";
+        sf::Text paused = makeText(font, title, 22);
         paused.setFillColor(sf::Color::White);
         paused.setOutlineColor(sf::Color::Black);
         paused.setOutlineThickness(2.f);
@@ -166,12 +200,13 @@ void feedInput(Input& input, const WindowEvent& event)
 class WindowHost : public LoopHost
 {
 public:
-    WindowHost(Level& level, const Options& options, const ProgramInfo& info)
+    WindowHost(Level& level, const Options& options, const ProgramInfo& info, RewindTools tools)
         : level(level), font(loadFont()), window(windowMode(level.getWorldSize()), info.title),
-          stepsLeft(options.frames)
+          stepsLeft(options.frames), pauseAtStep(options.pauseAtStep)
     {
         window.setFramerateLimit(static_cast<unsigned>(stepsPerSecond));
         settings.showDebug = options.debugBoxes;
+        settings.rewind = tools;
     }
 
     // --frames N in a window: it closes after N steps (stepsLeft -1: runs until closed).
@@ -190,7 +225,9 @@ public:
                   << std::endl;
     }
 
-    float processInput(Input& input) override
+    float secondsSinceLastFrame() override { return frameClock.restart().asSeconds(); }
+
+    void processInput(Input& input) override
     {
         if (settings.paused)
             input.update(); // presses while paused are not saved up for later
@@ -208,13 +245,18 @@ public:
             else if (event.kind == WindowEvent::Kind::MouseMoved)
                 mousePixel = event.mousePixel;
             else if (event.kind == WindowEvent::Kind::KeyPressed)
+            {
                 actOnSharedKey(findSharedKey(static_cast<int>(event.key)));
+                rewindByKey(event.key);
+            }
+            else if (event.kind == WindowEvent::Kind::MouseButtonPressed &&
+                     event.button == sf::Mouse::Button::Left)
+                rewindByClick(mousePixel); // where the last move left the pointer
         }
         settings.paused = pausedByKey || pausedByFocus;
         // Recomputed every frame, so the mouse is right after a resize or a view change.
         input.setMousePosition(
             window.mapPixelToCoords(mousePixel, worldView(level, window.getSize())));
-        return frameClock.restart().asSeconds();
     }
 
     int stepsToRun(int due) override
@@ -227,18 +269,53 @@ public:
             steps = static_cast<int>(std::min<long long>(steps, stepsLeft));
             stepsLeft -= steps;
         }
+        if (pauseAtStep >= stepsRun && !settings.paused)
+        {
+            // --pause-at-step N: run up to step N exactly, then pause there.
+            steps = static_cast<int>(std::min<long long>(steps, pauseAtStep - stepsRun));
+            if (stepsRun + steps == pauseAtStep)
+                pausedByKey = settings.paused = true;
+        }
+        stepsRun += steps;
         return steps;
     }
 
-    void render(const Level& drawn) override
+    void render(const Level& drawn, float leftover) override
     {
         countFrame();
         window.setView(worldView(drawn, window.getSize()));
-        drawFrame(window, drawn, font, settings);
+        // Paused, the picture is the step itself (what N and --pause-at-step stop at).
+        drawFrame(window, drawn, font, settings, settings.paused ? 1.f : leftover);
         window.display();
     }
 
 private:
+    // Paused: Left and Right step back and forward through the kept steps (Rewind.h).
+    void rewindByKey(sf::Keyboard::Key key)
+    {
+        if (!canRewind(settings))
+            return;
+        RewindLevel& rewind = *settings.rewind.rewind;
+        if (key == sf::Keyboard::Key::Left)
+            rewind.show(rewind.shownStep() - 1);
+        else if (key == sf::Keyboard::Key::Right)
+            rewind.show(rewind.shownStep() + 1);
+    }
+
+    // Paused: a click on the strip shows the step under it.
+    void rewindByClick(sf::Vector2i pixel)
+    {
+        if (!canRewind(settings))
+            return;
+        const sf::Vector2f at = window.mapPixelToCoords(pixel, worldView(level, window.getSize()));
+        const Box area = stripArea(level.getWorldSize());
+        if (at.y < area.top || at.y > area.top + area.height)
+            return;
+        RewindLevel& rewind = *settings.rewind.rewind;
+        rewind.show(stripStepAt(
+            area, {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, at.x));
+    }
+
     void actOnSharedKey(const SharedKey* shared)
     {
         if (shared == nullptr)
@@ -301,13 +378,15 @@ private:
     int framesCounted = 0;
     long long framesDrawn = 0;
     long long stepsLeft;
+    long long pauseAtStep;
+    long long stepsRun = 0;
 };
 
 } // namespace
 
-int runWindow(Level& level, const Options& options, const ProgramInfo& info)
+int runWindow(Level& level, const Options& options, const ProgramInfo& info, RewindTools tools)
 {
-    WindowHost host(level, options, info);
+    WindowHost host(level, options, info, tools);
     runLoop(level, host);
     host.reportFrameRate(options, info);
     return 0;
@@ -350,7 +429,7 @@ int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info
     FrameSettings settings;
     settings.showDebug = options.debugBoxes;
     canvas.setView(sf::View(sf::FloatRect({0.f, 0.f}, world)));
-    drawFrame(canvas, level, font, settings);
+    drawFrame(canvas, level, font, settings, 1.f);
     canvas.display();
     const SaveResult saved = saveImage(canvas.getTexture().copyToImage(), options.screenshotPath);
     if (!saved)

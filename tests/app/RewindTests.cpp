@@ -1,0 +1,176 @@
+// Rewind (Rewind.h): any of the last kept steps can be shown again exactly, from snapshots and
+// the written-down input; rewinding never changes the run that follows; memory stays bounded.
+#include "hitbox/app/App.h"
+#include "hitbox/app/Input.h"
+#include "hitbox/app/Rewind.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+// Balls on a line that bounce off each other and the ends, pushed by the arrow keys: a state
+// where one wrong step anywhere shows in every later one.
+class PushLevel : public hitbox::Level
+{
+public:
+    struct State : hitbox::LevelState
+    {
+        std::vector<float> x, v;
+        std::size_t bytes() const override { return sizeof(State) + 8 * x.size(); }
+    };
+
+    PushLevel() : state(std::make_unique<State>())
+    {
+        for (int i = 0; i < 6; ++i)
+        {
+            state->x.push_back(50.f + 90.f * static_cast<float>(i));
+            state->v.push_back(30.f * static_cast<float>(i % 3) - 20.f);
+        }
+    }
+    void handleInput(const Input& input, float dt) override
+    {
+        if (input.isKeyDown(sf::Keyboard::Key::Right))
+            state->v[0] += 400.f * dt;
+        if (input.isPressed(sf::Keyboard::Key::Left))
+            state->v[5] -= 50.f;
+    }
+    void update(float dt) override
+    {
+        for (std::size_t i = 0; i < state->x.size(); ++i)
+        {
+            state->x[i] += state->v[i] * dt;
+            if (state->x[i] < 0.f || state->x[i] > 600.f)
+                state->v[i] = -state->v[i] * 0.9f;
+        }
+        for (std::size_t i = 0; i + 1 < state->x.size(); ++i)
+            if (state->x[i + 1] - state->x[i] < 10.f)
+                std::swap(state->v[i], state->v[i + 1]);
+    }
+    void render(sf::RenderTarget&) const override {}
+    std::unique_ptr<hitbox::LevelState> saveState() const override
+    {
+        return std::make_unique<State>(*state);
+    }
+    void restoreState(const hitbox::LevelState& saved) override
+    {
+        *state = static_cast<const State&>(saved);
+    }
+    std::string bits() const
+    {
+        std::string text(reinterpret_cast<const char*>(state->x.data()), 4 * state->x.size());
+        return text +
+               std::string(reinterpret_cast<const char*>(state->v.data()), 4 * state->v.size());
+    }
+
+    std::unique_ptr<State> state;
+};
+
+// The keys of step `i`: changes every few steps, from a seed.
+void scriptKeys(Input& input, std::mt19937& random)
+{
+    std::uniform_int_distribution<int> roll(0, 9);
+    const int r = roll(random);
+    if (r == 0)
+        input.setKeyDown(sf::Keyboard::Key::Right);
+    if (r == 1)
+        input.setKeyUp(sf::Keyboard::Key::Right);
+    if (r == 2)
+        input.setKeyDown(sf::Keyboard::Key::Left);
+    if (r == 3)
+        input.setKeyUp(sf::Keyboard::Key::Left);
+}
+
+void liveStep(hitbox::Level& level, Input& input)
+{
+    level.handleInput(input, hitbox::stepSeconds);
+    level.update(hitbox::stepSeconds);
+    input.update();
+}
+
+} // namespace
+
+TEST(Rewind, EveryKeptStepIsShownExactlyAndTheRunGoesOnUnchanged)
+{
+    const long long kept = 200;
+    const long long every = 25;
+    PushLevel reference;
+    PushLevel rewound;
+    hitbox::RewindLevel rewind(rewound, kept, every);
+    ASSERT_TRUE(rewind.canRewind());
+    std::vector<std::string> history{reference.bits()};
+    Input referenceInput;
+    Input input;
+    std::mt19937 referenceRandom(5);
+    std::mt19937 random(5);
+    for (int i = 0; i < 700; ++i)
+    {
+        scriptKeys(referenceInput, referenceRandom);
+        liveStep(reference, referenceInput);
+        history.push_back(reference.bits());
+        scriptKeys(input, random);
+        liveStep(rewind, input);
+        if (i == 300 || i == 650)
+        {
+            // Paused: back through every kept step, then forward again, then jumps.
+            EXPECT_EQ(rewind.oldestStep(), rewind.newestStep() - kept);
+            for (long long at = rewind.newestStep(); at >= rewind.oldestStep(); --at)
+            {
+                ASSERT_EQ(rewind.show(at), at);
+                ASSERT_EQ(rewound.bits(), history[static_cast<std::size_t>(at)]) << "step " << at;
+            }
+            for (long long at :
+                 {rewind.oldestStep() + 7, rewind.newestStep() - 1, rewind.oldestStep() + 99})
+            {
+                rewind.show(at);
+                ASSERT_EQ(rewound.bits(), history[static_cast<std::size_t>(at)]) << "step " << at;
+            }
+            EXPECT_EQ(rewind.show(0), rewind.oldestStep()) << "older steps are not kept";
+        }
+    }
+    // Rewinding left the run as it was: the live state is the reference's, bit for bit.
+    EXPECT_EQ(rewound.bits(), reference.bits());
+    EXPECT_NE(history[100], history[700]) << "the scene should have moved";
+}
+
+TEST(Rewind, MemoryStaysBoundedHoweverLongTheRun)
+{
+    PushLevel level;
+    hitbox::RewindLevel rewind(level, 120, 30);
+    Input input;
+    std::size_t most = 0;
+    for (int i = 0; i < 5000; ++i)
+    {
+        input.setKeyDown(sf::Keyboard::Key::Right);
+        liveStep(rewind, input);
+        if (i > 1000)
+            most = std::max(most, rewind.bytesUsed());
+    }
+    const std::size_t snapshotBytes = level.saveState()->bytes() + sizeof(long long);
+    // At most 120 / 30 + 2 snapshots and 120 + 30 inputs, whatever the run's length.
+    EXPECT_LE(most, 6 * snapshotBytes + 150 * (sizeof(hitbox::InputSnapshot) + 3 * sizeof(int)));
+    EXPECT_GE(most, 4 * snapshotBytes);
+}
+
+TEST(Rewind, ALevelThatCannotBeSavedIsNeverRewound)
+{
+    class Plain : public hitbox::Level
+    {
+    public:
+        void update(float) override { ++steps; }
+        void render(sf::RenderTarget&) const override {}
+        int steps = 0;
+    } plain;
+    hitbox::RewindLevel rewind(plain);
+    hitbox::simulate(rewind, 10);
+    EXPECT_FALSE(rewind.canRewind());
+    EXPECT_EQ(rewind.show(3), 10);
+    EXPECT_EQ(plain.steps, 10);
+    EXPECT_EQ(rewind.bytesUsed(), 0u);
+}
