@@ -1,6 +1,6 @@
 #include "Ball.h"
 
-#include "hitbox/course/Vector.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/objects/Collision.h"
 
 #include <algorithm>
@@ -74,7 +74,8 @@ void bounceApart(Ball& first, Ball& second)
     // 2. Bounce: only the velocity along the normal changes. For equal masses an elastic
     //    collision swaps those parts, which is the same as each ball losing the closing
     //    speed along the normal and the other gaining it.
-    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
+    const float closing =
+        hitbox::dot(hitbox::toVec2(first.getVelocity() - second.getVelocity()), contact.normal);
     if (closing >= 0.f)
         return; // already moving apart: leave them, or they would be pulled back together
     first.setVelocity(first.getVelocity() - normal * closing);

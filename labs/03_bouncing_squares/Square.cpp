@@ -1,6 +1,6 @@
 #include "Square.h"
 
-#include "hitbox/course/Vector.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/objects/Collision.h"
 // Your own class from lab 0: README.md, "Using your own Collision class from lab 0".
 #include "MyCollision.h"
@@ -99,7 +99,8 @@ void bounceApart(Square& first, Square& second)
     second.move(-normal * (contact.depth / 2.f));
     // Equal crates swap their velocities along the normal; along the other axis
     // nothing changes. Squares already moving apart are left alone.
-    const float closing = Vector::dot(first.getVelocity() - second.getVelocity(), normal);
+    const float closing =
+        hitbox::dot(hitbox::toVec2(first.getVelocity() - second.getVelocity()), contact.normal);
     if (closing < 0.f)
     {
         first.setVelocity(first.getVelocity() - normal * closing);

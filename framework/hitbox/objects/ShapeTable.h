@@ -34,8 +34,8 @@ constexpr std::size_t maxShapeKinds = 8;
 // One row of the table: what a kind is, as plain functions of the object.
 struct ShapeKindRow
 {
-    const char* name = nullptr;                          // nullptr: the kind is not in the table
-    Box (*bounds)(const GameObject& object) = nullptr;   // contains the shape (broadphase)
+    const char* name = nullptr;                             // nullptr: the kind is not in the table
+    Box (*bounds)(const GameObject& object) = nullptr;      // contains the shape (broadphase)
     Polygon (*outline)(const GameObject& object) = nullptr; // its edge, in world pixels
 };
 
