@@ -51,38 +51,33 @@ Polygon circleOutline(const GameObject& object)
     return outline;
 }
 
-// Each test: the bool test decides (the edge rule lives there); the contact describes the hit.
+// A hit found by a bool test: the bool test decides (the edge rule lives there), the contact
+// only describes the hit, so it is computed only then.
+Contact hitDescribedBy(Contact contact)
+{
+    contact.hit = true;
+    return contact;
+}
+
 Contact boxVsBoxTest(const GameObject& first, const GameObject& second)
 {
     const Box a = toBox(first.getCollisionBox());
     const Box b = toBox(second.getCollisionBox());
-    if (!boxVsBox(a, b))
-        return {};
-    Contact contact = boxVsBoxContact(a, b);
-    contact.hit = true;
-    return contact;
+    return boxVsBox(a, b) ? hitDescribedBy(boxVsBoxContact(a, b)) : Contact{};
 }
 
 Contact circleVsCircleTest(const GameObject& first, const GameObject& second)
 {
     const Circle a = first.getBoundingCircle();
     const Circle b = second.getBoundingCircle();
-    if (!circleVsCircle(a, b))
-        return {};
-    Contact contact = circleVsCircleContact(a, b);
-    contact.hit = true;
-    return contact;
+    return circleVsCircle(a, b) ? hitDescribedBy(circleVsCircleContact(a, b)) : Contact{};
 }
 
 Contact circleVsBoxTest(const GameObject& first, const GameObject& second)
 {
     const Circle a = first.getBoundingCircle();
     const Box b = toBox(second.getCollisionBox());
-    if (!circleVsBox(a, b))
-        return {};
-    Contact contact = circleVsBoxContact(a, b);
-    contact.hit = true;
-    return contact;
+    return circleVsBox(a, b) ? hitDescribedBy(circleVsBoxContact(a, b)) : Contact{};
 }
 
 } // namespace
