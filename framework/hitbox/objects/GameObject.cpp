@@ -132,10 +132,9 @@ hitbox::Circle GameObject::getBoundingCircle() const
     // The circle inscribed in the (scaled) collision box: the fix for the old framework,
     // which took the radius from the shape's width and the centre from its top-left corner.
     const hitbox::Box box = hitbox::normalised(hitbox::toBox(getLocalCollisionBox()));
-    const hitbox::Circle scaled =
-        hitbox::inscribedCircle({0.f, 0.f, box.width * scale.x, box.height * scale.y});
+    const float radius = std::fmin(box.width * scale.x, box.height * scale.y) / 2.f;
     const sf::Vector2f center = hitbox::toSfml(hitbox::centerOf(box)) + getOrigin();
-    return {hitbox::toVec2(getTransform().transformPoint(center)), scaled.radius};
+    return {hitbox::toVec2(getTransform().transformPoint(center)), radius};
 }
 // [/slide]
 
