@@ -268,7 +268,7 @@ function(hitbox_add_course_lab lab_folder)
         target_link_libraries(${library} PUBLIC hitbox_sfml hitbox_geometry)
     else()
         add_library(${library} STATIC ${compat_sources})
-        target_link_libraries(${library} PUBLIC hitbox)
+        target_link_libraries(${library} PUBLIC hitbox_course_2019)
         # Before main(): with no sound device, OpenAL Soft's silent driver and one line
         # instead of an error for every sound (SFML 2 only: SFML 3 says it once itself).
         # An object library: its objects are always linked, so its initializer runs.

@@ -1,5 +1,5 @@
 // BaseLevel: the old level base. Without a window its drawing calls do nothing.
-#include "hitbox/course/BaseLevel.h"
+#include "Framework/BaseLevel.h"
 
 #include <gtest/gtest.h>
 

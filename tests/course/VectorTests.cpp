@@ -1,8 +1,8 @@
 // Vector / VectorHelper: the course's static vector helpers (length, unit vector, dot).
 #include "support/SfmlPrinters.h"
 
-#include "hitbox/course/Vector.h"
-#include "hitbox/course/VectorHelper.h"
+#include "Framework/Vector.h"
+#include "Framework/VectorHelper.h"
 
 #include <gtest/gtest.h>
 

@@ -471,3 +471,18 @@ TEST(OverlapProperties, MovingByTheContactSeparatesAndNoLessWould)
     }
     EXPECT_GT(checked, 1000); // the random scenes really do overlap often enough
 }
+
+// The one inscribed circle (every GameObject's default bounding circle, the 2025 course's too):
+// centred on the box, radius half the shorter side, a negative size read as its length.
+TEST(InscribedCircle, CentredWithHalfTheShorterSide)
+{
+    const hitbox::Circle circle = hitbox::inscribedCircle({10.f, 20.f, 40.f, 30.f});
+    EXPECT_FLOAT_EQ(circle.center.x, 30.f);
+    EXPECT_FLOAT_EQ(circle.center.y, 35.f);
+    EXPECT_FLOAT_EQ(circle.radius, 15.f);
+    const hitbox::Circle flipped = hitbox::inscribedCircle({50.f, 50.f, -40.f, -30.f});
+    EXPECT_FLOAT_EQ(flipped.center.x, 30.f); // the box spans 10..50 by 20..50
+    EXPECT_FLOAT_EQ(flipped.center.y, 35.f);
+    EXPECT_FLOAT_EQ(flipped.radius, 15.f);
+    EXPECT_FLOAT_EQ(hitbox::inscribedCircle({0.f, 0.f, 0.f, 8.f}).radius, 0.f); // a point
+}

@@ -5,14 +5,7 @@
 // code sees (and its own Framework/GameState.cpp, if it has one), not this file.
 #pragma once
 
-// The screens a lab can be on. Add your own (e.g. GAME_OVER) as the course's header says.
-enum class State
-{
-    MENU,
-    LEVEL,
-    PAUSE,
-    CREDITS
-};
+#include "../CourseState.h" // enum class State: MENU, LEVEL, PAUSE, CREDITS
 
 class GameState
 {

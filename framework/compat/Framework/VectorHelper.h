@@ -1,8 +1,13 @@
-// Framework/VectorHelper.h - the course's old include path for VectorHelper
-// (hitbox/course/VectorHelper.h).
+// Framework/VectorHelper.h - the later weeks' name for the Vector helpers (normalise, magnitude,
+// dot).
+//
+// The course renamed Vector to VectorHelper part way through; old lab code uses either
+// name, so this is the same class under the second name.
 #pragma once
 
-#include "hitbox/course/VectorHelper.h"
+#include "Framework/Vector.h"
 
 #include <SFML/Graphics.hpp>
 #include <cmath>
+
+using VectorHelper = Vector;

@@ -5,6 +5,8 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
 namespace hitbox
 {
@@ -166,6 +168,58 @@ void DebugRenderer::circle(const Circle& shape, DebugState state)
     }
 }
 
+void DebugRenderer::polygon(const Polygon& shape, sf::Color color)
+{
+    const std::size_t count = shape.points.size();
+    for (std::size_t i = 0; count >= 2 && i < count; ++i)
+        line(shape.points[i], shape.points[(i + 1) % count], color);
+}
+
+void DebugRenderer::polygon(const Polygon& shape, DebugState state)
+{
+    const sf::Color color = colorOf(state);
+    const std::size_t count = shape.points.size();
+    for (std::size_t i = 0; count >= 2 && i < count; ++i)
+    {
+        if (state == DebugState::Touching)
+            dashed(shape.points[i], shape.points[(i + 1) % count], color);
+        else
+            line(shape.points[i], shape.points[(i + 1) % count], color);
+    }
+    if (state != DebugState::Overlapping || count < 3)
+        return;
+    // Hatching as for a box: the lines x + y = c, each clipped to the (convex) polygon by
+    // the lowest and highest x where it crosses an edge.
+    float first = shape.points[0].x + shape.points[0].y;
+    float last = first;
+    for (const Vec2 point : shape.points)
+    {
+        first = std::fmin(first, point.x + point.y);
+        last = std::fmax(last, point.x + point.y);
+    }
+    const int stripes = static_cast<int>(std::fmin((last - first) / hatchSpacing, 2000.f));
+    for (int k = 1; k <= stripes; ++k)
+    {
+        const float c = first + hatchSpacing * static_cast<float>(k);
+        float xLow = std::numeric_limits<float>::infinity();
+        float xHigh = -xLow;
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const Vec2 a = shape.points[i];
+            const Vec2 b = shape.points[(i + 1) % count];
+            const float da = a.x + a.y - c;
+            const float db = b.x + b.y - c;
+            if ((da < 0.f) == (db < 0.f) || da == db)
+                continue; // this edge does not cross the line
+            const float x = a.x + (b.x - a.x) * (da / (da - db));
+            xLow = std::fmin(xLow, x);
+            xHigh = std::fmax(xHigh, x);
+        }
+        if (xLow < xHigh)
+            line({xLow, c - xLow}, {xHigh, c - xHigh}, color);
+    }
+}
+
 void DebugRenderer::cross(Vec2 point, float size, sf::Color color)
 {
     line(point - Vec2(size, size), point + Vec2(size, size), color);
@@ -185,6 +239,14 @@ void DebugRenderer::objectCircle(const GameObject& object, DebugState state)
     const Circle shape = object.getBoundingCircle();
     circle(shape, state);
     arrow(shape.center, shape.center + toVec2(object.getVelocity()) * arrowSeconds, velocityColor);
+}
+
+void DebugRenderer::objectShape(const GameObject& object, ShapeKind kind, DebugState state,
+                                const ShapeTable& shapes)
+{
+    polygon(shapes.outline(object, kind), state);
+    const Vec2 middle = centerOf(shapes.bounds(object, kind));
+    arrow(middle, middle + toVec2(object.getVelocity()) * arrowSeconds, velocityColor);
 }
 
 void DebugRenderer::objectBox(const GameObject& object, bool colliding)

@@ -5,6 +5,8 @@
 // no window, so tests can check what would be drawn.
 #pragma once
 
+#include "hitbox/geometry/Polygon.h"
+#include "hitbox/objects/ShapeTable.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/Color.hpp>
@@ -61,6 +63,10 @@ public:
     // A box or circle drawn in its state's colour and line style (solid, dashed, hatched).
     void box(const Box& box, DebugState state);
     void circle(const Circle& circle, DebugState state);
+    // The closed outline of `polygon` (its points in order; fewer than two draw nothing), and
+    // the same in a state's style (hatched when overlapping: a convex polygon is assumed).
+    void polygon(const Polygon& polygon, sf::Color color);
+    void polygon(const Polygon& polygon, DebugState state);
     // An x of `size` pixels across, centred on `point`.
     void cross(Vec2 point, float size, sf::Color color);
 
@@ -71,6 +77,10 @@ public:
     void objectCircle(const GameObject& object, DebugState state);
     void objectBox(const GameObject& object, bool colliding);
     void objectCircle(const GameObject& object, bool colliding);
+    // An object as any kind of `shapes` (ShapeTable.h; World::getShapes() for a World's
+    // objects): the table's outline in the state's style, and the velocity arrow.
+    void objectShape(const GameObject& object, ShapeKind kind, DebugState state,
+                     const ShapeTable& shapes = ShapeTable::standard());
     // A contact point and its normal, 24 pixels long.
     void contact(const Contact& contact);
 

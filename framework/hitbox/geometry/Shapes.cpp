@@ -10,6 +10,11 @@ Vec2 centerOf(const Box& box)
     return {box.left + box.width / 2.f, box.top + box.height / 2.f};
 }
 
+Circle inscribedCircle(const Box& box)
+{
+    return {centerOf(box), std::fmin(std::fabs(box.width), std::fabs(box.height)) / 2.f};
+}
+
 float rightOf(const Box& box)
 {
     return box.left + box.width;

@@ -107,6 +107,10 @@ inline Box normalised(const Box& box)
 }
 // The middle of the box (the same point for a negative size).
 Vec2 centerOf(const Box& box);
+// The circle inscribed in the box: centred on its middle, radius half its shorter side (a
+// negative size counts as its length, as normalised() reads it). The default bounding circle
+// of every GameObject, the course's included.
+Circle inscribedCircle(const Box& box);
 // left + width: the right edge (for a negative width, the left one; normalised() first).
 float rightOf(const Box& box);
 // top + height: the bottom edge (for a negative height, the top one; normalised() first).

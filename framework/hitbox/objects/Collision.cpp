@@ -52,23 +52,24 @@ bool Collision::checkCircleBox(GameObject* circleObject, GameObject* boxObject)
 
 hitbox::Contact Collision::getBoundingCircleContact(GameObject* first, GameObject* second)
 {
-    if (!canCollide(first, second))
-        return {};
-    return hitbox::circleVsCircleContact(first->getBoundingCircle(), second->getBoundingCircle());
+    return getContact(first, hitbox::ShapeKind::Circle, second, hitbox::ShapeKind::Circle);
 }
 
 hitbox::Contact Collision::getBoundingBoxContact(GameObject* first, GameObject* second)
 {
-    if (!canCollide(first, second))
-        return {};
-    return hitbox::boxVsBoxContact(hitbox::toBox(first->getCollisionBox()),
-                                   hitbox::toBox(second->getCollisionBox()));
+    return getContact(first, hitbox::ShapeKind::Box, second, hitbox::ShapeKind::Box);
 }
 
 hitbox::Contact Collision::getCircleBoxContact(GameObject* circleObject, GameObject* boxObject)
 {
-    if (!canCollide(circleObject, boxObject))
+    return getContact(circleObject, hitbox::ShapeKind::Circle, boxObject, hitbox::ShapeKind::Box);
+}
+
+hitbox::Contact Collision::getContact(GameObject* first, hitbox::ShapeKind firstKind,
+                                      GameObject* second, hitbox::ShapeKind secondKind,
+                                      const hitbox::ShapeTable& shapes)
+{
+    if (!canCollide(first, second))
         return {};
-    return hitbox::circleVsBoxContact(circleObject->getBoundingCircle(),
-                                      hitbox::toBox(boxObject->getCollisionBox()));
+    return shapes.test(*first, firstKind, *second, secondKind);
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/objects/ShapeTable.h"
 
 #include <SFML/System/Vector2.hpp>
 
@@ -39,4 +40,10 @@ public:
     static hitbox::Contact getBoundingCircleContact(GameObject* first, GameObject* second);
     static hitbox::Contact getBoundingBoxContact(GameObject* first, GameObject* second);
     static hitbox::Contact getCircleBoxContact(GameObject* circleObject, GameObject* boxObject);
+    // Any two shape kinds of `shapes` (ShapeTable.h; Hitbox's Box and Circle by default): the
+    // three tests above are this one with the kinds filled in.
+    static hitbox::Contact
+    getContact(GameObject* first, hitbox::ShapeKind firstKind, GameObject* second,
+               hitbox::ShapeKind secondKind,
+               const hitbox::ShapeTable& shapes = hitbox::ShapeTable::standard());
 };

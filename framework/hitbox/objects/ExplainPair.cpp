@@ -39,6 +39,15 @@ Explanation explain(const GameObject& a, const GameObject& b, World::Shape shape
     }
     if (!why.verdict.empty())
         return why;
+    // The explanations are written for Hitbox's own kinds; a kind added to a ShapeTable
+    // (docs/adding-a-shape.md) gets this line until it has one of its own.
+    for (const World::Shape kind : {shapeA, shapeB})
+        if (kind != World::Shape::Box && kind != World::Shape::Circle)
+            why.verdict = "no explanation for shape kind " +
+                          std::to_string(static_cast<int>(kind)) +
+                          " (only box and circle are explained)";
+    if (!why.verdict.empty())
+        return why;
     const Box boxA = toBox(a.getCollisionBox());
     const Box boxB = toBox(b.getCollisionBox());
     if (shapeA == World::Shape::Box && shapeB == World::Shape::Box)

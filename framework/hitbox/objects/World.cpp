@@ -1,6 +1,5 @@
 #include "hitbox/objects/World.h"
 
-#include "hitbox/objects/Collision.h"
 #include "hitbox/objects/GameObject.h"
 
 #include <algorithm>
@@ -13,16 +12,6 @@ namespace hitbox
 {
 namespace
 {
-
-// The box the broadphase sees: it must contain the shape the exact test uses.
-Box boundsOf(GameObject& object, World::Shape shape)
-{
-    if (shape == World::Shape::Box)
-        return toBox(object.getCollisionBox());
-    const Circle circle = object.getBoundingCircle();
-    return {circle.center.x - circle.radius, circle.center.y - circle.radius, 2.f * circle.radius,
-            2.f * circle.radius};
-}
 
 // Sets a flag for as long as it lives, so an exception from a response cannot leave the
 // World thinking it is still inside a pass.
@@ -50,7 +39,13 @@ std::size_t World::PairKeyHash::operator()(const PairKey& key) const
     return a ^ (b + 0x9e3779b97f4a7c15ull + (a << 6) + (a >> 2));
 }
 
-World::World(BroadphaseMethod chosen) : method(chosen), broadphase(makeBroadphase(chosen)) {}
+World::World(BroadphaseMethod chosen, ShapeTable table)
+    : method(chosen), shapes(table), broadphase(makeBroadphase(chosen))
+{
+    if (!shapes.isComplete())
+        throw std::invalid_argument("hitbox::World: its ShapeTable has a pair of shape kinds "
+                                    "with no test between them (ShapeTable::setTest)");
+}
 
 World::~World()
 {
@@ -79,6 +74,7 @@ World& World::operator=(World&& other) noexcept
 void World::takeFrom(World& other) noexcept
 {
     method = other.method;
+    shapes = other.shapes;
     broadphase = std::move(other.broadphase);
     other.broadphase = makeBroadphase(other.method);
     entries = std::move(other.entries);
@@ -109,6 +105,10 @@ void World::takeFrom(World& other) noexcept
 
 void World::add(GameObject& object, std::uint32_t layer, std::uint32_t mask, Shape shape, Body body)
 {
+    if (!shapes.has(shape))
+        throw std::invalid_argument("hitbox::World::add: " + object.describe() +
+                                    " has shape kind " + std::to_string(static_cast<int>(shape)) +
+                                    ", which is not in the world's ShapeTable");
     if (WorldLink* link = object.worlds.find(this))
     {
         Entry& entry = entries[link->index];
@@ -251,37 +251,8 @@ bool World::takesPart(std::uint32_t index) const
 
 Contact World::exactContact(const Entry& first, const Entry& second) const
 {
-    // The bool test decides (the edge rule lives there); the contact only describes the hit.
-    GameObject* a = first.object;
-    GameObject* b = second.object;
-    Contact contact;
-    if (first.shape == Shape::Box && second.shape == Shape::Box)
-    {
-        if (!Collision::checkBoundingBox(a, b))
-            return {};
-        contact = Collision::getBoundingBoxContact(a, b);
-    }
-    else if (first.shape == Shape::Circle && second.shape == Shape::Circle)
-    {
-        if (!Collision::checkBoundingCircle(a, b))
-            return {};
-        contact = Collision::getBoundingCircleContact(a, b);
-    }
-    else if (first.shape == Shape::Circle)
-    {
-        if (!Collision::checkCircleBox(a, b))
-            return {};
-        contact = Collision::getCircleBoxContact(a, b);
-    }
-    else
-    {
-        if (!Collision::checkCircleBox(b, a))
-            return {};
-        contact = Collision::getCircleBoxContact(b, a);
-        contact.normal = -contact.normal; // out of the circle (second) towards the box
-    }
-    contact.hit = true;
-    return contact;
+    // The table's test (ShapeTable.h); the bool test inside it decides the edge rule.
+    return shapes.test(*first.object, first.shape, *second.object, second.shape);
 }
 
 std::size_t World::checkCollisions()
@@ -305,7 +276,7 @@ std::size_t World::checkCollisions()
         {
             if (!takesPart(e))
                 continue;
-            items.push_back({boundsOf(*entries[e].object, entries[e].shape), entries[e].layer,
+            items.push_back({shapes.bounds(*entries[e].object, entries[e].shape), entries[e].layer,
                              entries[e].mask});
             itemEntry.push_back(e);
         }

@@ -32,6 +32,7 @@
 
 #include "hitbox/broadphase/Broadphase.h"
 #include "hitbox/objects/ContactEvent.h"
+#include "hitbox/objects/ShapeTable.h"
 
 #include <cstdint>
 #include <functional>
@@ -48,13 +49,9 @@ namespace hitbox
 class World
 {
 public:
-    // Which exact test an object takes part in: its collision box or its bounding circle.
-    // A circle meets a box with Collision::checkCircleBox.
-    enum class Shape
-    {
-        Box,
-        Circle
-    };
+    // Which exact test an object takes part in: its collision box, its bounding circle, or
+    // another kind of the world's ShapeTable (ShapeTable.h: the test for every pair of kinds).
+    using Shape = ShapeKind;
     // How an object takes part in resolving:
     //   Moving  - solid: pushed apart from other solid objects when setPushApart(true);
     //   Fixed   - solid, never moved (a wall): the Moving object is pushed the whole way;
@@ -69,8 +66,11 @@ public:
     // Return false to skip a pair (checked after layers and masks, before the exact test).
     using PairRule = std::function<bool(const GameObject&, const GameObject&)>;
 
-    // An empty world that finds its candidate pairs with `method`.
-    explicit World(BroadphaseMethod method = BroadphaseMethod::Grid);
+    // An empty world that finds its candidate pairs with `method` and tests them with
+    // `shapes` (Hitbox's Box and Circle by default). A table with a pair of kinds and no test
+    // between them is refused with std::invalid_argument.
+    explicit World(BroadphaseMethod method = BroadphaseMethod::Grid,
+                   ShapeTable shapes = ShapeTable::standard());
     // Every object still in the world is taken out (no events: the world is gone).
     ~World();
     World(const World&) = delete;
@@ -81,7 +81,8 @@ public:
 
     // `layer`: the bits this object is on; `mask`: the layers it collides with. Two objects
     // are tested only if each one's layer is in the other's mask. Adding twice updates them
-    // (from inside a pass: after it). O(1).
+    // (from inside a pass: after it). O(1). A shape kind not in the world's ShapeTable is
+    // refused with std::invalid_argument.
     void add(GameObject& object, std::uint32_t layer = 1, std::uint32_t mask = 0xFFFFFFFF,
              Shape shape = Shape::Box, Body body = Body::Moving);
     // Takes the object out (nothing happens if it is not in); its pairs get their Exit at
@@ -125,6 +126,8 @@ public:
     [[nodiscard]] PairEvent getLastChange() const;
     // Which exact test `object` takes part in (Box when it is not in this world).
     [[nodiscard]] Shape getShape(const GameObject& object) const;
+    // The table of shape kinds and tests this world uses (for the debug renderer).
+    [[nodiscard]] const ShapeTable& getShapes() const { return shapes; }
     // How many checkCollisions() calls so far (the step events are stamped with).
     [[nodiscard]] std::uint64_t getStep() const { return step; }
     // What the broadphase did last time, and how many exact tests followed.
@@ -191,6 +194,7 @@ private:
     void takeFrom(World& other) noexcept; // the move: its objects now point here
 
     BroadphaseMethod method;
+    ShapeTable shapes;
     std::unique_ptr<Broadphase> broadphase;
     std::vector<Entry> entries; // in the order added; leaving entries until settle()
     std::size_t liveCount = 0;

@@ -1,44 +1,32 @@
 #include "Framework/Collision.h"
 
 #include "hitbox/geometry/Overlap.h"
-
-#include <algorithm>
+#include "hitbox/sfml/Conversions.h"
 
 namespace
 {
 
-// The one place where the course's SFML 3 types meet Hitbox's geometry types.
-hitbox::Box toGeometryBox(const sf::FloatRect& box)
+// Hitbox's box (one negative-size rule: normalised) and its inscribed circle: the same
+// shapes the older labs' GameObject gives.
+hitbox::Box boxOf(const GameObject& object)
 {
-    return {box.position.x, box.position.y, box.size.x, box.size.y};
-}
-
-hitbox::Circle inscribedCircle(const GameObject& object)
-{
-    const sf::FloatRect box = object.getCollisionBox();
-    hitbox::Circle circle;
-    circle.center = {box.position.x + box.size.x / 2.f, box.position.y + box.size.y / 2.f};
-    circle.radius = std::min(box.size.x, box.size.y) / 2.f;
-    return circle;
+    return hitbox::normalised(hitbox::toBox(object.getCollisionBox()));
 }
 
 } // namespace
 
 bool Collision::checkBoundingBox(const GameObject& first, const GameObject& second)
 {
-    return &first != &second && hitbox::boxVsBox(toGeometryBox(first.getCollisionBox()),
-                                                 toGeometryBox(second.getCollisionBox()));
+    return &first != &second && hitbox::boxVsBox(boxOf(first), boxOf(second));
 }
 
 bool Collision::checkBoundingBox(const GameObject& object, const sf::Vector2i& point)
 {
-    return hitbox::pointInBox(
-        hitbox::Vec2(static_cast<float>(point.x), static_cast<float>(point.y)),
-        toGeometryBox(object.getCollisionBox()));
+    return hitbox::pointInBox(hitbox::toVec2(point), boxOf(object));
 }
 
 bool Collision::checkBoundingCircle(const GameObject& first, const GameObject& second)
 {
-    return &first != &second &&
-           hitbox::circleVsCircle(inscribedCircle(first), inscribedCircle(second));
+    return &first != &second && hitbox::circleVsCircle(hitbox::inscribedCircle(boxOf(first)),
+                                                       hitbox::inscribedCircle(boxOf(second)));
 }

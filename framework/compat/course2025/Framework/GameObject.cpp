@@ -1,5 +1,7 @@
 #include "Framework/GameObject.h"
 
+#include "hitbox/sfml/Conversions.h"
+
 void GameObject::handleInput(float) {}
 
 void GameObject::update(float) {}
@@ -45,11 +47,16 @@ sf::FloatRect GameObject::getCollisionBox() const
 {
     // The local box is measured from the origin point; the shape's own coordinates are
     // measured from its top-left corner, where the origin point sits at getOrigin().
+    // A negative size spans backwards, as Hitbox's boxes do (hitbox::normalised).
     const bool boxSet = m_collisionBox.size.x != 0.f || m_collisionBox.size.y != 0.f;
-    const sf::FloatRect local =
-        boxSet ? sf::FloatRect(getOrigin() + m_collisionBox.position, m_collisionBox.size)
-               : getLocalBounds();
-    return getTransform().transformRect(local);
+    hitbox::Box local = hitbox::toBox(getLocalBounds());
+    if (boxSet)
+    {
+        local = hitbox::normalised(hitbox::toBox(m_collisionBox));
+        local.left += getOrigin().x;
+        local.top += getOrigin().y;
+    }
+    return getTransform().transformRect(hitbox::toSfml(local));
 }
 
 void GameObject::setCollisionBox(float x, float y, float width, float height)

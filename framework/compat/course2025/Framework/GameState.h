@@ -5,14 +5,7 @@
 // (HitboxCourseLab.cmake puts the lab's copy first on the include path).
 #pragma once
 
-// The screens a lab can be on. Add your own (e.g. GAME_OVER) as the course's header says.
-enum class State
-{
-    MENU,
-    LEVEL,
-    PAUSE,
-    CREDITS
-};
+#include "../../CourseState.h" // enum class State: MENU, LEVEL, PAUSE, CREDITS
 
 class GameState
 {

@@ -1,4 +1,4 @@
-#include "hitbox/course/BaseLevel.h"
+#include "Framework/BaseLevel.h"
 
 const sf::Color BaseLevel::backgroundColor(100, 149, 237);
 
