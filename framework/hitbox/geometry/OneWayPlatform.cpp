@@ -20,8 +20,9 @@ OneWayStop oneWayPlatformStop(const Box& body, Vec2 move, const Box& platform)
     result.move = move;
     if (!boxWithinRange(body) || !boxWithinRange(platform) || !withinExactRange(move))
         return result; // NaN, infinity, out of range: one defined answer, no block
+    // [slide:one-way-platform]
     if (!(move.y > 0.f))
-        return result; // not falling: standing still or rising through it
+        return result; // not falling: still, or rising through it
     const Box b = normalised(body);
     const Box p = normalised(platform);
     // Double: bottom + move.y and the crossing time must not round a body that ends 1/16 px
@@ -29,17 +30,18 @@ OneWayStop oneWayPlatformStop(const Box& body, Vec2 move, const Box& platform)
     const double bottom = double(b.top) + b.height;
     const double top = p.top;
     if (bottom > top)
-        return result; // already below the top when the step began: it passes through
+        return result; // started below the top: passes through
     if (bottom + move.y <= top)
-        return result; // stops above the top, or exactly on it (touching)
+        return result; // ends above the top, or on it (touching)
     // When the bottom reaches the top (0 <= t < 1), does the body stand over the platform?
     const double t = (top - bottom) / move.y;
     const double left = b.left + move.x * t;
     const double right = left + b.width;
     if (!(left < double(p.left) + p.width && double(p.left) < right))
-        return result; // beside the platform (or only touching its end): it falls past
+        return result; // beside it (or touching its end): falls past
     result.blocked = true;
     result.move.y = float(top - bottom);
+    // [/slide]
     return result;
 }
 
