@@ -97,6 +97,7 @@ public:
     const std::vector<Enemy>& getEnemies() const { return enemies; }
     const std::vector<Actor>& getTrees() const { return trees; }
     const std::vector<hitbox::Box>& getWalls() const { return walls; }
+    const hitbox::TileGrid& getSight() const { return sight; } // the walls as canSee's tiles
     bool isSwinging() const { return swordTimeLeft > 0.f; }
     hitbox::Box swordBox() const;
     int getDefeats() const { return defeats; }

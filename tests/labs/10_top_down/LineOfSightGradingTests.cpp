@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <random>
+#include <utility>
 
 namespace
 {
@@ -58,6 +59,54 @@ TEST(Task4LineOfSight, ALineAlongTheSeamInsideAThickWallIsBlocked)
     const hitbox::TileGrid grid = gridWith({{4, 3}, {5, 3}, {4, 4}, {5, 4}});
     EXPECT_FALSE(canSee(grid, at(5.f, 0.5f), at(5.f, 9.5f))); // between columns 4 and 5
     EXPECT_FALSE(canSee(grid, at(0.5f, 4.f), at(9.5f, 4.f))); // between rows 3 and 4
+}
+
+TEST(Task4LineOfSight, ALineAlongTheSeamIsBlockedFromWhereTheWallBegins)
+{
+    // A wall one tile thick across the seam: the tiles before it on the line are open, so only
+    // the two tiles the line runs between decide.
+    EXPECT_FALSE(canSee(gridWith({{4, 4}, {5, 4}}), at(5.f, 0.5f), at(5.f, 9.5f))); // down x = 50
+    EXPECT_FALSE(canSee(gridWith({{4, 4}, {5, 4}}), at(5.f, 9.5f), at(5.f, 0.5f))); // up
+    EXPECT_FALSE(canSee(gridWith({{4, 4}, {4, 5}}), at(0.5f, 5.f), at(9.5f, 5.f))); // along y = 50
+    EXPECT_FALSE(canSee(gridWith({{4, 4}, {4, 5}}), at(9.5f, 5.f), at(0.5f, 5.f))); // leftwards
+}
+
+TEST(Task4LineOfSight, APointOnACornerIsInsideTheWallOnlyWhenAllFourTilesAreSolid)
+{
+    // The corner (5, 5) between tiles (4, 4), (5, 4), (4, 5) and (5, 5): open any one of the
+    // four and the point sees itself (it only touches the wall).
+    const std::pair<int, int> around[] = {{4, 4}, {5, 4}, {4, 5}, {5, 5}};
+    hitbox::TileGrid all = gridWith({});
+    for (int column = 3; column <= 6; ++column)
+        for (int row = 3; row <= 6; ++row)
+            all.solid[static_cast<std::size_t>(row * all.columns + column)] = 1;
+    EXPECT_FALSE(canSee(all, at(5.f, 5.f), at(5.f, 5.f)));
+    for (const auto& [column, row] : around)
+    {
+        hitbox::TileGrid grid = all; // the tiles all round solid too, but one of the four open
+        grid.solid[static_cast<std::size_t>(row * grid.columns + column)] = 0;
+        EXPECT_TRUE(canSee(grid, at(5.f, 5.f), at(5.f, 5.f)))
+            << "tile (" << column << ", " << row << ") open";
+    }
+}
+
+TEST(Task4LineOfSight, AShortLineIntoTheNextTileIsBlockedByIt)
+{
+    // Lines of a pixel or less that cross one grid line into a wall tile, in each direction.
+    const hitbox::TileGrid grid = gridWith({{5, 5}});
+    EXPECT_FALSE(canSee(grid, at(4.95f, 5.5f), at(5.05f, 5.5f))); // right, 1 px
+    EXPECT_FALSE(canSee(grid, at(6.02f, 5.5f), at(5.98f, 5.5f))); // left, 0.4 px
+    EXPECT_FALSE(canSee(grid, at(5.5f, 4.97f), at(5.5f, 5.03f))); // down, 0.6 px
+    EXPECT_FALSE(canSee(grid, at(5.5f, 6.05f), at(5.5f, 5.95f))); // up, 1 px
+    EXPECT_TRUE(canSee(grid, at(4.9f, 5.5f), at(4.99f, 5.5f)));   // stops short of it
+}
+
+TEST(Task4LineOfSight, AWallAtTheFarEndOfTheLongestLineStillBlocks)
+{
+    // Corner to corner across the whole grid the line crosses 19 tiles; only the last is solid.
+    EXPECT_FALSE(canSee(gridWith({{9, 9}}), at(0.1f, 0.2f), at(9.9f, 9.8f)));
+    EXPECT_FALSE(canSee(gridWith({{0, 0}}), at(9.9f, 9.8f), at(0.1f, 0.2f)));
+    EXPECT_TRUE(canSee(gridWith({{9, 0}}), at(0.1f, 0.2f), at(9.9f, 9.8f)));
 }
 
 TEST(Task4LineOfSight, ALineThroughTheCornerBetweenTwoDiagonalTilesSees)

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstddef>
 
 namespace
 {
@@ -206,9 +207,17 @@ TEST(Task2Radii, EveryFrameEachEnemyChoosesByItsDistanceToThePlayer)
     game.frame();
     const std::vector<Enemy>& enemies = game.level.getEnemies();
     ASSERT_EQ(enemies.size(), 3u);
-    EXPECT_EQ(enemies[0].state, EnemyState::Attack);
-    EXPECT_EQ(enemies[1].state, EnemyState::Chase);
-    EXPECT_EQ(enemies[2].state, EnemyState::Idle);
+    // The room is empty, but whether an enemy sees across it is task 4's canSee: an enemy that
+    // does not see the player stays idle whatever task 2 chose, so a wrong canSee costs task 4
+    // alone.
+    const EnemyState wanted[] = {EnemyState::Attack, EnemyState::Chase, EnemyState::Idle};
+    for (std::size_t index = 0; index < enemies.size(); ++index)
+    {
+        const bool seen =
+            canSee(game.level.getSight(), enemies[index].body.feet, game.player().feet);
+        EXPECT_EQ(enemies[index].state, seen ? wanted[index] : EnemyState::Idle)
+            << "enemy " << index;
+    }
 }
 
 TEST(Task2Radii, AChasingEnemyWalksTowardsThePlayer)
@@ -216,16 +225,24 @@ TEST(Task2Radii, AChasingEnemyWalksTowardsThePlayer)
     // Walking is task 1's moveAndSlide: the enemy must end where moveAndSlide takes it at
     // enemySpeed towards the player (straight right here), whatever moveAndSlide does, so a
     // mistake in task 1 costs task 1 alone.
+    // Seeing the player across the empty room is task 4's canSee: the expected walk takes a
+    // step only on the frames canSee sees, so a wrong canSee costs task 4 alone.
     Game game;
     game.level.addEnemy({300.f, 300.f});
     game.level.placePlayer({500.f, 300.f});
-    const Actor expected = afterWalkingRight(game.level, game.level.getEnemies().at(0).body,
-                                             TopDownLevel::enemySpeed, 0.25f);
+    Actor expected = game.level.getEnemies().at(0).body;
+    bool seen = false;
+    for (int step = 0; step < static_cast<int>(0.25f * hitbox::stepsPerSecond + 0.5f); ++step)
+    {
+        seen = canSee(game.level.getSight(), expected.feet, game.player().feet);
+        const float speed = seen ? TopDownLevel::enemySpeed : 0.f;
+        game.level.moveAndSlide(expected, {speed * hitbox::stepSeconds, 0.f});
+    }
     // 32 px at 130 px/s: still inside the notice radius and outside the attack radius, even
     // if moveAndSlide took it the wrong way.
     game.run(0.25f);
     const Enemy& enemy = game.level.getEnemies().at(0);
-    EXPECT_EQ(enemy.state, EnemyState::Chase);
+    EXPECT_EQ(enemy.state, seen ? EnemyState::Chase : EnemyState::Idle);
     EXPECT_NEAR(enemy.body.feet.x, expected.feet.x, 1e-3f)
         << "walked at enemySpeed towards the player";
     EXPECT_FLOAT_EQ(enemy.body.feet.y, expected.feet.y);
