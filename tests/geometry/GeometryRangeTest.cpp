@@ -6,6 +6,7 @@
 #include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/geometry/Vec2.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +42,7 @@ Polygon regularPolygon(hitbox::Vec2 centre, float radius, int corners)
     Polygon polygon;
     for (int k = 0; k < corners; ++k)
     {
-        const double angle = 2.0 * 3.14159265358979323846 * k / corners;
+        const double angle = 2.0 * hitbox::piDouble * k / corners;
         polygon.points.push_back(centre +
                                  hitbox::Vec2(static_cast<float>(radius * std::cos(angle)),
                                               static_cast<float>(radius * std::sin(angle))));

@@ -6,6 +6,7 @@
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/private/LongRun.h"
 #include "hitbox/app/private/Window.h"
+#include "hitbox/platform/SilentAudio.h"
 
 #include <algorithm>
 #include <cmath>
@@ -112,6 +113,12 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
                      "a window, or start it under a display (e.g. xvfb-run -a).\n";
         return 2;
     }
+    // Before the level makes its first sound: with no sound device, one line and silence
+    // instead of an OpenAL error for every sound (SFML 2; issue 25, finding 26). Headless
+    // runs are silent anyway, so they say nothing about it.
+    const auto silent = platform::silenceAudioWithoutDevice();
+    if (silent && !options.headless)
+        std::cerr << info.title << ": " << *silent << '\n';
     try
     {
         std::unique_ptr<Level> level = makeLevel(options);

@@ -10,8 +10,10 @@
 namespace hitbox
 {
 
-// π, the one definition in Hitbox: use hitbox::pi, never a copy.
-constexpr float pi = 3.14159265358979323846f;
+// π, the one definition in Hitbox: use hitbox::pi (or piDouble where a double computation
+// needs all its digits), never a copy of the digits.
+constexpr double piDouble = 3.14159265358979323846;
+constexpr float pi = static_cast<float>(piDouble);
 
 struct Vec2
 {
