@@ -143,10 +143,10 @@ void RangeLevel::renderDebug(hitbox::DebugRenderer& debug) const
             debug.line({bullet.right, middle + 8.f}, {wall.left, middle + 8.f},
                        hitbox::DebugRenderer::normalColor);
     }
-    debug.panel({"F1: purple arrow = the next step's move (" + std::to_string(std::lround(move)) +
-                     " px)",
-                 "middle lane: ticks = where its sub-steps end (at most " + subStepLimit + " apart)",
-                 "bottom lane: green line = the gap measured ahead of the bullet"});
+    debug.panel(
+        {"F1: purple arrow = the next step's move (" + std::to_string(std::lround(move)) + " px)",
+         "middle lane: ticks = where its sub-steps end (at most " + subStepLimit + " apart)",
+         "bottom lane: green line = the gap measured ahead of the bullet"});
 }
 
 std::string RangeLevel::getHelpText() const
@@ -157,10 +157,10 @@ std::string RangeLevel::getHelpText() const
 std::string RangeLevel::describeState() const
 {
     char text[240];
-    std::snprintf(text, sizeof text, "shot %d at %.0f px/s%s; through the wall: %s %d, %s %d, %s %d",
-                  shots, static_cast<double>(speed), speed >= topSpeed ? " (top speed)" : "",
-                  laneNames[0], throughCount[0], laneNames[1], throughCount[1], laneNames[2],
-                  throughCount[2]);
+    std::snprintf(text, sizeof text,
+                  "shot %d at %.0f px/s%s; through the wall: %s %d, %s %d, %s %d", shots,
+                  static_cast<double>(speed), speed >= topSpeed ? " (top speed)" : "", laneNames[0],
+                  throughCount[0], laneNames[1], throughCount[1], laneNames[2], throughCount[2]);
     return text;
 }
 
