@@ -4,6 +4,10 @@
 // these turn its result into new velocities or positions. Units: pixels, seconds, pixels per
 // second. Normals point out of what was hit towards what moves (Shapes.h) and are used as
 // given (the detection functions always give a unit normal with a hit).
+// RANGE: velocities up to 1e6 px/s per axis and contacts from the tests (so within Range.h's
+// +-exactRange) give answers exact up to float rounding (tests/geometry/GeometryRangeTest.cpp).
+// Beyond that the float products may overflow to infinity; NaN or infinite input is returned
+// unchanged (or (0, 0) for pushOutOffset).
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"

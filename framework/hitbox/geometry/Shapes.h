@@ -3,6 +3,10 @@
 // Units are pixels (world units) and seconds. Boxes (left, top, width, height) and vectors
 // (Vec2.h) are Hitbox's own plain values: nothing here knows SFML, draws or needs a window
 // (framework/hitbox/sfml/Conversions.h converts to and from Box / Vec2).
+// RANGE: the types hold any float; each test states the range it is exact in (Range.h:
+// +-exactRange, 1e6 px). The helpers here (normalised, centerOf, rightOf, bottomOf) round
+// as float sums do and are exact to the last bit inside that range; past about 3.4e38 a sum
+// overflows to infinity, which every test then answers with "no hit".
 #pragma once
 
 #include "hitbox/geometry/Vec2.h"

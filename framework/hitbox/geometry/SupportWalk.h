@@ -1,5 +1,6 @@
 // SupportWalk.h - the furthest corner of a convex polygon along a direction, found by walking.
 // Shared by the polygon tests (Polygon.cpp) and capsule against polygon (Capsule.cpp).
+// Range: its callers' (Polygon.h, Capsule.h: corners within +-exactRange, Range.h).
 #pragma once
 
 #include "hitbox/geometry/Vec2.h"

@@ -4,6 +4,9 @@
 // object can jump a thin wall ("bullet through paper"); a sweep follows the whole straight
 // move of one step and says WHEN the mover first touches the target. Units: pixels;
 // `displacement` is the whole move of the step (velocity * dt): time 0 is its start, 1 its end.
+// RANGE (Range.h): segmentVsBox's two ends within +-exactRange, else no hit. The box sweeps
+// take any finite boxes and moves (a floor 1e30 px wide is hit at the right time) and are
+// exact up to float rounding when every coordinate is within +-exactRange.
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"

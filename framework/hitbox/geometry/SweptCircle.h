@@ -3,6 +3,9 @@
 // The circle versions of Sweep.h, with its Hit, its units (`displacement` is the whole move
 // of one step: time 0 its start, 1 its end) and its edge rule (a hit is coming to share area
 // at some 0 <= time < 1). The maths runs in double, so a 10^6 px/s mover gets exact times.
+// RANGE (Range.h): every centre, radius and displacement within +-exactRange (1e6 px), as for
+// the circle tests of Overlap.h (for two moving circles: the relative move); outside it (and
+// NaN, infinity): no hit. A box target may be any finite box.
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"

@@ -3,6 +3,9 @@
 // Plain values in pixels (y down, as on screen). The geometry and broadphase layers use only
 // these types, so they compile and are tested without SFML; framework/hitbox/sfml/
 // Conversions.h turns them into SFML's types and back at the edge of the framework.
+// RANGE: any float. The operators round as float arithmetic does (and overflow to infinity
+// past about 3.4e38); length() and unitVectorOr() work in double, so they neither overflow
+// nor lose tiny values. The tests built on these state their own range (Range.h).
 #pragma once
 
 #include <cmath>
