@@ -42,7 +42,8 @@ using LevelFactory = std::function<std::unique_ptr<Level>(const Options&)>;
 
 // Runs the program; returns main()'s exit code (0 fine, 1 error, 2 bad usage / no display,
 // 130 stopped by Ctrl-C while simulating without a window). --help prints usagePage(), 0.
-int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel);
+[[nodiscard]] int run(int argc, char* argv[], const ProgramInfo& info,
+                      const LevelFactory& makeLevel);
 
 // Runs `frames` fixed steps with no input and no window. Used by --headless and tests.
 void simulate(Level& level, long long frames);
@@ -53,10 +54,10 @@ constexpr unsigned maxPictureSide = 4096;
 
 // `size` in whole pixels, shrunk (never grown, never stretched) to fit inside `limit`;
 // at least 1 x 1. A zero, negative or NaN side counts as 1 pixel.
-sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit);
+[[nodiscard]] sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit);
 
 // The part of a window, as fractions of its size (a view's viewport), that shows a world
 // of `worldSize` as large as possible without stretching: bars fill the rest (letterbox).
-sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
+[[nodiscard]] sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
 
 } // namespace hitbox

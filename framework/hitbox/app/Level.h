@@ -43,14 +43,14 @@ public:
 
     // The game area in world pixels (defaultWorldSize unless overridden); the window shows
     // exactly this area, letterboxed.
-    virtual sf::Vector2f getWorldSize() const;
+    [[nodiscard]] virtual sf::Vector2f getWorldSize() const;
     // This program's keys for the on-screen help line, e.g. "W/S move  Space serve".
-    virtual std::string getHelpText() const;
+    [[nodiscard]] virtual std::string getHelpText() const;
     // One line describing the state, printed at the end of a --headless run.
-    virtual std::string describeState() const;
+    [[nodiscard]] virtual std::string describeState() const;
     // Escape was pressed. Return true if the level used it (e.g. back to a menu);
     // false lets the program quit.
-    virtual bool handleEscape();
+    [[nodiscard]] virtual bool handleEscape();
 };
 
 } // namespace hitbox

@@ -18,11 +18,11 @@ public:
     virtual ~LoopHost() = default;
 
     // False ends the loop (the window was closed, or the headless frames are done).
-    virtual bool isRunning() const = 0;
+    [[nodiscard]] virtual bool isRunning() const = 0;
     // Reads this frame's events into `input`; returns the seconds since the last frame.
-    virtual float processInput(Input& input) = 0;
+    [[nodiscard]] virtual float processInput(Input& input) = 0;
     // How many of the `due` steps to run: `due`, or fewer while paused.
-    virtual int stepsToRun(int due) = 0;
+    [[nodiscard]] virtual int stepsToRun(int due) = 0;
     // Draws the level once.
     virtual void render(const Level& level) = 0;
 };

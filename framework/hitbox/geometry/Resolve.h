@@ -33,7 +33,7 @@ struct MoveResult
 // +-exactRange (1e6 px) per axis: then the answer is exact up to float rounding. Outside it
 // (e.g. 3e38 px/s): no move (the box where it was, its velocity, no hits). Solids: any finite
 // boxes (a huge floor is fine); the mover never ends inside one.
-MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids,
-                           bool sortByTime = true);
+[[nodiscard]] MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt,
+                                         const std::vector<Box>& solids, bool sortByTime = true);
 
 } // namespace hitbox

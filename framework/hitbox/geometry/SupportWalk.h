@@ -14,7 +14,7 @@ namespace hitbox
 // a.x * b.x + a.y * b.y in double. A float times a float is exact in double, so the shadows
 // of whole-number corners are exact (touching is found exactly) and tiny values keep their
 // digits.
-inline double dotExact(Vec2 a, Vec2 b)
+[[nodiscard]] inline double dotExact(Vec2 a, Vec2 b)
 {
     return double(a.x) * b.x + double(a.y) * b.y;
 }

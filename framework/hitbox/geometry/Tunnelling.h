@@ -16,6 +16,6 @@ namespace hitbox
 // (Sweep.h) catches that. NaN or infinite input: false. Negative sizes: read as normalised().
 // Range: any finite box and step (plain comparisons of sums; exact within Range.h's
 // +-exactRange, and a sum past about 3.4e38 is infinite: false).
-bool canTunnel(const Box& mover, Vec2 displacement, const Box& target);
+[[nodiscard]] bool canTunnel(const Box& mover, Vec2 displacement, const Box& target);
 
 } // namespace hitbox

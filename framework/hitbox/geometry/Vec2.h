@@ -46,27 +46,27 @@ struct Vec2
     }
 };
 
-constexpr Vec2 operator+(Vec2 a, Vec2 b)
+[[nodiscard]] constexpr Vec2 operator+(Vec2 a, Vec2 b)
 {
     return {a.x + b.x, a.y + b.y};
 }
-constexpr Vec2 operator-(Vec2 a, Vec2 b)
+[[nodiscard]] constexpr Vec2 operator-(Vec2 a, Vec2 b)
 {
     return {a.x - b.x, a.y - b.y};
 }
-constexpr Vec2 operator-(Vec2 a)
+[[nodiscard]] constexpr Vec2 operator-(Vec2 a)
 {
     return {-a.x, -a.y};
 }
-constexpr Vec2 operator*(Vec2 a, float scale)
+[[nodiscard]] constexpr Vec2 operator*(Vec2 a, float scale)
 {
     return {a.x * scale, a.y * scale};
 }
-constexpr Vec2 operator*(float scale, Vec2 a)
+[[nodiscard]] constexpr Vec2 operator*(float scale, Vec2 a)
 {
     return {a.x * scale, a.y * scale};
 }
-constexpr Vec2 operator/(Vec2 a, float divisor)
+[[nodiscard]] constexpr Vec2 operator/(Vec2 a, float divisor)
 {
     return {a.x / divisor, a.y / divisor};
 }
@@ -75,31 +75,31 @@ constexpr bool operator==(Vec2 a, Vec2 b)
 {
     return a.x == b.x && a.y == b.y;
 }
-constexpr bool operator!=(Vec2 a, Vec2 b)
+[[nodiscard]] constexpr bool operator!=(Vec2 a, Vec2 b)
 {
     return !(a == b);
 }
 
 // a.x * b.x + a.y * b.y: how far `a` goes along `b` (times |b|).
-constexpr float dot(Vec2 a, Vec2 b)
+[[nodiscard]] constexpr float dot(Vec2 a, Vec2 b)
 {
     return a.x * b.x + a.y * b.y;
 }
 
 // The z of the 3D cross product: > 0 when `b` turns clockwise from `a` on screen (y down).
-constexpr float cross(Vec2 a, Vec2 b)
+[[nodiscard]] constexpr float cross(Vec2 a, Vec2 b)
 {
     return a.x * b.y - a.y * b.x;
 }
 
 // The vector's length, computed in double so that huge and tiny components do not overflow.
-inline float length(Vec2 vector)
+[[nodiscard]] inline float length(Vec2 vector)
 {
     return static_cast<float>(std::hypot(double(vector.x), double(vector.y)));
 }
 
 // `vector` scaled to length 1; `whenNoDirection` when it has none (zero, NaN, infinite).
-inline Vec2 unitVectorOr(Vec2 vector, Vec2 whenNoDirection)
+[[nodiscard]] inline Vec2 unitVectorOr(Vec2 vector, Vec2 whenNoDirection)
 {
     const double size = std::hypot(double(vector.x), double(vector.y));
     if (!(size > 0.0) || !std::isfinite(size))
@@ -108,13 +108,13 @@ inline Vec2 unitVectorOr(Vec2 vector, Vec2 whenNoDirection)
 }
 
 // The vector turned a quarter turn (x, y) -> (-y, x): perpendicular, same length.
-constexpr Vec2 perpendicular(Vec2 vector)
+[[nodiscard]] constexpr Vec2 perpendicular(Vec2 vector)
 {
     return {-vector.y, vector.x};
 }
 
 // True when both coordinates are finite numbers (no NaN, no infinity).
-inline bool isFinite(Vec2 point)
+[[nodiscard]] inline bool isFinite(Vec2 point)
 {
     return std::isfinite(point.x) && std::isfinite(point.y);
 }
