@@ -38,11 +38,12 @@ struct Options
     // The typed getters: `fallback` when the option was not given; a value that is not of
     // the type or outside lowest..highest (inclusive) throws std::invalid_argument.
     // Digits only, an optional leading '-': "1e9", "12abc", " 5" and "+5" are refused.
-    long long wholeNumber(const std::string& name, long long fallback, long long lowest,
-                          long long highest) const;
+    [[nodiscard]] long long wholeNumber(const std::string& name, long long fallback,
+                                        long long lowest, long long highest) const;
     // A decimal number such as 0.5, -2 or 3.25: digits, an optional leading '-' and one
     // optional '.' with digits after it. "1e3", "0x10", ".5", "5.", " 5" and "+5" are refused.
-    double number(const std::string& name, double fallback, double lowest, double highest) const;
+    [[nodiscard]] double number(const std::string& name, double fallback, double lowest,
+                                double highest) const;
     // Exactly "on" or "off".
     [[nodiscard]] bool onOff(const std::string& name, bool fallback) const;
     // One of `choices`, spelled exactly (`fallback` need not be one: e.g. "" for none).

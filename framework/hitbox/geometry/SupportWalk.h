@@ -32,7 +32,7 @@ struct SupportWalk
     std::size_t at = 0; // where the last climb ended
 
     // The largest dotExact(corner, direction) over the polygon's corners.
-    double furthestAlong(Vec2 direction)
+    [[nodiscard]] double furthestAlong(Vec2 direction)
     {
         const std::size_t count = points.size();
         double best = dotExact(points[at], direction);
