@@ -4,6 +4,7 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/objects/Collision.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
@@ -62,7 +63,7 @@ PointInBoxLevel::PointInBoxLevel()
     for (int corner = 0; corner < 2 * starPoints; ++corner)
     {
         const float radius = corner % 2 == 0 ? starOuterRadius : starInnerRadius;
-        const float angle = 3.14159265f * (static_cast<float>(corner) / starPoints - 0.5f);
+        const float angle = hitbox::pi * (static_cast<float>(corner) / starPoints - 0.5f);
         star.push_back(starCenter +
                        sf::Vector2f(radius * std::cos(angle), radius * std::sin(angle)));
     }

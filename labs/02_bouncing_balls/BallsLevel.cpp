@@ -2,6 +2,7 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/objects/Collision.h"
 // Your own class from lab 0: README.md, "Using your own Collision class from lab 0".
 #include "MyCollision.h"
@@ -41,7 +42,7 @@ void BallsLevel::addRandomBall()
     const sf::Vector2f world = getWorldSize();
     std::uniform_real_distribution<float> x(ballRadius, world.x - ballRadius);
     std::uniform_real_distribution<float> y(ballRadius, world.y - ballRadius);
-    std::uniform_real_distribution<float> angle(0.f, 6.2831853f);
+    std::uniform_real_distribution<float> angle(0.f, 2.f * hitbox::pi);
     // Try a few places; a ball that starts inside another would be shot out of it.
     for (int attempt = 0; attempt < 100; ++attempt)
     {

@@ -2,7 +2,8 @@
 // Teaches: why a plain discrete step lets a fast bullet through a thin wall, and two cures
 // that keep the fixed step: cut the move into sub-steps no longer than the wall is thick,
 // or measure the gap ahead first and move no further (a speculative contact).
-// Keys: none of its own (it fires by itself, faster every shot); P pause, N step, F12
+// Keys: none of its own (it fires by itself, faster every shot, up to a top speed); F1 the
+// next moves, sub-steps and measured gaps, P pause, N step, F12
 // screenshot. The tasks are in README.md.
 #include "RangeLevel.h"
 

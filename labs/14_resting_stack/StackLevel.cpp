@@ -16,9 +16,50 @@ const float stackLeft[2] = {330.f, 820.f};
 const sf::Color crateColor{190, 140, 80};
 const sf::Color crateEdgeColor{120, 80, 40};
 const sf::Color floorColor{90, 96, 110};
-// A crate reaching deeper than this into another is drawn in the debug touching colour.
-constexpr float visibleOverlap = 0.01f;
+
+// True when `crate` sits exactly on the floor or on a crate below it (edges meet, no depth).
+bool restsExactly(const std::vector<Crate>& crates, std::size_t index, float floorY)
+{
+    const Crate& crate = crates[index];
+    if (crate.top + crate.size == floorY)
+        return true;
+    for (std::size_t other = 0; other < crates.size(); ++other)
+    {
+        const Crate& below = crates[other];
+        const bool levelInX =
+            crate.left < below.left + below.size && below.left < crate.left + crate.size;
+        if (other != index && levelInX &&
+            (crate.top + crate.size == below.top || below.top + below.size == crate.top))
+            return true;
+    }
+    return false;
+}
 } // namespace
+
+std::vector<hitbox::DebugState> crateStates(const std::vector<Crate>& crates, float floorY)
+{
+    std::vector<hitbox::DebugState> states(crates.size(), hitbox::DebugState::Free);
+    const auto mark = [&states](int index, hitbox::DebugState state)
+    {
+        if (index == floorIndex)
+            return;
+        hitbox::DebugState& now = states[static_cast<std::size_t>(index)];
+        if (static_cast<int>(state) > static_cast<int>(now))
+            now = state; // the worst state wins: overlapping over touching over free
+    };
+    for (std::size_t index = 0; index < crates.size(); ++index)
+        if (restsExactly(crates, index, floorY))
+            states[index] = hitbox::DebugState::Touching;
+    for (const Contact& contact : findContacts(crates, floorY))
+    {
+        const hitbox::DebugState state = contact.depth > StackLevel::restingSlop
+                                             ? hitbox::DebugState::Overlapping
+                                             : hitbox::DebugState::Touching;
+        mark(contact.above, state);
+        mark(contact.below, state);
+    }
+    return states;
+}
 
 StackLevel::StackLevel()
 {
@@ -98,21 +139,11 @@ void StackLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     for (const std::vector<Crate>& stack : stacks)
     {
-        std::vector<bool> overlapping(stack.size(), false);
-        for (const Contact& contact : findContacts(stack, floorY))
-        {
-            if (contact.depth <= visibleOverlap)
-                continue;
-            overlapping[static_cast<std::size_t>(contact.above)] = true;
-            if (contact.below != floorIndex)
-                overlapping[static_cast<std::size_t>(contact.below)] = true;
-        }
+        const std::vector<hitbox::DebugState> states = crateStates(stack, floorY);
         for (std::size_t index = 0; index < stack.size(); ++index)
         {
             const Crate& crate = stack[index];
-            debug.box({crate.left, crate.top, crate.size, crate.size},
-                      overlapping[index] ? hitbox::DebugRenderer::overlappingColor
-                                         : hitbox::DebugRenderer::freeColor);
+            debug.box({crate.left, crate.top, crate.size, crate.size}, states[index]);
             // The velocity, a tenth of a second ahead.
             const hitbox::Vec2 center{crate.left + crate.size / 2.f, crate.top + crate.size / 2.f};
             debug.arrow(center, {center.x, center.y + crate.velocityY * 0.1f},
@@ -120,6 +151,10 @@ void StackLevel::renderDebug(hitbox::DebugRenderer& debug) const
         }
     }
     debug.line({0.f, floorY}, {getWorldSize().x, floorY}, hitbox::DebugRenderer::hintColor);
+    char slop[120];
+    std::snprintf(slop, sizeof slop, "resting: up to %.0f px deep counts as touching (the slop)",
+                  static_cast<double>(restingSlop));
+    debug.panel({slop});
 }
 
 std::string StackLevel::getHelpText() const
@@ -148,6 +183,11 @@ std::string StackLevel::describeState() const
 float StackLevel::getShake(int stack) const
 {
     return largestMoveShown[stack];
+}
+
+const std::vector<Crate>& StackLevel::getCrates(int stack) const
+{
+    return stacks[stack];
 }
 
 int StackLevel::getPasses(int stack) const

@@ -10,9 +10,15 @@
 #include "Stack.h"
 
 #include "hitbox/app/Level.h"
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <string>
 #include <vector>
+
+// What the debug view shows for each crate: Overlapping when it reaches (or is reached) deeper
+// than StackLevel::restingSlop, Touching (resting) when it touches something or reaches at most
+// that far, else Free. Plain data, so the tests check it without a window.
+std::vector<hitbox::DebugState> crateStates(const std::vector<Crate>& crates, float floorY);
 
 class StackLevel : public hitbox::Level
 {
@@ -24,6 +30,12 @@ public:
     static constexpr int startPasses = 8;       // the right stack's, at the start
     static constexpr int maxPasses = 30;        // Up stops here
     static constexpr int stepsPerReadout = 120; // the readout's window: one second
+    // The debug view's slop, pixels: a crate reaching at most this far into what holds it up
+    // is drawn resting (the "touching" style), not overlapping. Every step gravity pulls a
+    // resting crate in a little and the passes take nearly all of it out again, so a right
+    // answer rests about 0.9 px deep with startPasses (8): drawn resting. The 1-pass stack,
+    // tens of pixels deep, is drawn overlapping.
+    static constexpr float restingSlop = 1.f;
 
     StackLevel();
 
@@ -38,6 +50,8 @@ public:
     // `stack` (0 left, 1 right) over the last full readout window.
     float getShake(int stack) const;
     int getPasses(int stack) const;
+    // The crates of stack `stack` (0 left, 1 right), as they are now.
+    const std::vector<Crate>& getCrates(int stack) const;
 
 private:
     void restack();

@@ -4,6 +4,7 @@
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/debug/ExplainOverlay.h"
+#include "hitbox/geometry/Vec2.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/CircleShape.hpp>
@@ -80,7 +81,7 @@ void WorldLevel::addRandomEnemy()
     const sf::Vector2f size = getWorldSize();
     std::uniform_real_distribution<float> x(enemySize, size.x - enemySize);
     std::uniform_real_distribution<float> y(enemySize, size.y - enemySize);
-    std::uniform_real_distribution<float> angle(0.f, 6.2831853f);
+    std::uniform_real_distribution<float> angle(0.f, 2.f * hitbox::pi);
     const float direction = angle(random);
     addEnemy({x(random), y(random)},
              {enemySpeed * std::cos(direction), enemySpeed * std::sin(direction)});

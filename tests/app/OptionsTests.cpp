@@ -44,7 +44,8 @@ TEST(OptionsWholeNumber, RefusesEverythingElseWithOneMessageFormat)
          {"abc", "200000000", "-5", "1e9", "", " 5", "+5", "12abc", "0", "99999999999999999999999"})
     {
         const hitbox::Options options = parseCommandLine({"--balls", bad}, {"--balls"});
-        EXPECT_EQ(messageOf([&] { options.wholeNumber("--balls", 2, 1, 100); }), wanted + bad + "'")
+        EXPECT_EQ(messageOf([&] { EXPECT_EQ(options.wholeNumber("--balls", 2, 1, 100), 2); }),
+                  wanted + bad + "'")
             << bad;
     }
 }
@@ -53,11 +54,12 @@ TEST(OptionsNumber, ReadsDecimalsAndRefusesNanInfinityAndText)
 {
     EXPECT_DOUBLE_EQ(parseCommandLine({"--t", "0.5"}, {"--t"}).number("--t", 0, 0, 10), 0.5);
     for (const char* bad : {"nan", "inf", "abc", "11", "-1", "1x", ""})
-        EXPECT_EQ(messageOf(
-                      [&] {
-                          parseCommandLine({"--t", bad}, {"--t"}).number("--t", 0, 0, 10);
-                      }),
-                  std::string("--t needs a number from 0 to 10, not '") + bad + "'");
+        EXPECT_EQ(
+            messageOf(
+                [&] {
+                    EXPECT_EQ(parseCommandLine({"--t", bad}, {"--t"}).number("--t", 0, 0, 10), 0.0);
+                }),
+            std::string("--t needs a number from 0 to 10, not '") + bad + "'");
 }
 
 // Issue 25, item 23: Options.h says decimal; strtod alone also read hex, exponents and
@@ -68,7 +70,9 @@ TEST(OptionsNumber, OnlyPlainDecimalsAreNumbers)
     for (const char* bad : {"0x10", "0x1p3", "1e-400", "1e2", " 5", "+5", ".5", "5.", "1.2.3", "-"})
         EXPECT_EQ(messageOf(
                       [&] {
-                          parseCommandLine({"--t", bad}, {"--t"}).number("--t", 0, -10, 10);
+                          EXPECT_EQ(
+                              parseCommandLine({"--t", bad}, {"--t"}).number("--t", 0, -10, 10),
+                              0.0);
                       }),
                   std::string("--t needs a number from -10 to 10, not '") + bad + "'");
 }
@@ -81,7 +85,8 @@ TEST(OptionsOnOff, OnlyOnAndOffAreAnswers)
     for (const char* bad : {"no", "maybe", "1", "ON"})
         EXPECT_EQ(messageOf(
                       [&] {
-                          parseCommandLine({"--demo", bad}, {"--demo"}).onOff("--demo", false);
+                          EXPECT_FALSE(
+                              parseCommandLine({"--demo", bad}, {"--demo"}).onOff("--demo", false));
                       }),
                   std::string("--demo needs on or off, not '") + bad + "'");
 }
@@ -92,11 +97,14 @@ TEST(OptionsOneOf, SpelledExactlyOrAnError)
     EXPECT_EQ(parseCommandLine({"--mode", "discrete"}, {"--mode"}).oneOf("--mode", "swept", modes),
               "discrete");
     EXPECT_EQ(parseCommandLine({}, {"--mode"}).oneOf("--mode", "", modes), "");
-    EXPECT_EQ(messageOf(
-                  [&] {
-                      parseCommandLine({"--mode", "bogus"}, {"--mode"}).oneOf("--mode", "", modes);
-                  }),
-              "--mode needs one of swept, discrete, not 'bogus'");
+    EXPECT_EQ(
+        messageOf(
+            [&] {
+                EXPECT_EQ(
+                    parseCommandLine({"--mode", "bogus"}, {"--mode"}).oneOf("--mode", "", modes),
+                    "");
+            }),
+        "--mode needs one of swept, discrete, not 'bogus'");
 }
 
 TEST(OptionsShared, SecondsAndFramesHaveAStatedMaximumAndNeverOverflow)

@@ -5,6 +5,7 @@
 //   cmake --preset release && cmake --build --preset release --target polygon_bench
 //   build/release/tests/benchmarks/polygon_bench
 #include "hitbox/geometry/Polygon.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <benchmark/benchmark.h>
 
@@ -20,7 +21,7 @@ hitbox::Polygon wheel(int corners)
     hitbox::Polygon polygon;
     for (int k = 0; k < corners; ++k)
     {
-        const double angle = 2.0 * 3.14159265358979323846 * k / corners;
+        const double angle = 2.0 * hitbox::piDouble * k / corners;
         polygon.points.push_back({static_cast<float>(1000.0 * std::cos(angle)),
                                   static_cast<float>(1000.0 * std::sin(angle))});
     }

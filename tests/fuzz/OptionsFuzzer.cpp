@@ -73,8 +73,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     if (!(speed >= 0.0 && speed <= 1e6))
                         std::abort();
                 });
-            answersOrRefuses([&] { options.onOff("--demo", false); });
-            answersOrRefuses([&] { options.oneOf("--mode", "a", {"a", "b"}); });
+            answersOrRefuses(
+                [&] { [[maybe_unused]] const bool demo = options.onOff("--demo", false); });
+            answersOrRefuses(
+                [&]
+                {
+                    const std::string mode = options.oneOf("--mode", "a", {"a", "b"});
+                    if (mode != "a" && mode != "b")
+                        std::abort();
+                });
         });
     return 0;
 }

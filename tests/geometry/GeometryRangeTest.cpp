@@ -2,10 +2,15 @@
 // huge, tiny and many-cornered shapes each get their documented answer, one test each.
 // The sweep over the whole range is in tests/long/RangeSweepTest.cpp.
 #include "hitbox/geometry/Capsule.h"
+#include "hitbox/geometry/Explain.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Range.h"
+#include "hitbox/geometry/Resolve.h"
+#include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/Sweep.h"
+#include "hitbox/geometry/SweptCircle.h"
+#include "hitbox/geometry/Vec2.h"
 #include "support/Printers.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +46,7 @@ Polygon regularPolygon(hitbox::Vec2 centre, float radius, int corners)
     Polygon polygon;
     for (int k = 0; k < corners; ++k)
     {
-        const double angle = 2.0 * 3.14159265358979323846 * k / corners;
+        const double angle = 2.0 * hitbox::piDouble * k / corners;
         polygon.points.push_back(centre +
                                  hitbox::Vec2(static_cast<float>(radius * std::cos(angle)),
                                               static_cast<float>(radius * std::sin(angle))));
@@ -281,4 +286,87 @@ TEST(GeometryRange, CirclesAndSegmentsBeyondTheRangeAreNoHit)
     // Inside the range both still hit.
     EXPECT_TRUE(hitbox::circleVsCircle({{0.f, 0.f}, 1e6f}, {{1e6f, 0.f}, 1e6f}));
     EXPECT_TRUE(hitbox::segmentVsBox({-1e6f, 5.f}, {1e6f, 5.f}, {0.f, 0.f, 10.f, 10.f}).hit);
+}
+
+// moveBoxAndSlide (Resolve.h): a move of the whole range is exact; beyond it, no move.
+// Before: 3e38 px/s ended at (inf, inf).
+TEST(GeometryRange, MoveBoxAndSlideIsExactUpToTheEdgeOfTheRange)
+{
+    const float edge = hitbox::exactRange;
+    const hitbox::Box box(0.f, 0.f, 10.f, 10.f);
+    EXPECT_EQ(hitbox::moveBoxAndSlide(box, {edge, -edge}, 1.f, {}).box,
+              hitbox::Box(edge, -edge, 10.f, 10.f));
+    // A wall half the range away stops it touching, at the edge of the range too.
+    const hitbox::Box wall(edge / 2.f, -50.f, 10.f, 100.f);
+    const hitbox::MoveResult stopped = hitbox::moveBoxAndSlide(box, {edge, 0.f}, 1.f, {wall});
+    EXPECT_EQ(hitbox::rightOf(stopped.box), edge / 2.f);
+    EXPECT_EQ(stopped.velocity, hitbox::Vec2(0.f, 0.f));
+    // A mover at the edge of the range still moves.
+    EXPECT_EQ(hitbox::moveBoxAndSlide({-edge, 0.f, 10.f, 10.f}, {60.f, 0.f}, 0.5f, {}).box.left,
+              -edge + 30.f);
+}
+
+TEST(GeometryRange, MoveBoxAndSlideBeyondTheRangeDoesNotMove)
+{
+    const hitbox::Box box(0.f, 0.f, 10.f, 10.f);
+    const hitbox::Box wall(100.f, -50.f, 10.f, 100.f);
+    for (const hitbox::Vec2 velocity : {hitbox::Vec2(3e38f, 3e38f), hitbox::Vec2(-3e38f, 0.f),
+                                        hitbox::Vec2(2.f * hitbox::exactRange, 0.f)})
+    {
+        const hitbox::MoveResult result = hitbox::moveBoxAndSlide(box, velocity, 1.f, {wall});
+        EXPECT_EQ(result.box, box) << velocity.x;
+        EXPECT_TRUE(result.hits.empty());
+    }
+    const hitbox::Box far(2e6f, 0.f, 10.f, 10.f); // beyond the range: stays, no hit
+    EXPECT_EQ(hitbox::moveBoxAndSlide(far, {60.f, 0.f}, 1.f, {}).box, far);
+    // A solid far larger than the range is still a floor (Sweep.h: any finite box).
+    const hitbox::Box hugeFloor(-1e30f, 50.f, 2e30f, 10.f);
+    EXPECT_EQ(hitbox::moveBoxAndSlide(box, {0.f, 6000.f}, 1.f / 60.f, {hugeFloor}).box.top, 40.f);
+}
+
+// The circle sweeps (SweptCircle.h) take Overlap.h's circle range: in at the edge, out beyond.
+TEST(GeometryRange, CircleSweepsHitAtTheEdgeOfTheRangeAndNotBeyond)
+{
+    const float edge = hitbox::exactRange;
+    const Circle atEdge{{edge - 100.f, 0.f}, 10.f};
+    const Circle target{{edge, 0.f}, 10.f};
+    const hitbox::Hit in = hitbox::sweepCircleVsCircle(atEdge, {100.f, 0.f}, target);
+    EXPECT_TRUE(in.hit);
+    EXPECT_FLOAT_EQ(in.time, 0.8f);
+    EXPECT_TRUE(
+        hitbox::sweepCircleVsBox(atEdge, {100.f, 0.f}, {edge - 20.f, -5.f, 10.f, 10.f}).hit);
+    // Beyond: no hit, whatever the move (before, radii 2e38 gave an infinite point).
+    EXPECT_FALSE(
+        hitbox::sweepCircleVsCircle({{2e6f, 0.f}, 10.f}, {100.f, 0.f}, {{2e6f + 50.f, 0.f}, 10.f})
+            .hit);
+    EXPECT_FALSE(
+        hitbox::sweepCircleVsCircle({{0.f, 0.f}, 2e38f}, {1.f, 0.f}, {{3e38f, 0.f}, 2e38f}).hit);
+    EXPECT_FALSE(
+        hitbox::sweepCircleVsCircle({{0.f, 0.f}, 10.f}, {4e6f, 0.f}, {{2e6f, 0.f}, 10.f}).hit);
+}
+
+// The explanations (Explain.h) agree with the test beyond the range and say why.
+TEST(GeometryRange, ExplainingCirclesBeyondTheRangeSaysTheyDoNotCollide)
+{
+    const hitbox::Explanation why =
+        hitbox::explainCircles({{0.f, 0.f}, 1e20f}, {{3e19f, 0.f}, 1e20f});
+    EXPECT_FALSE(why.collides);
+    EXPECT_NE(why.verdict.find("exact range"), std::string::npos) << why.verdict;
+    EXPECT_FALSE(hitbox::explainCircleBox({{2e6f, 0.f}, 10.f}, {2e6f, 0.f, 5.f, 5.f}).collides);
+}
+
+// The responses (Response.h) are exact at 1e6 px/s, the speed its range states.
+TEST(GeometryRange, ResponsesAreExactAtTheStatedSpeed)
+{
+    const float fast = 1e6f;
+    hitbox::Hit floor;
+    floor.hit = true;
+    floor.time = 0.f;
+    floor.normal = {0.f, -1.f};
+    EXPECT_EQ(hitbox::slideVelocity({fast, fast}, floor), hitbox::Vec2(fast, 0.f));
+    EXPECT_EQ(hitbox::bounceVelocity({fast, fast}, {0.f, -1.f}, 1.f), hitbox::Vec2(fast, -fast));
+    const hitbox::VelocityPair swapped =
+        hitbox::elasticCollision({fast, 0.f}, 1.f, {-fast, 0.f}, 1.f, {-1.f, 0.f});
+    EXPECT_EQ(swapped.first, hitbox::Vec2(-fast, 0.f));
+    EXPECT_EQ(swapped.second, hitbox::Vec2(fast, 0.f));
 }

@@ -3,6 +3,7 @@
 #include "support/Printers.h"
 
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <gtest/gtest.h>
 
@@ -250,7 +251,7 @@ TEST(CircleVsCircleContact, EveryHitHasADepthAboveZeroEvenWhenNearlyTouching)
     {
         const Circle a{{2000.f * unit(random) - 1000.f, 2000.f * unit(random) - 1000.f},
                        100.f * unit(random)};
-        const float angle = 6.2831853f * unit(random);
+        const float angle = 2.f * hitbox::pi * unit(random);
         const float distance = a.radius + 100.f * unit(random);
         const Circle b{
             {a.center.x + distance * std::cos(angle), a.center.y + distance * std::sin(angle)},

@@ -122,9 +122,17 @@ void everyPair(float range)
                                     {a.center + o, a.halfSize, a.angleDegrees}, b);
                             }};
         });
-    // circle-polygon is left out: a centre within rounding of an edge gets a normal made of
-    // rounding noise (about 2 cases in 10^6 at +-50 px; a push leaves up to 0.4 px inside).
-    // Still open (issue 25, item 2): circleVsPolygon needs the edge's own normal there.
+    expectEveryPushSeparates(
+        "circle-polygon", range,
+        [](CaseMaker& m)
+        {
+            const hitbox::Circle a{m.centre(), m.size()};
+            const hitbox::Polygon b =
+                hitbox::toPolygon(hitbox::OrientedBox{m.near(a.center), m.halfSize(), m.angle()});
+            return PushCase{hitbox::circleVsPolygon(a, b), [=](Vec2 o) {
+                                return hitbox::circleVsPolygon({a.center + o, a.radius}, b);
+                            }};
+        });
     expectEveryPushSeparates(
         "capsule-circle", range,
         [](CaseMaker& m)

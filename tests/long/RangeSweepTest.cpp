@@ -8,6 +8,7 @@
 #include "hitbox/geometry/Capsule.h"
 #include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Range.h"
+#include "hitbox/geometry/Vec2.h"
 #include "support/GeometryReference.h"
 
 #include <gtest/gtest.h>
@@ -110,7 +111,7 @@ hitbox::Polygon randomPolygon(Sweep& sweep, Corner centre, double size)
     const int count = std::uniform_int_distribution<int>(3, 8)(sweep.random);
     for (int k = 0; k < count; ++k)
     {
-        const double angle = sweep.uniform(0, 6.283185307179586);
+        const double angle = sweep.uniform(0, 2.0 * hitbox::piDouble);
         const double r = size * std::sqrt(sweep.uniform(0.05, 1));
         points.push_back({double(float(centre.x + r * std::cos(angle))),
                           double(float(centre.y + r * std::sin(angle)))});
@@ -237,7 +238,7 @@ TEST(GeometryRangeSweep, CapsulesAtEveryScaleInTheRange)
         randomCentres(sweep, size, centreA, centreB);
         const auto capsuleAt = [&](Corner centre)
         {
-            const double angle = sweep.uniform(0, 6.283185307179586);
+            const double angle = sweep.uniform(0, 2.0 * hitbox::piDouble);
             const double half = size * sweep.uniform(0, 1);
             const hitbox::Vec2 along(float(half * std::cos(angle)), float(half * std::sin(angle)));
             const hitbox::Vec2 middle(float(centre.x), float(centre.y));

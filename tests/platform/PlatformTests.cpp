@@ -16,7 +16,7 @@ const std::string variable = "HITBOX_PLATFORM_TEST_VARIABLE";
 
 TEST(Platform, AnUnsetVariableIsNothingAndASetOneIsItsValue)
 {
-    hitbox::platform::unsetEnvironmentVariable(variable);
+    ASSERT_TRUE(hitbox::platform::unsetEnvironmentVariable(variable));
     EXPECT_EQ(hitbox::platform::environmentVariable(variable), std::nullopt);
 
     ASSERT_TRUE(hitbox::platform::setEnvironmentVariable(variable, "a value with spaces"));
@@ -60,5 +60,5 @@ TEST(Platform, AVariableSetToNothingIsSetAndEmpty)
 {
     ASSERT_TRUE(hitbox::platform::setEnvironmentVariable(variable, ""));
     EXPECT_EQ(hitbox::platform::environmentVariable(variable), "");
-    hitbox::platform::unsetEnvironmentVariable(variable);
+    EXPECT_TRUE(hitbox::platform::unsetEnvironmentVariable(variable));
 }

@@ -18,6 +18,7 @@
 #include "hitbox/geometry/Polygon.h"
 #include "hitbox/geometry/Sweep.h"
 #include "hitbox/geometry/SweptCircle.h"
+#include "hitbox/geometry/Vec2.h"
 
 #include <gtest/gtest.h>
 
@@ -118,7 +119,7 @@ struct RandomCases
         if (kind < 0.40)
         {
             // Up to 10^6 px/s at 120 steps a second.
-            const double angle = uniform(0, 6.283185307179586);
+            const double angle = uniform(0, 2.0 * hitbox::piDouble);
             const double length = uniform(0, 1.0e6 / 120.0);
             return {static_cast<float>(length * std::cos(angle)),
                     static_cast<float>(length * std::sin(angle))};
@@ -302,7 +303,7 @@ inline hitbox::Polygon randomConvexPolygon(RandomCases& random, double spread)
     std::vector<reference::Vec<double>> points;
     for (int k = 0; k < count; ++k)
     {
-        const double angle = random.uniform(0, 6.283185307179586);
+        const double angle = random.uniform(0, 2.0 * hitbox::piDouble);
         const double r = size * std::sqrt(random.uniform(0, 1));
         points.push_back({static_cast<float>(cx + r * std::cos(angle)),
                           static_cast<float>(cy + r * std::sin(angle))});

@@ -8,6 +8,7 @@
 #include "hitbox/app/WholeFile.h"
 #include "hitbox/app/private/LongRun.h"
 #include "hitbox/app/private/Window.h"
+#include "hitbox/platform/SilentAudio.h"
 
 #include <algorithm>
 #include <cmath>
@@ -201,6 +202,12 @@ int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& mak
                      "a window, or start it under a display (e.g. xvfb-run -a).\n";
         return 2;
     }
+    // Before the level makes its first sound: with no sound device, one line and silence
+    // instead of an OpenAL error for every sound (SFML 2; issue 25, finding 26). Headless
+    // runs are silent anyway, so they say nothing about it.
+    const auto silent = platform::silenceAudioWithoutDevice();
+    if (silent && !options.headless)
+        std::cerr << info.title << ": " << *silent << '\n';
     try
     {
         return runRecordable(options, info, makeLevel);

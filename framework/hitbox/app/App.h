@@ -42,7 +42,8 @@ using LevelFactory = std::function<std::unique_ptr<Level>(const Options&)>;
 
 // Runs the program; returns main()'s exit code (0 fine, 1 error, 2 bad usage / no display,
 // 130 stopped by Ctrl-C while simulating without a window). --help prints usagePage(), 0.
-int run(int argc, char* argv[], const ProgramInfo& info, const LevelFactory& makeLevel);
+[[nodiscard]] int run(int argc, char* argv[], const ProgramInfo& info,
+                      const LevelFactory& makeLevel);
 
 // Runs `frames` fixed steps with no input and no window. Used by --headless and tests.
 void simulate(Level& level, long long frames);

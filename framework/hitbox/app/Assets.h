@@ -22,10 +22,10 @@ public:
 };
 
 // The full path of an asset such as "fonts/DejaVuSans.ttf". Throws AssetError if absent.
-std::string findAsset(const std::string& relativePath);
+[[nodiscard]] std::string findAsset(const std::string& relativePath);
 
 // The font every Hitbox program uses for text, loaded from assets/fonts/.
-sf::Font loadFont(const std::string& relativePath = "fonts/DejaVuSans.ttf");
+[[nodiscard]] sf::Font loadFont(const std::string& relativePath = "fonts/DejaVuSans.ttf");
 
 // A level's font, read from disk by the first get(): a level holds one and is still built
 // (and tested) without the font file, because only drawing asks for it. Copies share it.
@@ -33,7 +33,7 @@ class LazyFont
 {
 public:
     // Loads the font on the first call (throws AssetError if it is missing), then returns it.
-    const sf::Font& get() const;
+    [[nodiscard]] const sf::Font& get() const;
 
 private:
     // Filled by the first get(): `mutable` so that a const render() may load it.

@@ -21,6 +21,6 @@ struct DisplayCheck
 // On Linux SFML draws through X11, so a display is available only when the X server named
 // by DISPLAY answers: an unset or stale DISPLAY, or only WAYLAND_DISPLAY set (no Xwayland),
 // is "no display". Windows and macOS always have one.
-DisplayCheck checkDisplay();
+[[nodiscard]] DisplayCheck checkDisplay();
 
 } // namespace hitbox

@@ -16,12 +16,12 @@ public:
 
     // Adds one frame's time; returns how many steps to simulate now (0 or more). Negative
     // or NaN frame times count as 0.
-    int advance(float frameSeconds);
+    [[nodiscard]] int advance(float frameSeconds);
 
     // The step length given to the constructor, in seconds.
-    float getStepSeconds() const;
+    [[nodiscard]] float getStepSeconds() const;
     // Time saved up but not yet simulated, as a fraction of a step (0 to 1).
-    float getLeftoverFraction() const;
+    [[nodiscard]] float getLeftoverFraction() const;
 
 private:
     double stepSeconds;

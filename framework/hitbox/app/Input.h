@@ -27,15 +27,24 @@ public:
     // outside the keyboard's range, such as sf::Keyboard::Key::Unknown (-1), are ignored.
     void setKeyDown(int key);
     void setKeyUp(int key);
-    bool isKeyDown(int key) const;
-    bool isPressed(int key) const;  // went down this frame
-    bool isReleased(int key) const; // went up this frame
+    [[nodiscard]] bool isKeyDown(int key) const;
+    [[nodiscard]] bool isPressed(int key) const;  // went down this frame
+    [[nodiscard]] bool isReleased(int key) const; // went up this frame
     // The same with sf::Keyboard::Key, which SFML 3 no longer converts to int by itself.
     void setKeyDown(sf::Keyboard::Key key) { setKeyDown(static_cast<int>(key)); }
     void setKeyUp(sf::Keyboard::Key key) { setKeyUp(static_cast<int>(key)); }
-    bool isKeyDown(sf::Keyboard::Key key) const { return isKeyDown(static_cast<int>(key)); }
-    bool isPressed(sf::Keyboard::Key key) const { return isPressed(static_cast<int>(key)); }
-    bool isReleased(sf::Keyboard::Key key) const { return isReleased(static_cast<int>(key)); }
+    [[nodiscard]] bool isKeyDown(sf::Keyboard::Key key) const
+    {
+        return isKeyDown(static_cast<int>(key));
+    }
+    [[nodiscard]] bool isPressed(sf::Keyboard::Key key) const
+    {
+        return isPressed(static_cast<int>(key));
+    }
+    [[nodiscard]] bool isReleased(sf::Keyboard::Key key) const
+    {
+        return isReleased(static_cast<int>(key));
+    }
 
     // The mouse position. In Hitbox programs it is in world coordinates (already mapped
     // through the view, so it stays right after a resize); the int versions round it.
@@ -43,26 +52,26 @@ public:
     void setMouseY(int y);
     void setMousePosition(int x, int y);
     void setMousePosition(sf::Vector2f position);
-    int getMouseX() const;
-    int getMouseY() const;
-    sf::Vector2f getMousePosition() const;
+    [[nodiscard]] int getMouseX() const;
+    [[nodiscard]] int getMouseY() const;
+    [[nodiscard]] sf::Vector2f getMousePosition() const;
 
     void setMouseLDown(bool down);
-    bool isMouseLDown() const;
+    [[nodiscard]] bool isMouseLDown() const;
     void setMouseRDown(bool down);
-    bool isMouseRDown() const;
+    [[nodiscard]] bool isMouseRDown() const;
     void setLeftMouse(MouseState state);
-    bool isLeftMouseDown() const;    // DOWN or PRESSED
-    bool isLeftMousePressed() const; // PRESSED: went down this frame
-    bool isLeftMouseReleased() const;
+    [[nodiscard]] bool isLeftMouseDown() const;    // DOWN or PRESSED
+    [[nodiscard]] bool isLeftMousePressed() const; // PRESSED: went down this frame
+    [[nodiscard]] bool isLeftMouseReleased() const;
     void setRightMouse(MouseState state);
-    bool isRightMouseDown() const;
-    bool isRightMousePressed() const;
-    bool isRightMouseReleased() const;
+    [[nodiscard]] bool isRightMouseDown() const;
+    [[nodiscard]] bool isRightMousePressed() const;
+    [[nodiscard]] bool isRightMouseReleased() const;
 
     // Wheel movement this frame: positive is away from the user.
     void addMouseWheel(float delta);
-    float getMouseWheel() const;
+    [[nodiscard]] float getMouseWheel() const;
 
     // Let go of every key and button (the window lost focus: their "up" events will never
     // arrive, so without this a held key would stay down forever).

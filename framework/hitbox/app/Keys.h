@@ -41,12 +41,12 @@ constexpr std::array<SharedKey, 5> sharedKeys{{
 }};
 
 // The shared key row for `key` (an sf::Keyboard::Key code), or nullptr if it is not one.
-const SharedKey* findSharedKey(int key);
+[[nodiscard]] const SharedKey* findSharedKey(int key);
 
 // True when `key` is one of the shared keys above.
-bool isSharedKey(int key);
+[[nodiscard]] bool isSharedKey(int key);
 
 // "F1 debug boxes   P pause   ...": the start of every window's help line.
-std::string sharedKeysHelp();
+[[nodiscard]] std::string sharedKeysHelp();
 
 } // namespace hitbox

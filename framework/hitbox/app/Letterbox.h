@@ -14,10 +14,10 @@ constexpr unsigned maxPictureSide = 4096;
 
 // `size` in whole pixels, shrunk (never grown, never stretched) to fit inside `limit`;
 // at least 1 x 1. A zero, negative or NaN side counts as 1 pixel.
-sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit);
+[[nodiscard]] sf::Vector2u fitInside(sf::Vector2f size, sf::Vector2u limit);
 
 // The part of a window, as fractions of its size (a view's viewport), that shows a world
 // of `worldSize` as large as possible without stretching: bars fill the rest (letterbox).
-sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
+[[nodiscard]] sf::FloatRect letterboxViewport(sf::Vector2u windowSize, sf::Vector2f worldSize);
 
 } // namespace hitbox

@@ -63,11 +63,11 @@ public:
 
     // The game area in world pixels (defaultWorldSize unless overridden); the window shows
     // exactly this area, letterboxed.
-    virtual sf::Vector2f getWorldSize() const;
+    [[nodiscard]] virtual sf::Vector2f getWorldSize() const;
     // This program's keys for the on-screen help line, e.g. "W/S move  Space serve".
-    virtual std::string getHelpText() const;
+    [[nodiscard]] virtual std::string getHelpText() const;
     // One line describing the state, printed at the end of a --headless run.
-    virtual std::string describeState() const;
+    [[nodiscard]] virtual std::string describeState() const;
     // The contact events (enter, stay, exit) of the last step, for --timeline and the rewind
     // strip (Timeline.h). A level with a World returns world.getEvents(); by default none.
     [[nodiscard]] virtual std::vector<PairEvent> getContactEvents() const;
@@ -78,7 +78,7 @@ public:
     virtual void restoreState(const LevelState& state);
     // Escape was pressed. Return true if the level used it (e.g. back to a menu);
     // false lets the program quit.
-    virtual bool handleEscape();
+    [[nodiscard]] virtual bool handleEscape();
 };
 
 } // namespace hitbox

@@ -25,11 +25,11 @@ public:
     // False ends the loop (the window was closed, or the headless frames are done).
     [[nodiscard]] virtual bool isRunning() const = 0;
     // Seconds of real time since the last call (headless: exactly one step).
-    virtual float secondsSinceLastFrame() = 0;
+    [[nodiscard]] virtual float secondsSinceLastFrame() = 0;
     // Reads this frame's events into `input`.
     virtual void processInput(Input& input) = 0;
     // How many of the `due` steps to run: `due`, or fewer while paused.
-    virtual int stepsToRun(int due) = 0;
+    [[nodiscard]] virtual int stepsToRun(int due) = 0;
     // Draws the level once, `leftover` (0 to 1) of a step after its last step.
     virtual void render(const Level& level, float leftover) = 0;
 };

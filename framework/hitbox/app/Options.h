@@ -37,33 +37,34 @@ struct Options
     std::map<std::string, std::string> extra; // the ProgramInfo::extraOptions that were given
 
     // The value of an extra option as typed, or `fallback` when it was not given.
-    std::string get(const std::string& name, const std::string& fallback) const;
+    [[nodiscard]] std::string get(const std::string& name, const std::string& fallback) const;
 
     // The typed getters: `fallback` when the option was not given; a value that is not of
     // the type or outside lowest..highest (inclusive) throws std::invalid_argument.
     // Digits only, an optional leading '-': "1e9", "12abc", " 5" and "+5" are refused.
-    long long wholeNumber(const std::string& name, long long fallback, long long lowest,
-                          long long highest) const;
+    [[nodiscard]] long long wholeNumber(const std::string& name, long long fallback,
+                                        long long lowest, long long highest) const;
     // A decimal number such as 0.5, -2 or 3.25: digits, an optional leading '-' and one
     // optional '.' with digits after it. "1e3", "0x10", ".5", "5.", " 5" and "+5" are refused.
-    double number(const std::string& name, double fallback, double lowest, double highest) const;
+    [[nodiscard]] double number(const std::string& name, double fallback, double lowest,
+                                double highest) const;
     // Exactly "on" or "off".
-    bool onOff(const std::string& name, bool fallback) const;
+    [[nodiscard]] bool onOff(const std::string& name, bool fallback) const;
     // One of `choices`, spelled exactly (`fallback` need not be one: e.g. "" for none).
-    std::string oneOf(const std::string& name, const std::string& fallback,
-                      const std::vector<std::string>& choices) const;
+    [[nodiscard]] std::string oneOf(const std::string& name, const std::string& fallback,
+                                    const std::vector<std::string>& choices) const;
 };
 
 // Reads the command line. Throws std::invalid_argument with a one-line message. Each option
 // may be given once, and --frames and --seconds not together: a second value would silently
 // win over the first, so it is refused. --help or -h anywhere: help is set, nothing else read.
-Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info);
+[[nodiscard]] Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info);
 
 // The page --help prints: what the program is, every shared option and this program's own.
-std::string usagePage(const ProgramInfo& info);
+[[nodiscard]] std::string usagePage(const ProgramInfo& info);
 
 // `text` made safe for a one-line message: printable ASCII stays, every other byte is
 // written as an escape (\r, \t, \0, \xEF), and anything past `longest` bytes becomes "...".
-std::string printable(const std::string& text, std::size_t longest = 60);
+[[nodiscard]] std::string printable(const std::string& text, std::size_t longest = 60);
 
 } // namespace hitbox

@@ -25,18 +25,18 @@ struct SaveResult
 // new file, the name ends in .png/.bmp/.tga/.jpg, and it is not a folder, a device, a pipe,
 // a symbolic link or a read-only file (those are never replaced). Used before a long
 // --screenshot simulation, and by saveImage.
-SaveResult checkImagePath(const std::string& path);
+[[nodiscard]] SaveResult checkImagePath(const std::string& path);
 
 // Saves `image` as `path` (.png, .bmp, .tga or .jpg, chosen by the ending). An existing
 // file of that name is replaced only by a complete new one; what checkImagePath refuses never is.
-SaveResult saveImage(const sf::Image& image, const std::string& path);
+[[nodiscard]] SaveResult saveImage(const sf::Image& image, const std::string& path);
 
 // A name in `folder` for an F12 screenshot that no file has yet: screenshot-STAMP.png, then
 // screenshot-STAMP-2.png, -3, ... so presses within the same second each get their own file.
 // `stamp` is usually screenshotStamp().
-std::string freeScreenshotName(const std::string& folder, const std::string& stamp);
+[[nodiscard]] std::string freeScreenshotName(const std::string& folder, const std::string& stamp);
 
 // The local date and time as YYYYMMDD-HHMMSS.
-std::string screenshotStamp();
+[[nodiscard]] std::string screenshotStamp();
 
 } // namespace hitbox

@@ -20,8 +20,8 @@ namespace hitbox
 // layers (bits) and has a mask of the layers it wants to hit. Both must agree, so a pickup
 // whose mask leaves out the pickup layer never pairs with another pickup, and a bullet whose
 // mask leaves out its owner's layer never hits its owner.
-inline bool layersAllow(std::uint32_t layerA, std::uint32_t maskA, std::uint32_t layerB,
-                        std::uint32_t maskB)
+[[nodiscard]] inline bool layersAllow(std::uint32_t layerA, std::uint32_t maskA,
+                                      std::uint32_t layerB, std::uint32_t maskB)
 {
     return (layerA & maskB) != 0 && (layerB & maskA) != 0;
 }
@@ -34,18 +34,21 @@ struct BoxArrays
 
     // Copies the items (reusing memory: no allocation once the vectors are big enough).
     void load(const std::vector<BroadphaseItem>& items);
-    std::size_t size() const { return minX.size(); }
+    [[nodiscard]] std::size_t size() const { return minX.size(); }
     // False for the NaN / infinite boxes made empty by load().
-    bool isUsable(std::size_t i) const { return minX[i] <= maxX[i] && minY[i] <= maxY[i]; }
+    [[nodiscard]] bool isUsable(std::size_t i) const
+    {
+        return minX[i] <= maxX[i] && minY[i] <= maxY[i];
+    }
 
     // The edge rule (spansOverlap, Shapes.h) on both axes; `&`: no branch to mispredict (on
     // unsigned values: clang warns about `&` between two bools, -Wbitwise-instead-of-logical).
-    bool overlap(std::size_t a, std::size_t b) const
+    [[nodiscard]] bool overlap(std::size_t a, std::size_t b) const
     {
         return (static_cast<unsigned>(spansOverlap(minX[a], maxX[a], minX[b], maxX[b])) &
                 static_cast<unsigned>(spansOverlap(minY[a], maxY[a], minY[b], maxY[b]))) != 0u;
     }
-    bool allowed(std::size_t a, std::size_t b) const
+    [[nodiscard]] bool allowed(std::size_t a, std::size_t b) const
     {
         return layersAllow(layer[a], mask[a], layer[b], mask[b]);
     }

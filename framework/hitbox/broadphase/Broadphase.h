@@ -75,15 +75,15 @@ public:
     // Every pair of items whose boxes share area (the framework's edge rule) and whose
     // layers/masks allow it, each once, sorted by (first, second). Reuses `pairs`' memory.
     virtual void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) = 0;
-    virtual const char* name() const = 0;
-    virtual BroadphaseStats stats() const = 0; // of the last findPairs
+    [[nodiscard]] virtual const char* name() const = 0;
+    [[nodiscard]] virtual BroadphaseStats stats() const = 0; // of the last findPairs
     // Grid cells / quadtree nodes / sweep axis of the last findPairs (brute force: none).
-    virtual BroadphaseLayout layout() const { return {}; }
+    [[nodiscard]] virtual BroadphaseLayout layout() const { return {}; }
 };
 
 // A broadphase with good defaults (the grid's cell size: gridCellSizeFor, GridBroadphase.h).
-std::unique_ptr<Broadphase> makeBroadphase(BroadphaseMethod method);
+[[nodiscard]] std::unique_ptr<Broadphase> makeBroadphase(BroadphaseMethod method);
 // "BruteForce", "SortAndSweep", "Grid", "Quadtree".
-const char* toString(BroadphaseMethod method);
+[[nodiscard]] const char* toString(BroadphaseMethod method);
 
 } // namespace hitbox

@@ -14,8 +14,8 @@ class BruteForceBroadphase : public Broadphase
 {
 public:
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
-    const char* name() const override { return "BruteForce"; }
-    BroadphaseStats stats() const override { return lastStats; }
+    [[nodiscard]] const char* name() const override { return "BruteForce"; }
+    [[nodiscard]] BroadphaseStats stats() const override { return lastStats; }
 
 private:
     BoxArrays boxes;

@@ -26,7 +26,7 @@ constexpr double kGridCellPerAverageSide = 3.0;
 
 // The cell size the rule gives for boxes whose sides average `averageSide` pixels (a ball's
 // side is its diameter). GridBroadphase uses it when given no cell size; lab 8 starts from it.
-constexpr double gridCellSizeFor(double averageSide)
+[[nodiscard]] constexpr double gridCellSizeFor(double averageSide)
 {
     return kGridCellPerAverageSide * averageSide;
 }
@@ -70,10 +70,10 @@ public:
 
     // Every pair once, first < second, in the settings' PairOrder (Sorted unless asked).
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
-    const char* name() const override { return "Grid"; }
-    BroadphaseStats stats() const override { return lastStats; }
+    [[nodiscard]] const char* name() const override { return "Grid"; }
+    [[nodiscard]] BroadphaseStats stats() const override { return lastStats; }
     // The grid (its cellSize: the one the last findPairs used) and how many boxes each cell holds.
-    BroadphaseLayout layout() const override;
+    [[nodiscard]] BroadphaseLayout layout() const override;
     [[nodiscard]] const GridSettings& settings() const { return gridSettings; }
     // With two threads: CPU seconds the second thread spent in the last findPairs beyond the
     // calling thread's own share of the same work (0 with one thread). The calling thread's

@@ -22,10 +22,10 @@ public:
     explicit QuadtreeBroadphase(std::size_t nodeCapacity = 8, int maxDepth = 10);
 
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
-    const char* name() const override { return "Quadtree"; }
-    BroadphaseStats stats() const override { return lastStats; }
+    [[nodiscard]] const char* name() const override { return "Quadtree"; }
+    [[nodiscard]] BroadphaseStats stats() const override { return lastStats; }
     // Every node's region.
-    BroadphaseLayout layout() const override;
+    [[nodiscard]] BroadphaseLayout layout() const override;
 
 private:
     struct Bounds

@@ -17,10 +17,10 @@ class SortAndSweepBroadphase : public Broadphase
 {
 public:
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
-    const char* name() const override { return "SortAndSweep"; }
-    BroadphaseStats stats() const override { return lastStats; }
+    [[nodiscard]] const char* name() const override { return "SortAndSweep"; }
+    [[nodiscard]] BroadphaseStats stats() const override { return lastStats; }
     // Each box's x range, in sweep order.
-    BroadphaseLayout layout() const override;
+    [[nodiscard]] BroadphaseLayout layout() const override;
 
 private:
     void sortByLeftEdge();

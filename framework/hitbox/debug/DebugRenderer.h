@@ -94,7 +94,7 @@ public:
     // Forgets everything collected.
     void clear();
     // Everything collected so far (two triangles a line): tests read it without a window.
-    const sf::VertexArray& getVertices() const;
+    [[nodiscard]] const sf::VertexArray& getVertices() const;
 
 private:
     void dashed(Vec2 from, Vec2 to, sf::Color color);

@@ -40,7 +40,7 @@ struct Capsule
 
 // The point of the segment start..end nearest to `point` (start when the segment has no
 // length). Ties cannot happen: the nearest point of a segment is unique.
-Vec2 closestPointOnSegment(Vec2 point, Vec2 start, Vec2 end);
+[[nodiscard]] Vec2 closestPointOnSegment(Vec2 point, Vec2 start, Vec2 end);
 
 // The closest pair of points between two segments (first on segment 1, second on 2). For
 // parallel overlapping segments, where many pairs are equally close, one of them.
@@ -49,15 +49,15 @@ struct SegmentPoints
     Vec2 first;
     Vec2 second;
 };
-SegmentPoints closestPointsOfSegments(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2);
+[[nodiscard]] SegmentPoints closestPointsOfSegments(Vec2 start1, Vec2 end1, Vec2 start2, Vec2 end2);
 
 // A = the capsule, B = the circle. Point: on the circle's rim.
-Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);
+[[nodiscard]] Contact capsuleVsCircle(const Capsule& capsule, const Circle& circle);
 // Point: on B's surface, facing A.
-Contact capsuleVsCapsule(const Capsule& a, const Capsule& b);
+[[nodiscard]] Contact capsuleVsCapsule(const Capsule& a, const Capsule& b);
 // A = the capsule, B = the polygon's convex hull (Polygon.h's rules for degenerate polygons).
 // Separating axes: the polygon's edge normals, the capsule's own normal, and from each end of
 // the capsule to the corner nearest it (the round ends need those). O(n) in the corners.
-Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon);
+[[nodiscard]] Contact capsuleVsPolygon(const Capsule& capsule, const Polygon& polygon);
 
 } // namespace hitbox

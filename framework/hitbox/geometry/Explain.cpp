@@ -1,6 +1,7 @@
 #include "hitbox/geometry/Explain.h"
 
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <cmath>
@@ -19,6 +20,14 @@ std::string number(double value)
     text.precision(6);
     text << value;
     return text.str();
+}
+
+// The verdict's reason for a circle beyond Range.h's range (circleVsCircle and circleVsBox
+// answer "no hit" there).
+std::string outsideTheRange()
+{
+    return "a circle beyond +-" + number(exactRange) +
+           " px (the exact range, Range.h) never collides";
 }
 
 std::string point(Vec2 value)
@@ -128,6 +137,12 @@ Explanation explainCircles(const Circle& a, const Circle& b, const std::string& 
                              "never collides";
         return why;
     }
+    if (!withinExactRange(a.center) || !withinExactRange(a.radius) || !withinExactRange(b.center) ||
+        !withinExactRange(b.radius))
+    {
+        why.verdict = pair + " do not collide: " + outsideTheRange();
+        return why;
+    }
     // The same float sums as circleVsCircle, so the comparison shown is the one it made.
     const Vec2 between = a.center - b.center;
     const float distanceSquared = between.x * between.x + between.y * between.y;
@@ -168,6 +183,11 @@ Explanation explainCircleBox(const Circle& circle, const Box& box, const std::st
     if (!isFinite(circle) || circle.radius < 0.f || !isFinite(box))
     {
         why.verdict = pair + " do not collide: NaN, infinity or a negative radius never collides";
+        return why;
+    }
+    if (!withinExactRange(circle.center) || !withinExactRange(circle.radius))
+    {
+        why.verdict = pair + " do not collide: " + outsideTheRange();
         return why;
     }
     const Box b = normalised(box);

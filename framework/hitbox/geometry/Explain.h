@@ -8,6 +8,8 @@
 // Each function runs the same test as Overlap.h / Polygon.h / Sweep.h and always agrees with
 // it: `collides` is that test's answer, and the steps show the numbers it compared. Plain
 // data (no SFML): the debug overlay draws it, the test matchers print it.
+// RANGE: each explanation takes the range of the test it explains (Overlap.h, Polygon.h,
+// Sweep.h; Range.h's +-exactRange), and outside it says what that test says: no collision.
 #pragma once
 
 #include "hitbox/geometry/Polygon.h"

@@ -187,7 +187,7 @@ Vec2 cosSinOfDegrees(float degrees)
         const float sines[4] = {0.f, 1.f, 0.f, -1.f};
         return {cosines[quarterTurns], sines[quarterTurns]};
     }
-    const double radians = turned * 3.14159265358979323846 / 180.0;
+    const double radians = turned * piDouble / 180.0;
     return {static_cast<float>(std::cos(radians)), static_cast<float>(std::sin(radians))};
 }
 
@@ -310,6 +310,73 @@ bool pointInPolygon(Vec2 point, const Polygon& polygon)
     return true;
 }
 
+namespace
+{
+// The point of a convex outline closest to `centre`, its distance, and the way out there.
+struct OutlinePoint
+{
+    Vec2 point;
+    float distance = 0.f;
+    Vec2 normal{-1.f, 0.f}; // unit
+};
+
+// Found edge by edge in double. When the closest point lies inside an edge, the way out is
+// the edge's own outward normal and the distance the centre's height above the edge: the line
+// from a projected point to a centre within rounding of the edge is rounding noise pointing
+// anywhere, and a push along it can leave the circle inside (issue 25: about 2 in 10^6). Only
+// at a corner is the way out the line from the corner (an exact difference of floats, so it
+// points into the corner's outer wedge). `area` gives the winding: the inner side of an edge
+// is where turn() * area > 0.
+OutlinePoint closestOnOutline(Vec2 centre, const std::vector<Vec2>& points, double area)
+{
+    OutlinePoint best;
+    double bestSquared = -1.0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        const Vec2 from = points[i];
+        const Vec2 to = points[(i + 1) % points.size()];
+        const double edgeX = double(to.x) - from.x, edgeY = double(to.y) - from.y;
+        const double lengthSquared = edgeX * edgeX + edgeY * edgeY;
+        const double along =
+            lengthSquared > 0.0
+                ? ((double(centre.x) - from.x) * edgeX + (double(centre.y) - from.y) * edgeY) /
+                      lengthSquared
+                : 0.0;
+        OutlinePoint candidate;
+        double squared;
+        if (along <= 0.0 || along >= 1.0)
+        {
+            const Vec2 corner = along <= 0.0 ? from : to;
+            const double dx = double(centre.x) - corner.x, dy = double(centre.y) - corner.y;
+            squared = dx * dx + dy * dy;
+            candidate.point = corner;
+            candidate.distance = static_cast<float>(std::sqrt(squared));
+            candidate.normal = unitVectorOr(centre - corner, {-1.f, 0.f});
+        }
+        else
+        {
+            const double height =
+                -turn(from, to, centre) * (area > 0.0 ? 1.0 : -1.0) / std::sqrt(lengthSquared);
+            squared = height * height;
+            candidate.point = Vec2(static_cast<float>(from.x + along * edgeX),
+                                   static_cast<float>(from.y + along * edgeY));
+            candidate.distance = static_cast<float>(std::fabs(height));
+            // Outward; towards the centre on a polygon with no area (a segment has two sides).
+            const Vec2 edge = to - from;
+            const Vec2 outward = unitVectorOr(
+                area > 0.0 ? Vec2(edge.y, -edge.x) : Vec2(-edge.y, edge.x), {-1.f, 0.f});
+            candidate.normal = height < 0.0 ? -outward : outward;
+        }
+        if (bestSquared < 0.0 || squared < bestSquared)
+        {
+            bestSquared = squared;
+            best = candidate;
+        }
+    }
+    return best;
+}
+} // namespace
+
 Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
 {
     Contact contact;
@@ -320,30 +387,17 @@ Contact circleVsPolygon(const Circle& circle, const Polygon& polygon)
     const double area = twiceSignedAreaOf(points);
     const bool inside = pointInPolygon(circle.center, polygon);
 
-    // The closest point of the polygon's outline to the centre, and the edge it is on.
-    Vec2 closest = points[0];
-    for (std::size_t i = 0; i < points.size(); ++i)
+    const OutlinePoint outline = closestOnOutline(circle.center, points, area);
+    if (!inside && outline.distance > 0.f)
     {
-        const Vec2 onEdge =
-            closestPointOnSegment(circle.center, points[i], points[(i + 1) % points.size()]);
-        if (length(circle.center - onEdge) < length(circle.center - closest))
-        {
-            closest = onEdge;
-        }
-    }
-    const Vec2 fromPolygon = circle.center - closest;
-    const float distance = length(fromPolygon);
-
-    if (!inside && distance > 0.f)
-    {
-        // Centre outside: like circleVsBoxContact, push along the line from the closest point
-        // (made unit in double: for a centre a denormal away, dividing in float is not unit).
-        contact.depth = circle.radius - distance;
+        // Centre outside: like circleVsBoxContact, push out along the way from the closest
+        // point (an edge's own normal, or the line from a corner).
+        contact.depth = circle.radius - outline.distance;
         if (!penetrates(contact.depth))
             return Contact{};
         contact.hit = true;
-        contact.normal = unitVectorOr(fromPolygon, {-1.f, 0.f});
-        contact.point = closest;
+        contact.normal = outline.normal;
+        contact.point = outline.point;
         return contact;
     }
     if (!inside && !penetrates(circle.radius))

@@ -61,16 +61,16 @@ struct Polygon
 
 // The four corners, starting with the box's own top-left and going down its left side first
 // (so the first edge's axis is the box's x axis). A negative half size is read as positive.
-Polygon toPolygon(const OrientedBox& box);
+[[nodiscard]] Polygon toPolygon(const OrientedBox& box);
 // The four corners of an axis-aligned box, in the same order (negative sizes normalised).
-Polygon toPolygon(const Box& box);
+[[nodiscard]] Polygon toPolygon(const Box& box);
 
 // The polygon every test here works on: the corners of its convex hull, from the leftmost
 // (then topmost) corner, clockwise on screen. Empty when a point is NaN or out of range.
-Polygon convexHull(const Polygon& polygon);
+[[nodiscard]] Polygon convexHull(const Polygon& polygon);
 
 // Twice the signed area (positive when the points run clockwise on screen, y down).
-float twiceSignedArea(const Polygon& polygon);
+[[nodiscard]] float twiceSignedArea(const Polygon& polygon);
 
 // What the search for a separating axis found, for drawing: when separated, the axis with
 // the LARGEST gap (the clearest view of the separation) and that gap in pixels (>= 0; 0 when
@@ -83,23 +83,23 @@ struct AxisReport
     Vec2 axis;
     float gap = 0.f;
 };
-AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
+[[nodiscard]] AxisReport findSeparatingAxis(const Polygon& a, const Polygon& b);
 
 // The separating axis theorem with the minimum translation: moving A by normal * depth
 // leaves the two exactly touching. Corners within +-exactRange, else no hit.
-Contact polygonVsPolygon(const Polygon& a, const Polygon& b);
+[[nodiscard]] Contact polygonVsPolygon(const Polygon& a, const Polygon& b);
 // polygonVsPolygon on the two boxes' corners (so every corner within +-exactRange).
-Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b);
+[[nodiscard]] Contact orientedBoxVsOrientedBox(const OrientedBox& a, const OrientedBox& b);
 
 // A = the circle, B = the polygon: the normal points out of the polygon towards the circle
 // (swap the normal's sign to see it from the polygon). The centre's closest point on the
 // polygon decides; a centre inside leaves through the nearest edge. Zero radius: a point,
 // a hit only when its way out is > 0 (strictly inside). A polygon with no area collides
 // when it reaches strictly inside the circle. Centre, radius, corners within +-exactRange.
-Contact circleVsPolygon(const Circle& circle, const Polygon& polygon);
+[[nodiscard]] Contact circleVsPolygon(const Circle& circle, const Polygon& polygon);
 
 // True when `point` is strictly inside the convex polygon (on an edge is outside). Point
 // and corners within +-exactRange, else false.
-bool pointInPolygon(Vec2 point, const Polygon& polygon);
+[[nodiscard]] bool pointInPolygon(Vec2 point, const Polygon& polygon);
 
 } // namespace hitbox

@@ -22,12 +22,12 @@ namespace hitbox
 constexpr float exactRange = 1e6f;
 
 // True when |value| <= exactRange (false for NaN and infinity).
-inline bool withinExactRange(float value)
+[[nodiscard]] inline bool withinExactRange(float value)
 {
     return std::fabs(value) <= exactRange;
 }
 // True when both coordinates are within the range.
-inline bool withinExactRange(Vec2 point)
+[[nodiscard]] inline bool withinExactRange(Vec2 point)
 {
     return withinExactRange(point.x) && withinExactRange(point.y);
 }

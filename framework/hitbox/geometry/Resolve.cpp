@@ -1,6 +1,7 @@
 #include "hitbox/geometry/Resolve.h"
 
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Response.h"
 #include "hitbox/geometry/Vec2.h"
 
@@ -76,6 +77,13 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
 {
     MoveResult result{normalised(box), velocity, {}};
     if (!isFinite(box) || !isFinite(velocity) || !std::isfinite(dt) || !(dt > 0.f))
+        return result;
+    // The stated range (Range.h): outside it a sum can overflow to infinity (3e38 px/s once
+    // ended at (inf, inf)), so the box stays where it is.
+    const Vec2 wholeMove{velocity.x * dt, velocity.y * dt};
+    if (!withinExactRange(Vec2{result.box.left, result.box.top}) ||
+        !withinExactRange(Vec2{result.box.width, result.box.height}) ||
+        !withinExactRange(wholeMove))
         return result;
     Vec2 stepVelocity = velocity;            // used for this step's move
     float stepLeft = 1.f;                    // the fraction of the step not yet moved

@@ -29,7 +29,11 @@ struct MoveResult
 // itself, the box stops (velocity 0) at the last place on its path that touched nothing more
 // than an edge. A box starting inside a solid
 // is pushed out first (boxVsBoxContact). dt <= 0, NaN or infinite input: no move.
-MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::vector<Box>& solids,
-                           bool sortByTime = true);
+// RANGE (Range.h): the mover's corner and size, and its whole move velocity * dt, each within
+// +-exactRange (1e6 px) per axis: then the answer is exact up to float rounding. Outside it
+// (e.g. 3e38 px/s): no move (the box where it was, its velocity, no hits). Solids: any finite
+// boxes (a huge floor is fine); the mover never ends inside one.
+[[nodiscard]] MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt,
+                                         const std::vector<Box>& solids, bool sortByTime = true);
 
 } // namespace hitbox

@@ -3,6 +3,10 @@
 // Units are pixels (world units) and seconds. Boxes (left, top, width, height) and vectors
 // (Vec2.h) are Hitbox's own plain values: nothing here knows SFML, draws or needs a window
 // (framework/hitbox/sfml/Conversions.h converts to and from Box / Vec2).
+// RANGE: the types hold any float; each test states the range it is exact in (Range.h:
+// +-exactRange, 1e6 px). The helpers here (normalised, centerOf, rightOf, bottomOf) round
+// as float sums do and are exact to the last bit inside that range; past about 3.4e38 a sum
+// overflows to infinity, which every test then answers with "no hit".
 #pragma once
 
 #include "hitbox/geometry/Vec2.h"
@@ -36,7 +40,7 @@ constexpr bool operator==(const Box& a, const Box& b)
 {
     return a.left == b.left && a.top == b.top && a.width == b.width && a.height == b.height;
 }
-constexpr bool operator!=(const Box& a, const Box& b)
+[[nodiscard]] constexpr bool operator!=(const Box& a, const Box& b)
 {
     return !(a == b);
 }
@@ -65,13 +69,13 @@ struct Contact
 // THE EDGE RULE, in one place: the spans minA..maxA and minB..maxB overlap only when they
 // share some length; spans that only touch (maxA == minB) do not, and NaN never overlaps.
 // `&` instead of `&&`: no branch for the CPU to mispredict in the broadphases' inner loops.
-inline bool spansOverlap(float minA, float maxA, float minB, float maxB)
+[[nodiscard]] inline bool spansOverlap(float minA, float maxA, float minB, float maxB)
 {
     return (minA < maxB) & (minB < maxA);
 }
 // The same rule for a penetration depth (the shortest move that separates two shapes): they
 // collide only when it is > 0; 0 (touching) and NaN do not. Every Contact test ends with it.
-inline bool penetrates(float depth)
+[[nodiscard]] inline bool penetrates(float depth)
 {
     return depth > 0.f;
 }
@@ -79,7 +83,7 @@ inline bool penetrates(float depth)
 // The size that takes `from` exactly to `to` (from <= to): to - from, nudged by a float step
 // when rounding would make from + size miss `to`. Without it a flipped box's edge could move
 // by a rounding error, and boxes that only touch would overlap.
-inline float exactSizeBetween(float from, float to)
+[[nodiscard]] inline float exactSizeBetween(float from, float to)
 {
     float size = to - from;
     for (int nudge = 0; nudge < 4 && from + size != to; ++nudge)
@@ -90,7 +94,7 @@ inline float exactSizeBetween(float from, float to)
 // sf::Rect::intersects reads it); normalised() turns it into the usual form, whose right edge
 // (left + width) is the original left to the last bit. Inline: the broadphases run it for
 // every box every frame, and a call into another file is not inlined.
-inline Box normalised(const Box& box)
+[[nodiscard]] inline Box normalised(const Box& box)
 {
     Box result = box;
     if (box.width < 0.f)
@@ -106,18 +110,18 @@ inline Box normalised(const Box& box)
     return result;
 }
 // The middle of the box (the same point for a negative size).
-Vec2 centerOf(const Box& box);
+[[nodiscard]] Vec2 centerOf(const Box& box);
 // The circle inscribed in the box: centred on its middle, radius half its shorter side (a
 // negative size counts as its length, as normalised() reads it). The default bounding circle
 // of every GameObject, the course's included.
-Circle inscribedCircle(const Box& box);
+[[nodiscard]] Circle inscribedCircle(const Box& box);
 // left + width: the right edge (for a negative width, the left one; normalised() first).
-float rightOf(const Box& box);
+[[nodiscard]] float rightOf(const Box& box);
 // top + height: the bottom edge (for a negative height, the top one; normalised() first).
-float bottomOf(const Box& box);
+[[nodiscard]] float bottomOf(const Box& box);
 
 // True when every coordinate is a finite number (no NaN, no infinity).
-bool isFinite(const Box& box);
-bool isFinite(const Circle& circle);
+[[nodiscard]] bool isFinite(const Box& box);
+[[nodiscard]] bool isFinite(const Circle& circle);
 
 } // namespace hitbox

@@ -1,5 +1,6 @@
 // SupportWalk.h - the furthest corner of a convex polygon along a direction, found by walking.
 // Shared by the polygon tests (Polygon.cpp) and capsule against polygon (Capsule.cpp).
+// Range: its callers' (Polygon.h, Capsule.h: corners within +-exactRange, Range.h).
 #pragma once
 
 #include "hitbox/geometry/Vec2.h"
@@ -13,7 +14,7 @@ namespace hitbox
 // a.x * b.x + a.y * b.y in double. A float times a float is exact in double, so the shadows
 // of whole-number corners are exact (touching is found exactly) and tiny values keep their
 // digits.
-inline double dotExact(Vec2 a, Vec2 b)
+[[nodiscard]] inline double dotExact(Vec2 a, Vec2 b)
 {
     return double(a.x) * b.x + double(a.y) * b.y;
 }
@@ -31,7 +32,7 @@ struct SupportWalk
     std::size_t at = 0; // where the last climb ended
 
     // The largest dotExact(corner, direction) over the polygon's corners.
-    double furthestAlong(Vec2 direction)
+    [[nodiscard]] double furthestAlong(Vec2 direction)
     {
         const std::size_t count = points.size();
         double best = dotExact(points[at], direction);

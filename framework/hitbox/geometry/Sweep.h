@@ -4,6 +4,9 @@
 // object can jump a thin wall ("bullet through paper"); a sweep follows the whole straight
 // move of one step and says WHEN the mover first touches the target. Units: pixels;
 // `displacement` is the whole move of the step (velocity * dt): time 0 is its start, 1 its end.
+// RANGE (Range.h): segmentVsBox's two ends within +-exactRange, else no hit. The box sweeps
+// take any finite boxes and moves (a floor 1e30 px wide is hit at the right time) and are
+// exact up to float rounding when every coordinate is within +-exactRange.
 #pragma once
 
 #include "hitbox/geometry/Shapes.h"
@@ -27,18 +30,18 @@ struct Hit
 
 // The answer for a mover that already shares area with its target at time 0: a hit at
 // time 0 with `startedInside`, and the contact's push-out as normal, depth and point.
-Hit startedInsideHit(const Contact& overlap);
+[[nodiscard]] Hit startedInsideHit(const Contact& overlap);
 
 // A hit found in a moving target's frame (the mover made the relative move), put back in the
 // world: the point moves on with the target by targetDisplacement * time. No hit: unchanged.
-Hit movedWithTarget(Hit hitSeenFromTarget, Vec2 targetDisplacement);
+[[nodiscard]] Hit movedWithTarget(Hit hitSeenFromTarget, Vec2 targetDisplacement);
 
 // The slab method (Ericson, Real-Time Collision Detection, 5.3.3): a point moving from `start`
 // to `end` against a box. Hits only when the point passes strictly inside (a point grazing an
 // edge does not); `point` is start + time * (end - start). A zero-length segment is
 // pointInBox; a zero-size box is never hit (two things with no area). NaN: no hit.
 // Both ends must be within +-exactRange (Range.h); outside it: no hit.
-Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box);
+[[nodiscard]] Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box);
 
 // A box moving by `displacement` against a still box (Ericson 5.5.8: the slab method against
 // the target grown by the mover's size). A hit is coming to SHARE AREA at some 0 <= time < 1;
@@ -46,11 +49,11 @@ Hit segmentVsBox(Vec2 start, Vec2 end, const Box& box);
 // hit, and overlapping already is time 0 with startedInside (boxVsBoxContact's push-out). Exact
 // corner: the x axis wins. NaN or infinite: no hit. `point`: the middle of the touching edge.
 // Moving to `time` can round to a hair inside: moveBoxAndSlide (Resolve.h) corrects for that.
-Hit sweepBoxVsBox(const Box& mover, Vec2 displacement, const Box& target);
+[[nodiscard]] Hit sweepBoxVsBox(const Box& mover, Vec2 displacement, const Box& target);
 
 // Both boxes move: sweepBoxVsBox of the relative move (moverDisplacement - targetDisplacement),
 // same edge rules. `point` is where they touch in the world at that time.
-Hit sweepBoxVsMovingBox(const Box& mover, Vec2 moverDisplacement, const Box& target,
-                        Vec2 targetDisplacement);
+[[nodiscard]] Hit sweepBoxVsMovingBox(const Box& mover, Vec2 moverDisplacement, const Box& target,
+                                      Vec2 targetDisplacement);
 
 } // namespace hitbox

@@ -1,6 +1,7 @@
 #include "hitbox/geometry/SweptCircle.h"
 
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Range.h"
 #include "hitbox/geometry/Vec2.h"
 
 #include <cmath>
@@ -14,9 +15,12 @@ namespace
 // The largest float below 1: a time that rounds up to 1 would read as "touching at the end".
 const float latestTime = std::nextafter(1.f, 0.f);
 
+// A circle the sweeps answer for: centre and radius within the stated range (Range.h), as
+// for the circle tests of Overlap.h, so a started-inside hit and its push-out always agree.
 bool isUsable(const Circle& circle)
 {
-    return isFinite(circle) && circle.radius >= 0.f;
+    return isFinite(circle) && circle.radius >= 0.f && withinExactRange(circle.center) &&
+           withinExactRange(circle.radius);
 }
 
 // [slide:swept-circle-toi]
@@ -64,7 +68,7 @@ Hit castAgainstCircle(Vec2 start, Vec2 move, const Circle& circle)
 
 Hit sweepCircleVsCircle(const Circle& mover, Vec2 displacement, const Circle& target)
 {
-    if (!isUsable(mover) || !isUsable(target) || !isFinite(displacement))
+    if (!isUsable(mover) || !isUsable(target) || !withinExactRange(displacement))
         return Hit{};
     if (circleVsCircle(mover, target))
         return startedInsideHit(circleVsCircleContact(mover, target));
@@ -87,7 +91,7 @@ Hit sweepCircleVsMovingCircle(const Circle& mover, Vec2 moverDisplacement, const
 
 Hit sweepCircleVsBox(const Circle& mover, Vec2 displacement, const Box& box)
 {
-    if (!isUsable(mover) || !isFinite(box) || !isFinite(displacement))
+    if (!isUsable(mover) || !isFinite(box) || !withinExactRange(displacement))
         return Hit{};
     const Box b = normalised(box);
     if (circleVsBox(mover, b))

@@ -14,6 +14,8 @@ namespace hitbox
 // enough to go from touching one side to touching the other) and the step's swept bounds
 // share area with the target. A diagonal corner clip can be missed at any speed: only a sweep
 // (Sweep.h) catches that. NaN or infinite input: false. Negative sizes: read as normalised().
-bool canTunnel(const Box& mover, Vec2 displacement, const Box& target);
+// Range: any finite box and step (plain comparisons of sums; exact within Range.h's
+// +-exactRange, and a sum past about 3.4e38 is infinite: false).
+[[nodiscard]] bool canTunnel(const Box& mover, Vec2 displacement, const Box& target);
 
 } // namespace hitbox

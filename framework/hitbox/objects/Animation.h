@@ -19,12 +19,12 @@ class Animation
 public:
     // Appends a frame: the rectangle of the texture to show, in texture pixels.
     void addFrame(sf::IntRect frame);
-    int getSize() const; // the number of frames
+    [[nodiscard]] int getSize() const; // the number of frames
 
     // How long each frame shows, in seconds (despite the old name: not frames per second).
     // Zero or less: the animation holds its current frame.
     void setFrameSpeed(float secondsPerFrame);
-    float getFrameSpeed() const;
+    [[nodiscard]] float getFrameSpeed() const;
 
     // Moves on by dt seconds: as many frames as that time covers, keeping the leftover time
     // for the next call, so the speed does not depend on the frame rate. At the last frame a
@@ -36,18 +36,18 @@ public:
 
     // The rectangle to pass to setTextureRect. Flipped: the same frame mirrored left to
     // right (a negative width, which SFML draws mirrored). No frames: an empty rectangle.
-    sf::IntRect getCurrentFrame() const;
-    int getCurrentFrameIndex() const;
+    [[nodiscard]] sf::IntRect getCurrentFrame() const;
+    [[nodiscard]] int getCurrentFrameIndex() const;
 
     // Flipped: getCurrentFrame() is mirrored left to right. Looping: after the last frame
     // comes the first (otherwise it stops on the last). Playing: animate() moves on.
     void setFlipped(bool isFlipped);
-    bool getFlipped() const;
+    [[nodiscard]] bool getFlipped() const;
     void setLooping(bool isLooping);
-    bool getLooping() const;
+    [[nodiscard]] bool getLooping() const;
     void setPlaying(bool isPlaying);
-    bool getPlaying() const;
-    bool isPlaying() const;
+    [[nodiscard]] bool getPlaying() const;
+    [[nodiscard]] bool isPlaying() const;
     void stop();  // stops playing and goes back to the first frame
     void pause(); // stops playing and keeps the frame: setPlaying(true) carries on from it
 

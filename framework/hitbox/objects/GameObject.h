@@ -77,30 +77,30 @@ public:
     // In pixels per second. GameObject never moves itself: your update() does.
     void setVelocity(sf::Vector2f newVelocity);
     void setVelocity(float x, float y);
-    sf::Vector2f getVelocity() const;
+    [[nodiscard]] sf::Vector2f getVelocity() const;
 
     // A new object is alive and a collider. Collision checks ignore dead objects and
     // objects that are not colliders.
-    bool isAlive() const;
+    [[nodiscard]] bool isAlive() const;
     void setAlive(bool isAliveNow);
-    bool isCollider() const;
+    [[nodiscard]] bool isCollider() const;
     void setCollider(bool isColliderNow);
 
     // The collision box in world coordinates: the local box moved, scaled and rotated with
     // the object (when rotated: the smallest axis-aligned box around the turned box).
-    sf::FloatRect getCollisionBox() const;
+    [[nodiscard]] sf::FloatRect getCollisionBox() const;
     // The box relative to the object's position (its origin point), in unscaled pixels.
     void setCollisionBox(float left, float top, float width, float height);
     void setCollisionBox(const sf::FloatRect& box);
     // Go back to "the box is the whole shape".
     void clearCollisionBox();
     // The local box: the one set, or the whole shape measured from the origin point.
-    sf::FloatRect getLocalCollisionBox() const;
+    [[nodiscard]] sf::FloatRect getLocalCollisionBox() const;
 
     // The bounding circle in world coordinates. Default: the circle inscribed in the
     // collision box (centre of the box, radius half its shorter side, after scaling; a
     // circle set with setBoundingCircle scales by the smaller of the two scales).
-    hitbox::Circle getBoundingCircle() const;
+    [[nodiscard]] hitbox::Circle getBoundingCircle() const;
     // A circle measured from the object's position (its origin point), like the box.
     void setBoundingCircle(sf::Vector2f centerFromOrigin, float radius);
     // Go back to the default circle (inscribed in the collision box).

@@ -110,7 +110,7 @@ public:
     // contact events, and returns how many pairs collided. Responses that move objects do
     // not change which pairs this call found (the boxes were read first), but later exact
     // tests see the move. One call is one step of the events.
-    std::size_t checkCollisions();
+    std::size_t checkCollisions(); // an action (one step of events): its count may be ignored
 
     // The pairs that collided in the last checkCollisions() (a pointer becomes nullptr when
     // its object is destroyed).
@@ -182,8 +182,8 @@ private:
         Body body;
     };
 
-    Contact exactContact(const Entry& first, const Entry& second) const;
-    bool takesPart(std::uint32_t index) const;
+    [[nodiscard]] Contact exactContact(const Entry& first, const Entry& second) const;
+    [[nodiscard]] bool takesPart(std::uint32_t index) const;
     void respond(std::uint32_t first, std::uint32_t second);
     void tell(const ContactRecord& record, ContactPhase phase);
     void separate(std::uint32_t first, std::uint32_t second);

@@ -25,8 +25,8 @@ namespace hitbox::platform
 // Sets (or with unsetEnvironmentVariable removes) a variable of this process and the programs
 // it starts; for tests and tools. False for an empty name, a name with '=', or a refusal.
 // On Windows the C runtime's own copy (getenv) is not updated: read with environmentVariable.
-bool setEnvironmentVariable(const std::string& name, const std::string& value);
-bool unsetEnvironmentVariable(const std::string& name);
+[[nodiscard]] bool setEnvironmentVariable(const std::string& name, const std::string& value);
+[[nodiscard]] bool unsetEnvironmentVariable(const std::string& name);
 
 // `when` in the computer's time zone, as std::localtime gives it, without its shared buffer.
 [[nodiscard]] std::tm localTime(std::time_t when);
@@ -45,10 +45,10 @@ bool unsetEnvironmentVariable(const std::string& name);
 
 // For tests of what a program does on a device and on a full disk.
 // Makes a named pipe at `path`: false where there are none (Windows) or when it fails.
-bool makeNamedPipe(const std::string& path);
+[[nodiscard]] bool makeNamedPipe(const std::string& path);
 // Runs `work` with every file this process writes limited to `bytes` (writes past it fail
 // instead of stopping the process): false, and `work` not run, where there is no such limit.
-bool runWithFileSizeLimit(std::uintmax_t bytes, const std::function<void()>& work);
+[[nodiscard]] bool runWithFileSizeLimit(std::uintmax_t bytes, const std::function<void()>& work);
 
 // Seconds of CPU time the calling thread has used so far; only differences mean anything: the
 // clock that says what a piece of work costs whatever else the machine runs (wall-clock time

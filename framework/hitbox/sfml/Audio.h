@@ -11,7 +11,7 @@ namespace hitbox
 
 // Fills `buffer` with 16-bit mono `samples` played at `sampleRate` per second; false when
 // SFML refuses them (e.g. no samples). SFML 3 also needs the channel layout (mono).
-bool loadMonoSamples(sf::SoundBuffer& buffer, const std::vector<std::int16_t>& samples,
-                     unsigned sampleRate);
+[[nodiscard]] bool loadMonoSamples(sf::SoundBuffer& buffer,
+                                   const std::vector<std::int16_t>& samples, unsigned sampleRate);
 
 } // namespace hitbox

@@ -13,26 +13,26 @@
 namespace hitbox
 {
 
-inline Vec2 toVec2(sf::Vector2f vector)
+[[nodiscard]] inline Vec2 toVec2(sf::Vector2f vector)
 {
     return {vector.x, vector.y};
 }
 // Whole-number vectors (mouse positions, window sizes) as pixels.
-inline Vec2 toVec2(sf::Vector2i vector)
+[[nodiscard]] inline Vec2 toVec2(sf::Vector2i vector)
 {
     return {static_cast<float>(vector.x), static_cast<float>(vector.y)};
 }
-inline Vec2 toVec2(sf::Vector2u vector)
+[[nodiscard]] inline Vec2 toVec2(sf::Vector2u vector)
 {
     return {static_cast<float>(vector.x), static_cast<float>(vector.y)};
 }
 
-inline sf::Vector2f toSfml(Vec2 vector)
+[[nodiscard]] inline sf::Vector2f toSfml(Vec2 vector)
 {
     return {vector.x, vector.y};
 }
 
-inline Box toBox(const sf::FloatRect& rect)
+[[nodiscard]] inline Box toBox(const sf::FloatRect& rect)
 {
 #if SFML_VERSION_MAJOR >= 3
     return {rect.position.x, rect.position.y, rect.size.x, rect.size.y};
@@ -41,7 +41,7 @@ inline Box toBox(const sf::FloatRect& rect)
 #endif
 }
 
-inline sf::FloatRect toSfml(const Box& box)
+[[nodiscard]] inline sf::FloatRect toSfml(const Box& box)
 {
     return sf::FloatRect({box.left, box.top}, {box.width, box.height});
 }

@@ -39,6 +39,6 @@ struct WindowEvent
 };
 
 // Takes the next waiting event of `window` into `event`; false when none is waiting.
-bool pollEvent(sf::Window& window, WindowEvent& event);
+[[nodiscard]] bool pollEvent(sf::Window& window, WindowEvent& event);
 
 } // namespace hitbox

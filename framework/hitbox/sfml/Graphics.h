@@ -25,34 +25,35 @@ namespace hitbox
 
 // A text to draw. SFML 3's sf::Text needs its font when it is made, SFML 2's takes
 // (string, font, size) in another order.
-sf::Text makeText(const sf::Font& font, const sf::String& string, unsigned characterSize);
+[[nodiscard]] sf::Text makeText(const sf::Font& font, const sf::String& string,
+                                unsigned characterSize);
 
 // Loads a font file; false when it cannot (SFML 2: loadFromFile, SFML 3: openFromFile).
-bool openFont(sf::Font& font, const std::string& path);
+[[nodiscard]] bool openFont(sf::Font& font, const std::string& path);
 
 // A window mode of `width` x `height` pixels.
-sf::VideoMode videoMode(unsigned width, unsigned height);
+[[nodiscard]] sf::VideoMode videoMode(unsigned width, unsigned height);
 
 // A window mode's size in pixels (SFML 3: mode.size, SFML 2: mode.width and mode.height).
-sf::Vector2u videoModeSize(const sf::VideoMode& mode);
+[[nodiscard]] sf::Vector2u videoModeSize(const sf::VideoMode& mode);
 
 // Makes `canvas` `width` x `height` pixels; false when the graphics driver cannot.
-bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height);
+[[nodiscard]] bool makeCanvas(sf::RenderTexture& canvas, unsigned width, unsigned height);
 
 // A `width` x `height` image from its pixels: red, green, blue and alpha bytes, row by row.
-sf::Image makeImage(unsigned width, unsigned height, const std::uint8_t* pixels);
+[[nodiscard]] sf::Image makeImage(unsigned width, unsigned height, const std::uint8_t* pixels);
 
 // What `window` shows now, as an image (for screenshots).
-sf::Image captureWindow(const sf::RenderWindow& window);
+[[nodiscard]] sf::Image captureWindow(const sf::RenderWindow& window);
 
 // Rotation in degrees, clockwise (SFML 3 uses sf::Angle, SFML 2 a float in degrees).
 void setRotationDegrees(sf::Transformable& shape, float degrees);
-float getRotationDegrees(const sf::Transformable& shape);
+[[nodiscard]] float getRotationDegrees(const sf::Transformable& shape);
 
 // A rectangle's corner and size (SFML 3: position/size, SFML 2: left/top/width/height).
-sf::Vector2f rectPosition(const sf::FloatRect& rect);
-sf::Vector2f rectSize(const sf::FloatRect& rect);
-sf::Vector2i rectPosition(const sf::IntRect& rect);
-sf::Vector2i rectSize(const sf::IntRect& rect);
+[[nodiscard]] sf::Vector2f rectPosition(const sf::FloatRect& rect);
+[[nodiscard]] sf::Vector2f rectSize(const sf::FloatRect& rect);
+[[nodiscard]] sf::Vector2i rectPosition(const sf::IntRect& rect);
+[[nodiscard]] sf::Vector2i rectSize(const sf::IntRect& rect);
 
 } // namespace hitbox

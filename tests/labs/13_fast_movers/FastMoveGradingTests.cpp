@@ -3,6 +3,9 @@
 // from 600 to 10 million pixels per second, one fixed step (1/120 s) at a time; every
 // flight ends within a few steps, so no test loops long.
 #include "FastMove.h"
+#include "RangeLevel.h"
+
+#include "hitbox/debug/DebugRenderer.h"
 
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Shapes.h"
@@ -182,4 +185,28 @@ TEST(Task2SpeculativeContact, TheEdgesOfTheRule)
     const MoveResult past = speculativeStep(above, 6000.f, dt, wall);
     EXPECT_FALSE(past.hitWall) << "touching the wall's top edge is not level with it";
     EXPECT_NEAR(past.bullet.left, above.left + 50.f, 1e-3f);
+}
+
+// The level's own rules (no task): given code, so they pass on the starter too.
+TEST(Level, ShotsSpeedUpToTheStatedTopSpeedAndStayThere)
+{
+    // Before: after 1e6 px/s the speed silently went back to 600 px/s.
+    float speed = RangeLevel::firstSpeed;
+    for (int shot = 0; shot < 100; ++shot)
+    {
+        const float next = RangeLevel::nextShotSpeed(speed);
+        EXPECT_GE(next, speed) << "shot " << shot;
+        EXPECT_LE(next, RangeLevel::topSpeed) << "shot " << shot;
+        speed = next;
+    }
+    EXPECT_EQ(speed, RangeLevel::topSpeed);
+}
+
+TEST(DebugView, ShowsEachLanesBulletAndNextMove)
+{
+    // Before: the help line offered F1 but the lab drew nothing with it.
+    RangeLevel level;
+    hitbox::DebugRenderer debug;
+    level.renderDebug(debug);
+    EXPECT_GT(debug.getVertices().getVertexCount(), 100u);
 }

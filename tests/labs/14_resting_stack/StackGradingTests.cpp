@@ -2,6 +2,9 @@
 // README.md lists them. Task 2's tests resolve with their own pushApart (referencePush), so a
 // mistake in task 1 never costs task 2. Every run is a bounded number of fixed steps.
 #include "Stack.h"
+#include "StackLevel.h"
+
+#include "hitbox/debug/DebugRenderer.h"
 
 #include <gtest/gtest.h>
 
@@ -168,4 +171,58 @@ TEST(Task2PassAfterPass, StopsAsSoonAsNothingOverlaps)
     sunk[0].top += 3.f;
     EXPECT_EQ(resolvePenetrations(sunk, floorY, 8, referencePush), 1);
     EXPECT_FLOAT_EQ(sunk[0].top + sunk[0].size, floorY);
+}
+
+// The debug view's states (the level's own code, no task: it uses only given functions and
+// the reference response, so it passes on the starter too). Before: a right answer resting
+// 0.9 px deep was drawn all overlapping (vermillion).
+namespace
+{
+// The lab's stack after `seconds` of the given steps with `passes` reference passes a step.
+std::vector<Crate> settledStack(int passes, float seconds)
+{
+    std::vector<Crate> crates = stackOf(StackLevel::crateCount, StackLevel::crateSize);
+    for (int step = 0; step < static_cast<int>(seconds / dt); ++step)
+    {
+        fall(crates, dt);
+        for (int pass = 0; pass < passes; ++pass)
+            referencePush(crates, findContacts(crates, floorY));
+    }
+    return crates;
+}
+
+int countOf(const std::vector<hitbox::DebugState>& states, hitbox::DebugState state)
+{
+    return static_cast<int>(std::count(states.begin(), states.end(), state));
+}
+} // namespace
+
+TEST(DebugView, ARestingStackIsDrawnRestingNotOverlapping)
+{
+    const std::vector<Crate> resting = settledStack(StackLevel::startPasses, 3.f);
+    ASSERT_GT(deepestOverlap(resting, floorY), 0.f); // it does rest a little deep...
+    ASSERT_LE(deepestOverlap(resting, floorY), StackLevel::restingSlop); // ...within the slop
+    const std::vector<hitbox::DebugState> states = crateStates(resting, floorY);
+    EXPECT_EQ(countOf(states, hitbox::DebugState::Touching), StackLevel::crateCount);
+}
+
+TEST(DebugView, TheOnePassStackIsDrawnOverlapping)
+{
+    const std::vector<Crate> sunk = settledStack(1, 3.f);
+    EXPECT_GT(countOf(crateStates(sunk, floorY), hitbox::DebugState::Overlapping), 0);
+}
+
+TEST(DebugView, TheSlopIsTheEdgeBetweenRestingAndOverlapping)
+{
+    const float size = StackLevel::crateSize;
+    const auto stateOfTopCrate = [size](float depth)
+    {
+        const std::vector<Crate> two = {{100.f, floorY - size, size, 0.f},
+                                        {100.f, floorY - 2.f * size + depth, size, 0.f}};
+        return crateStates(two, floorY)[1];
+    };
+    EXPECT_EQ(stateOfTopCrate(0.f), hitbox::DebugState::Touching); // exactly on it
+    EXPECT_EQ(stateOfTopCrate(StackLevel::restingSlop), hitbox::DebugState::Touching);
+    EXPECT_EQ(stateOfTopCrate(2.f * StackLevel::restingSlop), hitbox::DebugState::Overlapping);
+    EXPECT_EQ(stateOfTopCrate(-5.f), hitbox::DebugState::Free); // 5 px above it
 }

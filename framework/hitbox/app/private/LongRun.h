@@ -23,10 +23,10 @@ constexpr int stoppedExitCode = 130;
 // (P %), about T left; Ctrl-C stops" on stderr every progressSeconds, nothing for a run
 // shorter than that. Returns false when Ctrl-C stopped it; it has then printed the one line
 // "TITLE: stopped by Ctrl-C after N of M steps; nothing more is printed or saved".
-bool simulateReporting(Level& level, long long frames, const std::string& title);
+[[nodiscard]] bool simulateReporting(Level& level, long long frames, const std::string& title);
 
 // One progress line as simulateReporting prints it (without the newline).
-std::string progressLine(const std::string& title, long long done, long long total,
-                         double elapsedSeconds);
+[[nodiscard]] std::string progressLine(const std::string& title, long long done, long long total,
+                                       double elapsedSeconds);
 
 } // namespace hitbox

@@ -18,10 +18,10 @@ struct RewindTools
 };
 
 // Opens a letterboxed, resizable window and runs `level` in it until it is closed.
-int runWindow(Level& level, const Options& options, const ProgramInfo& info,
-              RewindTools tools = {});
+[[nodiscard]] int runWindow(Level& level, const Options& options, const ProgramInfo& info,
+                            RewindTools tools = {});
 
 // Simulates options.frames steps (default 0), draws one frame into options.screenshotPath.
-int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info);
+[[nodiscard]] int saveScreenshot(Level& level, const Options& options, const ProgramInfo& info);
 
 } // namespace hitbox
