@@ -2,6 +2,7 @@
 
 #include "hitbox/app/App.h"
 #include "hitbox/debug/DebugRenderer.h"
+#include "hitbox/geometry/Overlap.h"
 #include "hitbox/sfml/Graphics.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
