@@ -74,7 +74,7 @@ def prepare(build_dir, labs, jobs):
             lab.tests = lab.visible_tests()
         else:
             listing = subprocess.run([str(program), "--gtest_list_tests"], check=True, text=True,
-                                     capture_output=True, env=engine.test_environment(), timeout=60).stdout
+                                     capture_output=True, env=engine.test_environment(), timeout=limits.LIST_SECONDS).stdout
             lab.tests = engine.list_tests(listing)
         lab.tasks_for_grading = lab.tasks()
         lab.hidden = lab.hidden_tests()

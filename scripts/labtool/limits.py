@@ -21,6 +21,8 @@ COMPILE_MEMORY = 2 * 1024 * 1024 * 1024
 COMPILE_FILE_BYTES = 256 * 1024 * 1024
 # Linking one lab's test program.
 LINK_SECONDS = 60
+# Listing the tests of the instructor's own test program (no student code runs then).
+LIST_SECONDS = 60
 # Everything of one submission together (every lab): when it is used up, what is left is
 # reported "not run: the submission used up its N s".
 SUBMISSION_SECONDS = 300
