@@ -10,6 +10,7 @@
 #include "Stack.h"
 
 #include "hitbox/app/Level.h"
+#include "hitbox/app/Loop.h"
 #include "hitbox/debug/DebugRenderer.h"
 
 #include <string>
@@ -23,13 +24,13 @@ std::vector<hitbox::DebugState> crateStates(const std::vector<Crate>& crates, fl
 class StackLevel : public hitbox::Level
 {
 public:
-    static constexpr int crateCount = 10;       // crates in each stack
-    static constexpr float crateSize = 50.f;    // pixels
-    static constexpr float floorY = 640.f;      // the floor line, pixels from the top
-    static constexpr int shakyPasses = 1;       // the left stack's passes a step
-    static constexpr int startPasses = 8;       // the right stack's, at the start
-    static constexpr int maxPasses = 30;        // Up stops here
-    static constexpr int stepsPerReadout = 120; // the readout's window: one second
+    static constexpr int crateCount = 10;    // crates in each stack
+    static constexpr float crateSize = 50.f; // pixels
+    static constexpr float floorY = 640.f;   // the floor line, pixels from the top
+    static constexpr int shakyPasses = 1;    // the left stack's passes a step
+    static constexpr int startPasses = 8;    // the right stack's, at the start
+    static constexpr int maxPasses = 30;     // Up stops here
+    static constexpr int stepsPerReadout = static_cast<int>(hitbox::stepsPerSecond); // one second
     // The debug view's slop, pixels: a crate reaching at most this far into what holds it up
     // is drawn resting (the "touching" style), not overlapping. Every step gravity pulls a
     // resting crate in a little and the passes take nearly all of it out again, so a right

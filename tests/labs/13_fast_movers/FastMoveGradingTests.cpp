@@ -5,6 +5,7 @@
 #include "FastMove.h"
 #include "RangeLevel.h"
 
+#include "hitbox/app/Loop.h"
 #include "hitbox/debug/DebugRenderer.h"
 
 #include "hitbox/geometry/Overlap.h"
@@ -17,7 +18,7 @@
 
 namespace
 {
-constexpr float dt = 1.f / 120.f;
+constexpr float dt = hitbox::stepSeconds; // the programs' fixed step (Loop.h)
 constexpr float maxSubStep = 8.f;       // less than wall (6) + bullet (8): no sub-step can jump it
 const Box wall{500.f, 0.f, 6.f, 100.f}; // right side 506, bottom 100
 

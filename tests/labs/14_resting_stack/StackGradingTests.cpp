@@ -4,6 +4,7 @@
 #include "Stack.h"
 #include "StackLevel.h"
 
+#include "hitbox/app/Loop.h"
 #include "hitbox/debug/DebugRenderer.h"
 
 #include <gtest/gtest.h>
@@ -14,7 +15,7 @@
 
 namespace
 {
-constexpr float dt = 1.f / 120.f;
+constexpr float dt = hitbox::stepSeconds; // the programs' fixed step (Loop.h)
 constexpr float floorY = 600.f;
 
 // A stack of `count` crates of side `size`, each exactly on the one below, at rest.
