@@ -289,7 +289,9 @@ TEST(Task2CollectCoins, InTheProgramsSceneEveryCoinThatLeavesScoresOnce)
             << level.getScore() - scoreBefore << " while " << coinsLeft << " coin(s) left"
             << scene.replayCommand();
     }
-    EXPECT_GT(level.getScore(), 0) << "the scripted keys should have collected some coins";
+    // No "some coins were collected" check here: whether the player meets coins at all is task
+    // 1's layers and task 3's rule, and a mistake there must cost only its own task. The
+    // tests above show that collecting works; this one checks the count in the real scene.
 }
 
 TEST(Task2CollectCoins, CoinOnlyTouchingThePlayerStays)
