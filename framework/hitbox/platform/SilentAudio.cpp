@@ -7,6 +7,7 @@
 
 namespace hitbox::platform
 {
+#if defined(__linux__) // the check reads Linux's devices and sound-server sockets
 namespace
 {
 
@@ -30,6 +31,7 @@ bool soundDeviceFound()
 }
 
 } // namespace
+#endif
 
 std::optional<std::string> silenceAudioWithoutDevice()
 {
