@@ -10,8 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
+#include <ios>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,15 +29,16 @@ PongSettings twoPlayers()
     return settings;
 }
 
-// Every float that makes up the match's state, as raw bits: equal means bit-exact.
+// Every float that makes up the match's state, written exactly (hexadecimal floating point
+// keeps every bit of a finite float, and tells -0 from 0): equal means bit-exact.
 std::string stateBits(const PongLevel& pong)
 {
     std::string bits;
     auto add = [&bits](float value)
     {
-        char raw[sizeof(float)];
-        std::memcpy(raw, &value, sizeof(float));
-        bits.append(raw, sizeof(float));
+        std::ostringstream exact;
+        exact << std::hexfloat << value << ' ';
+        bits += exact.str();
     };
     for (const GameObject* object : {static_cast<const GameObject*>(&pong.getBall()),
                                      static_cast<const GameObject*>(&pong.getPaddle(Side::Left)),
