@@ -103,7 +103,10 @@ def run_limited(command, output_path, seconds, cwd=None, env=None, memory=0, fil
 
 def why_stopped(outcome, seconds, output_cap, what="the test"):
     """One line saying what a limit did, or "" when none stopped it."""
-    if outcome.timed_out:
+    # A SIGKILL at or after the time limit is the limit's doing (the CPU limit's hard stop, or
+    # the group killed as the wait gave up), not a crash: the same hang reads the same way.
+    killed_late = outcome.status < 0 and outcome.signal_name() == "SIGKILL" and outcome.seconds >= seconds
+    if outcome.timed_out or killed_late:
         return f"{what} took longer than {seconds:g} s (an endless loop?)"
     if outcome.status < 0:
         name = outcome.signal_name()

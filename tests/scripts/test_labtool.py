@@ -18,6 +18,22 @@ from labtool import selfcheck  # noqa: E402
 HAVE_TOOLS = all(shutil.which(tool) for tool in ("c++", *selfcheck.BINUTILS))
 
 
+class TimeLimitReason(unittest.TestCase):
+    """A hang reads the same way however the limit stopped it (the class grades' reason column
+    must not change between two runs of the same submissions)."""
+
+    def test_a_kill_at_the_time_limit_is_a_time_out_not_a_crash(self):
+        from labtool import procs
+        hang = procs.Outcome(status=-9, seconds=5.3, timed_out=False, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(hang, 5, 1_000_000),
+                         "the test took longer than 5 s (an endless loop?)")
+
+    def test_a_kill_before_the_limit_is_still_a_crash(self):
+        from labtool import procs
+        early = procs.Outcome(status=-9, seconds=0.4, timed_out=False, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(early, 5, 1_000_000), "crashed: SIGKILL")
+
+
 class FakeLab:
     """What object_check reads of a lab: its name, folder and the files a student edits."""
 
