@@ -116,13 +116,14 @@ def compile_caged(arguments, lab, lab_copy, output, cwd, log, caged, what, tests
     # deep in every submission's scratch: ccache then finds what another submission (or an
     # earlier run) compiled from the same text (an untouched starter file, the same headers).
     scratch_root = Path(lab_copy).parents[len(Path(lab.folder).parts) + 2]
-    outcome = procs.run_limited(command, out, limits.COMPILE_SECONDS, cwd=cwd,
+    outcome = procs.run_limited(command, out, limits.COMPILE_WALL_SECONDS, cwd=cwd,
                                 env=dict(os.environ, CCACHE_NOHASHDIR="1", CCACHE_BASEDIR=str(scratch_root)))
     log.append(outcome.output)
     out.unlink(missing_ok=True)
     if caged and outcome.status > 128:
         outcome.status = 128 - outcome.status  # the cage reports a signal as 128 + n
-    stopped = procs.why_stopped(outcome, limits.COMPILE_SECONDS, limits.COMPILE_FILE_BYTES, what=f"compiling {what}")
+    stopped = procs.why_stopped(outcome, limits.COMPILE_SECONDS, limits.COMPILE_FILE_BYTES, what=f"compiling {what}",
+                                wall_seconds=limits.COMPILE_WALL_SECONDS)
     if stopped:
         return stopped.replace("(an endless loop?)", "").strip()
     if outcome.status != 0:

@@ -15,8 +15,13 @@ OUTPUT_BYTES = 1_000_000
 SCRATCH_BYTES = 64 * 1024 * 1024
 # Processes and threads one test may have at once (a fork storm stops here).
 TEST_PROCESSES = 64
-# One compiler run: wall-clock seconds, address space, and the largest file it may write.
+# One compiler run: CPU seconds, address space, and the largest file it may write.
 COMPILE_SECONDS = 60
+# ...and its wall-clock guard. A compiler waits for nothing, so its CPU time decides: a
+# machine busy grading a whole class must not turn a slow compile (a template bomb that
+# g++ gives up on after 44 s of CPU) into "took too long" on one run and "did not build" on
+# the next. The guard only catches what CPU time cannot see.
+COMPILE_WALL_SECONDS = 3 * COMPILE_SECONDS
 COMPILE_MEMORY = 2 * 1024 * 1024 * 1024
 COMPILE_FILE_BYTES = 256 * 1024 * 1024
 # Linking one lab's test program.

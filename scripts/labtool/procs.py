@@ -101,13 +101,19 @@ def run_limited(command, output_path, seconds, cwd=None, env=None, memory=0, fil
     return Outcome(process.returncode, time.monotonic() - started, timed_out, text, size)
 
 
-def why_stopped(outcome, seconds, output_cap, what="the test"):
-    """One line saying what a limit did, or "" when none stopped it."""
+def why_stopped(outcome, seconds, output_cap, what="the test", wall_seconds=None):
+    """One line saying what a limit did, or "" when none stopped it. `seconds` is the CPU
+    limit; `wall_seconds` the wall-clock guard when it is longer (by default the same)."""
+    wall = wall_seconds or seconds
     # A SIGKILL at or after the time limit is the limit's doing (the CPU limit's hard stop, or
     # the group killed as the wait gave up), not a crash: the same hang reads the same way.
+    # (A process cannot use more CPU seconds than wall-clock seconds, so an earlier SIGKILL
+    # is not the CPU limit's.)
     killed_late = outcome.status < 0 and outcome.signal_name() == "SIGKILL" and outcome.seconds >= seconds
-    if outcome.timed_out or killed_late:
-        return f"{what} took longer than {seconds:g} s (an endless loop?)"
+    if outcome.timed_out or (killed_late and wall == seconds):
+        return f"{what} took longer than {wall:g} s (an endless loop?)"
+    if killed_late:
+        return f"{what} used more than {seconds:g} s of CPU time"
     if outcome.status < 0:
         name = outcome.signal_name()
         if name == "SIGXFSZ":

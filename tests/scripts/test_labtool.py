@@ -33,6 +33,23 @@ class TimeLimitReason(unittest.TestCase):
         early = procs.Outcome(status=-9, seconds=0.4, timed_out=False, output="", output_bytes=0)
         self.assertEqual(procs.why_stopped(early, 5, 1_000_000), "crashed: SIGKILL")
 
+    def test_a_compile_is_judged_by_its_cpu_time_not_by_how_busy_the_machine_is(self):
+        from labtool import limits, procs
+        cpu, wall = limits.COMPILE_SECONDS, limits.COMPILE_WALL_SECONDS
+        self.assertGreater(wall, cpu)
+        # Killed by the CPU limit after 70 s of wall-clock time on a busy machine.
+        cpu_killed = procs.Outcome(status=-9, seconds=cpu + 10, timed_out=False, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(cpu_killed, cpu, 1_000_000, what="compiling", wall_seconds=wall),
+                         f"compiling used more than {cpu:g} s of CPU time")
+        # Only the wall-clock guard stops a compiler that waits (it cannot be seen in CPU time).
+        waited = procs.Outcome(status=-9, seconds=wall, timed_out=True, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(waited, cpu, 1_000_000, what="compiling", wall_seconds=wall),
+                         f"compiling took longer than {wall:g} s (an endless loop?)")
+        # A kill before the CPU limit could be reached is not the limit's.
+        early = procs.Outcome(status=-9, seconds=cpu - 1, timed_out=False, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(early, cpu, 1_000_000, what="compiling", wall_seconds=wall),
+                         "crashed: SIGKILL")
+
 
 class FakeLab:
     """What object_check reads of a lab: its name, folder and the files a student edits."""
