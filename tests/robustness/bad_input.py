@@ -40,8 +40,9 @@ def find_program(build, name):
 
 def command_line_rows(p):
     """(exit code, the one line, command): the shared command line and each program's options."""
-    pong, lab06, lab08 = NO_DISPLAY + [p["pong"]], NO_DISPLAY + [p["lab06_rotated_boxes"]], \
-        NO_DISPLAY + [p["lab08_many_objects"]]
+    pong = NO_DISPLAY + [p["pong"]]
+    lab06 = NO_DISPLAY + [p["lab06_rotated_boxes"]]
+    lab08 = NO_DISPLAY + [p["lab08_many_objects"]]
     rows = [
         (2, "Pong: --frames needs a value", pong + ["--frames"]),
         (2, "Pong: --frames needs a whole number from 0 to 12000000000, not 'ten'", pong + ["--frames", "ten"]),
@@ -203,8 +204,10 @@ def screenshot_rows(sandbox, work):
 
 
 class Table:
-    def __init__(self, work):
-        self.work, self.rows, self.failures = work, 0, 0
+    """The rows run so far and how many failed."""
+
+    def __init__(self):
+        self.rows, self.failures = 0, 0
 
     def fail(self, message):
         self.failures += 1
@@ -326,7 +329,7 @@ def main():
     os.environ["ALSOFT_DRIVERS"] = "null"
     programs = {name: find_program(sys.argv[1], name) for name in PROGRAMS}
     work = tempfile.mkdtemp()
-    table = Table(work)
+    table = Table()
     try:
         for row in command_line_rows(programs):
             table.row(*row)
