@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check.sh [BUILD_DIR] - the slides' checks, for CI (and before a lecture).
 #
-# 1. tests/run.sh: the checks themselves are shown to catch each mistake they exist for
+# 1. tests/run.py: the checks themselves are shown to catch each mistake they exist for
 #    (a defect planted in a small deck or figure list must fail, a clean one pass).
 # 2. build.sh in strict mode (HTML only): fails when a code region named by a deck does not
 #    exist, lacks its key line or is not whole (starts or ends mid-statement, in or on a
@@ -20,7 +20,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 
-"$here/tests/run.sh"
+python3 "$here/tests/run.py"
 "$here/build.sh" "$@" --no-pdf
 node "$here/tools/check-decks.mjs" --decks "$here/build/decks" --dist "$here/dist" \
     --concepts "$here/concepts.txt" --src "$here/src" --figures "$here/figures" \

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # check-stills.sh NAME.apng... - each animation's still (NAME.png, the PDF's picture) shows
-# clean frames: it is one frame, or a strip of frames side by side or one above the other,
-# each under a label band, and every panel is exactly (pixel for pixel) one of the
-# animation's frames (two may be the same: a snag that stops the mover). A still made by laying frames over each other (an
-# onion skin: three "CAN TUNNEL" lines printed on top of each other) matches no frame and
-# fails, naming it. Needs ffmpeg and ffprobe. Exit 1 on a bad still, 2 on bad arguments.
+# clean frames: one frame, or a strip of frames side by side or one above the other, each
+# under a label band, every panel exactly (pixel for pixel) one of the animation's frames (two
+# may be the same: a snag that stops the mover). Frames laid over each other (an onion skin:
+# three "CAN TUNNEL" lines on top of each other) match no frame and fail, naming the panel.
+# Needs ffmpeg and ffprobe. Exit 1 on a bad still, 2 on bad arguments.
 set -euo pipefail
 [[ $# -lt 1 ]] && { echo "usage: $0 NAME.apng..." >&2; exit 2; }
 
@@ -17,11 +17,11 @@ md5s() {
 }
 
 problems=0
+bad() { echo "check-stills: $*" >&2; problems=$((problems + 1)); }
 for animation in "$@"; do
     still="${animation%.apng}.png"
     if [[ ! -s "$animation" || ! -s "$still" ]]; then
-        echo "check-stills: $animation: the animation or its still $still is missing" >&2
-        problems=$((problems + 1))
+        bad "$animation: the animation or its still $still is missing"
         continue
     fi
     read -r w h <<<"$(size "$animation")"
@@ -31,39 +31,30 @@ for animation in "$@"; do
     # (W = w; n = 3, 2 or 1). It passes when, in one of them, every panel is a frame.
     layouts=()
     if ((W % w == 0 && W / w > 1 && H >= h)); then
-        layout=""
-        for ((i = 0; i < W / w; i++)); do layout+="crop=$w:$h:$((i * w)):$((H - h)) "; done
+        layout="" && for ((i = 0; i < W / w; i++)); do layout+="crop=$w:$h:$((i * w)):$((H - h)) "; done
         layouts+=("$layout")
     elif ((W == w)); then
         for n in 3 2 1; do
             ((H % n == 0 && H / n >= h)) || continue
-            layout=""
-            for ((i = 0; i < n; i++)); do layout+="crop=$w:$h:0:$((i * H / n + H / n - h)) "; done
+            layout="" && for ((i = 0; i < n; i++)); do layout+="crop=$w:$h:0:$((i * H / n + H / n - h)) "; done
             layouts+=("$layout")
         done
     fi
     if [[ ${#layouts[@]} -eq 0 ]]; then
-        echo "check-stills: $still (${W}x$H) is not made of ${w}x$h frames of $animation" >&2
-        problems=$((problems + 1))
+        bad "$still (${W}x$H) is not made of ${w}x$h frames of $animation"
         continue
     fi
-    clean=false
-    for layout in "${layouts[@]}"; do
-        message=""
-        i=0
+    clean=false && for layout in "${layouts[@]}"; do
+        message="" i=0
         for panel in $layout; do
             i=$((i + 1))
-            sum="$(md5s "$still" "$panel")"
-            if ! grep -qx "$sum" <<<"$frames"; then
+            if ! grep -qx "$(md5s "$still" "$panel")" <<<"$frames"; then
                 message="panel $i is not one frame of $animation (frames laid over each other?)"
                 break
             fi
         done
         [[ -z "$message" ]] && clean=true && break
     done
-    if ! $clean; then
-        echo "check-stills: $still: $message" >&2
-        problems=$((problems + 1))
-    fi
+    $clean || bad "$still: $message"
 done
 [[ $problems -eq 0 ]] || exit 1

@@ -4,21 +4,16 @@
 # Usage: install-deps-test.sh SOURCE_DIR
 set -uo pipefail
 script="$1/scripts/install-deps.sh"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+work=$(mktemp -d) && trap 'rm -rf "$work"' EXIT
 failures=0
 fail() { failures=$((failures + 1)); echo "FAIL: $*" >&2; }
 
 mkdir "$work/bin"
 for tool in bash env grep mktemp tail cat; do ln -s "$(command -v "$tool")" "$work/bin/$tool"; done
-cat >"$work/bin/id" <<'STUB'
-#!/bin/bash
-echo 1000
-STUB
-cat >"$work/bin/dpkg-query" <<'STUB'
-#!/bin/bash
-exit 1
-STUB
+# stub NAME BODY: a stand-in command on PATH.
+stub() { printf '#!/bin/bash\n%s\n' "$2" >"$work/bin/$1" && chmod +x "$work/bin/$1"; }
+stub id 'echo 1000'
+stub dpkg-query 'exit 1'
 # apt-get: says what DEBIAN_FRONTEND it saw, then talks as much as dpkg does.
 cat >"$work/bin/apt-get" <<STUB
 #!/bin/bash
@@ -38,12 +33,7 @@ code=$?
     fail "no sudo: expected one line naming the command, got: $(cat "$work/err")"
 
 # 2. sudo refuses (not in the sudoers file).
-cat >"$work/bin/sudo" <<'STUB'
-#!/bin/bash
-echo "someone is not in the sudoers file." >&2
-exit 1
-STUB
-chmod +x "$work/bin/sudo"
+stub sudo 'echo "someone is not in the sudoers file." >&2; exit 1'
 run
 code=$?
 [[ $code -eq 1 ]] || fail "refused: exit $code, expected 1"
@@ -52,10 +42,7 @@ grep -q "^install-deps: sudo refused (someone is not in the sudoers file.). Ask 
 [[ $(wc -l <"$work/err") -eq 1 ]] || fail "refused: more than one line on stderr"
 
 # 3. sudo works: DEBIAN_FRONTEND reaches apt-get, a few lines are shown, the rest logged.
-cat >"$work/bin/sudo" <<'STUB'
-#!/bin/bash
-exec "$@"
-STUB
+stub sudo 'exec "$@"'
 run
 code=$?
 [[ $code -eq 0 ]] || fail "through sudo: exit $code: $(cat "$work/err")"

@@ -1,0 +1,304 @@
+#!/usr/bin/env python3
+"""slides/tests/run.py - shows that the slides' checks catch each mistake they exist for.
+
+Each case plants one defect in a small deck (or a figure list with stand-in programs), runs the
+same tools check.sh runs, and expects them to fail with the right message; the clean cases must
+pass. Needs node and clang-format only (no display, no build): seconds.
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+SLIDES = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REPO = os.path.dirname(SLIDES)
+
+# A small project: one source file with slide regions (and the repository's .clang-format).
+EXAMPLE_CPP = """// [slide:short]
+bool inside(float x, float left, float right)
+{
+    // Strict: a point on an edge is outside.
+    return left < x && x < right;
+}
+// [/slide]
+
+// [slide:long-string]
+int aVeryLongIdentifierThatIsLongerThanAnySlideCanShowInOneLineAtTwentyFourPixels = 0;
+// [/slide]
+
+// [slide:internal]
+// Game rules first (seed 002: no alien-alien collisions).
+bool allowed(int a, int b) { return a != b; }
+// [/slide]
+
+// [slide:function]
+int sumOf(const int* values, int count)
+{
+    int sum = 0;
+    for (int i = 0; i < count; ++i)
+    {
+        sum += values[i];
+    }
+    return sum;
+}
+// [/slide]
+
+// [slide:split]
+int total(int a, int b)
+{
+    const int sum =
+        a + b;
+    if (sum > 0)
+        return sum;
+    // A comment about the last line,
+    // in two lines.
+    return 0;
+}
+// [/slide]
+
+// [slide:tall]
+void tall()
+{
+""" + "".join(f"    int a{i} = {i};\n" for i in range(1, 16)) + """}
+// [/slide]
+"""
+
+
+def include(region, extra=""):
+    return f"<!-- include: src/Example.cpp#{region}{extra} -->"
+
+
+# (name, the message the tools must fail with or "" to pass, the slide's body, a figure no deck uses)
+DECK_CASES = [
+    ("clean-deck-passes", "", "# A test\n\n" + include("short")),
+    ("code-line-too-long-for-clang-format", "characters (at most 78 fit at 24px)",
+     "# Too wide\n\n" + include("long-string")),
+    ("hand-written-code-too-long", "characters (at most 78 fit at 24px)",
+     "# Too wide\n\n```cpp\nint aVeryLongFunctionName(int firstArgument, int secondArgument, int thirdArgumentHere);\n```"),
+    ("too-many-code-lines", "lines of code (at most 16 fit)", "# Too tall\n\n" + include("tall")),
+    ("excerpt-cut-mid-block", "unbalanced brackets", "# Cut short\n\n" + include("function", ' lines 1-6 key "sum +="')),
+    ("excerpt-cut-before-key-line", "does not contain its key line",
+     "# Cut before the point\n\n" + include("function", ' lines 1-3 key "return sum"')),
+    ("part-without-key-line", 'needs key "TEXT"', "# No key\n\n" + include("function", " lines 3-4")),
+    ("part-with-gap-passes", "", "# Parts\n\n" + include("function", ' lines 1-3,8-9 key "return sum"')),
+    # An excerpt is a whole thing: it starts and ends on a statement boundary.
+    ("excerpt-starts-mid-statement", "starts mid-statement at line 4",
+     "# Cut at the start\n\n" + include("split", ' lines 4-6 key "return sum"')),
+    ("excerpt-ends-mid-statement", "ends mid-statement at line 5",
+     "# Cut at the end\n\n" + include("split", ' lines 3-5 key "if (sum"')),
+    ("excerpt-ends-on-a-comment", "ends on a comment at line 7",
+     "# Cut after a comment\n\n" + include("split", ' lines 3-7 key "sum > 0"')),
+    ("excerpt-starts-inside-a-comment", "starts inside a comment at line 8",
+     "# Cut in a comment\n\n" + include("split", ' lines 8-9 key "return 0"')),
+    ("whole-statements-pass", "", "# Whole\n\n" + include("split", ' lines 3-6 key "return sum"')),
+    ("excerpt-repeats-lines", "repeats lines 5-6", "# Twice\n\n" + include("split", ' lines 3-6 key "return sum"')
+     + "\n\n" + include("split", ' lines 5-6,9-9 key "return 0"')),
+    ("caption-names-code-not-shown", "name \"hit.time\", which the slide's code does not contain",
+     "# Promise\n\n" + include("short") + "\n\nThe time of impact is `hit.time`."),
+    ("figure-used-by-no-deck", "figures/orphan.svg: used by no deck", "# No figure\n\n- text", "orphan.svg"),
+    ("seed-in-code", "words for insiders", "# Rules\n\n" + include("internal")),
+    ("seed-in-text", "words for insiders", "# Layers\n\n- As seed 004 says, time order matters"),
+    ("old-course-code", "words for insiders", "# Radius\n\n- Old course code: radius = width / 2"),
+    ("last-years", "words for insiders", "# Fixing last year's mistake\n\n- The edge rule"),
+    ("insider-words-in-notes-allowed", "",
+     "# Fine\n\n- The edge rule\n\n<!-- From seed 002; last year's slides had it wrong. -->"),
+]
+
+# Stand-in programs for the figure cases: each writes a "PNG" made of its arguments.
+STAND_INS = {
+    "steady": """#!/usr/bin/env bash
+# Draws its arguments: the same picture for the same arguments.
+out=""; args=()
+while [[ $# -gt 0 ]]; do
+    if [[ "$1" == --screenshot ]]; then out="$2"; shift 2; else args+=("$1"); shift; fi
+done
+printf '%s\\n' "${args[@]}" >"$out"
+""",
+    "clock": """#!/usr/bin/env bash
+# Draws a timing, as a debug build's readout does: different on every run.
+while [[ $# -gt 0 ]]; do [[ "$1" == --screenshot ]] && out="$2"; shift; done
+echo "collision: $(date +%N) ms" >"$out"
+""",
+    "deaf": """#!/usr/bin/env bash
+# Ignores every option: a "debug view" that looks the same as the plain one.
+while [[ $# -gt 0 ]]; do [[ "$1" == --screenshot ]] && out="$2"; shift; done
+echo "the same picture" >"$out"
+""",
+    "painter": """#!/usr/bin/env bash
+# Paints a real PNG whose colour follows --frames: an animation's frames differ.
+frames=0
+while [[ $# -gt 0 ]]; do
+    case "$1" in --screenshot) out="$2"; shift ;; --frames) frames="$2"; shift ;; esac
+    shift
+done
+ffmpeg -nostdin -loglevel error -y -f lavfi -i "color=c=0x$(printf '%02x' $((frames % 256)))4080:s=16x16" \\
+    -frames:v 1 "$out"
+""",
+}
+
+# (name, the message make-figures must fail with or "" to pass, the line of figures.txt)
+FIGURE_CASES = [
+    ("figure-clean-passes", "", "shot.png programs/steady --frames 2 | --debug"),
+    ("figure-with-timing", "two runs drew different pictures", "shot.png programs/clock --frames 2"),
+    ("figure-claim-not-drawn", "claims '--debug' but looks the same without it",
+     "shot.png programs/deaf --frames 2 | --debug"),
+    ("figure-program-missing", "program programs/nothing not found", "shot.png programs/nothing --frames 2"),
+    ("animation-without-frames", "an animation needs frames=FIRST:LAST:STEP", "moving.apng programs/painter --debug"),
+]
+ANIMATION_CASE = ("animation-clean-passes", "", "moving.apng programs/painter frames=10:50:20")
+FFMPEG = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
+
+
+class Results:
+    def __init__(self):
+        self.passed, self.failed = 0, 0
+
+    def report(self, name, ok, why=""):
+        if ok:
+            self.passed += 1
+            print("ok   " + name, flush=True)
+        else:
+            self.failed += 1
+            print(f"FAIL {name}: {why}", file=sys.stderr, flush=True)
+
+    def expect(self, name, expected, status, output):
+        """A case passes when it expected no failure and saw none, or saw the EXPECTED message."""
+        if not expected:
+            self.report(name, status == 0, "expected to pass, got: " + output)
+        else:
+            self.report(name, status != 0 and expected in output,
+                        f'expected a failure with "{expected}", got (exit {status}): {output}')
+
+
+def run(command, **options):
+    """COMMAND's exit status and its stdout and stderr together, trailing newlines dropped."""
+    done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          errors="replace", **options)
+    return done.returncode, done.stdout.rstrip("\n")
+
+
+def write(path, text, mode=None):
+    with open(path, "w", encoding="utf-8") as out:
+        out.write(text)
+    if mode is not None:
+        os.chmod(path, mode)
+
+
+def deck_case(results, work, root, name, expected, body, unused_figure=None):
+    """One deck with a title slide and BODY, through include-regions and check-decks."""
+    folder = os.path.join(work, name)
+    for sub in ("src", "decks", "dist", "figures"):
+        os.makedirs(os.path.join(folder, sub))
+    if unused_figure:
+        write(os.path.join(folder, "figures", unused_figure), '<svg xmlns="http://www.w3.org/2000/svg"/>\n')
+    write(os.path.join(folder, "src", "01-test.md"), '---\nmarp: true\ntitle: "Test"\n---\n\n# Test\n\n'
+          f"<!-- notes -->\n\n---\n\n{body}\n\n<!--\nNotes.\n-->\n")
+    write(os.path.join(folder, "dist", "01-test.html"), "<html></html>\n")
+    status, output = run(["node", os.path.join(SLIDES, "tools", "include-regions.mjs"), "--root", root,
+                          "--src", folder + "/src", "--out", folder + "/decks"])
+    if status == 0:
+        status, checked = run(["node", os.path.join(SLIDES, "tools", "check-decks.mjs"), "--decks", folder + "/decks",
+                               "--dist", folder + "/dist", "--concepts", work + "/concepts.txt",
+                               "--src", folder + "/src", "--figures", folder + "/figures"])
+        output = "\n".join(part for part in (output, checked) if part)
+    results.expect(name, expected, status, output)
+
+
+def figure_case(results, work, name, expected, line):
+    write(os.path.join(work, name + ".txt"), line + "\n")
+    environment = dict(os.environ, DISPLAY=os.environ.get("DISPLAY") or ":none")
+    status, output = run([sys.executable, os.path.join(SLIDES, "make-figures.py"), work, "--list",
+                          os.path.join(work, name + ".txt"), "--out", os.path.join(work, name + "-figures")],
+                         env=environment)
+    results.expect(name, expected, status, output)
+
+
+def still_cases(results, work):
+    """The still must be clean frames: one laid over the others (an onion skin) must fail."""
+    check_stills = os.path.join(SLIDES, "tools", "check-stills.sh")
+    moving = os.path.join(work, "animation-clean-passes-figures", "moving")
+    status = subprocess.run([check_stills, moving + ".apng"], capture_output=True).returncode
+    results.report("animation-still-of-clean-frames", status == 0, f"exit {status}")
+    subprocess.run(FFMPEG + ["-i", moving + ".apng", "-vf", "tblend=all_mode=average", "-frames:v", "1",
+                             "-update", "1", work + "/onion.png"], check=True)
+    subprocess.run(FFMPEG + ["-i", work + "/onion.png", "-vf", "pad=iw:ih+24:0:24:white", moving + ".png"], check=True)
+    status, output = run([check_stills, moving + ".apng"])
+    results.report("animation-still-overprinted", status == 1 and "is not one frame of" in output,
+                   f"expected a failure naming the panel, got (exit {status}): {output}")
+
+
+def marp_html(source, dist):
+    subprocess.run(["node_modules/.bin/marp", "--config-file", "marp.config.mjs", "--input-dir", source,
+                    "--output", dist, "--html"], cwd=SLIDES, capture_output=True, check=True)
+
+
+def label_svg(path, size):
+    svg = ET.Element("svg", xmlns="http://www.w3.org/2000/svg", viewBox="0 0 600 450")
+    ET.SubElement(svg, "rect", width="600", height="450", fill="white")
+    ET.SubElement(svg, "text", {"x": "20", "y": "200", "font-size": str(size)}).text = "a label"
+    ET.ElementTree(svg).write(path)
+
+
+def layout_cases(results, work):
+    """A slide whose content runs below its bottom edge, measured in Chromium; and a diagram
+    label under 24 px as shown: a 600-wide SVG drawn in 40% of the slide (512 px) with a 20 px
+    label is 17 px on the slide; the same SVG with a 30 px label is 25.6 px."""
+    check_layout = ["node", os.path.join(SLIDES, "tools", "check-layout.mjs"), "--dist"]
+    layout = os.path.join(work, "layout")
+    os.makedirs(layout + "/src")
+    os.makedirs(layout + "/dist")
+    bullets = "".join(f"- bullet number {i}\n" for i in range(1, 21))
+    write(layout + "/src/01-layout.md", "---\nmarp: true\ntheme: hitbox\n---\n\n# Fits\n\n- one line\n\n---\n\n"
+          "# Too long\n\n" + bullets)
+    marp_html(layout + "/src", layout + "/dist")
+    status, output = run(check_layout + [layout + "/dist"])
+    results.report("layout-content-below-the-slide",
+                   status != 0 and "01-layout.html slide 2:" in output and "slide 1:" not in output,
+                   f"expected slide 2 (only) to fail, got (exit {status}): {output}")
+    labels = os.path.join(work, "labels")
+    os.makedirs(labels + "/src")
+    os.makedirs(labels + "/dist/figures")
+    for size in (20, 30):
+        label_svg(f"{labels}/dist/figures/label-{size}.svg", size)
+    write(labels + "/src/01-labels.md", "---\nmarp: true\ntheme: hitbox\n---\n\n# Large\n\n"
+          "![bg right:40% fit](figures/label-30.svg)\n\n---\n\n# Small\n\n![bg right:40% fit](figures/label-20.svg)\n")
+    marp_html(labels + "/src", labels + "/dist")
+    status, output = run(check_layout + [labels + "/dist"])
+    small = output.find('01-labels.html slide 2: label "a label"')
+    results.report("diagram-label-under-24-px",
+                   status != 0 and small >= 0 and "17.1 px" in output[small:] and "slide 1:" not in output,
+                   f"expected slide 2 (only) to fail at 17.1 px, got (exit {status}): {output}")
+
+
+def main():
+    results = Results()
+    work = tempfile.mkdtemp()
+    try:
+        root = os.path.join(work, "project")
+        os.makedirs(root + "/src")
+        shutil.copy(os.path.join(REPO, ".clang-format"), root)
+        write(root + "/src/Example.cpp", EXAMPLE_CPP)
+        write(work + "/concepts.txt", "")
+        for case in DECK_CASES:
+            deck_case(results, work, root, *case)
+        os.makedirs(work + "/programs")
+        for name, source in STAND_INS.items():
+            write(os.path.join(work, "programs", name), source, 0o755)
+        for case in FIGURE_CASES:
+            figure_case(results, work, *case)
+        if shutil.which("ffmpeg"):
+            figure_case(results, work, *ANIMATION_CASE)
+            still_cases(results, work)
+        chrome = os.environ.get("CHROME_PATH") or "/usr/bin/chromium"
+        if os.access(os.path.join(SLIDES, "node_modules", ".bin", "marp"), os.X_OK) and os.access(chrome, os.X_OK):
+            layout_cases(results, work)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    print(f"slides tests: {results.passed} passed, {results.failed} failed")
+    return 0 if results.failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
