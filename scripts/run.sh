@@ -35,7 +35,7 @@ if [[ -z ${DISPLAY:-} && " $* " != *" --headless "* && " $* " != *" --screenshot
     picture="$build/$program-screenshot.png"
     echo "run.sh: no display here, so no window can open; drawing one frame (5 simulated seconds in) instead."
     # No display usually means no sound device either: the null driver keeps the audio quiet.
-    ALSOFT_DRIVERS=null xvfb-run -a "$binary" --frames 600 "$@" --screenshot "$picture" >/dev/null
+    ALSOFT_DRIVERS=null xvfb-run -a -n $((100 + RANDOM % 800)) "$binary" --frames 600 "$@" --screenshot "$picture" >/dev/null
     echo "run.sh: saved $(realpath "$picture") - open it to see the frame, or run with --headless."
     exit 0
 fi

@@ -325,7 +325,10 @@ def main():
         print("usage: bad_input.py BUILD_DIR", file=sys.stderr)
         return 2
     if not os.environ.get("DISPLAY") and not os.environ.get("HITBOX_BAD_INPUT_XVFB") and shutil.which("xvfb-run"):
-        os.execvp("xvfb-run", ["xvfb-run", "-a", "env", "HITBOX_BAD_INPUT_XVFB=1", sys.executable] + sys.argv)
+        # -n: start looking for a free display at a number of its own, not at 99: ctest runs
+        # other xvfb-run tests at the same moment, and two servers racing for one number
+        # leave one program with a display that vanishes under it.
+        os.execvp("xvfb-run", ["xvfb-run", "-a", "-n", str(100 + os.getpid() % 800), "env", "HITBOX_BAD_INPUT_XVFB=1", sys.executable] + sys.argv)
     os.environ["ALSOFT_DRIVERS"] = "null"
     programs = {name: find_program(sys.argv[1], name) for name in PROGRAMS}
     work = tempfile.mkdtemp()

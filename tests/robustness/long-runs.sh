@@ -6,7 +6,7 @@
 set -uo pipefail
 build=$1
 if [[ -z ${DISPLAY:-} && -z ${HITBOX_LONG_RUNS_XVFB:-} ]] && command -v xvfb-run >/dev/null; then
-    exec xvfb-run -a env HITBOX_LONG_RUNS_XVFB=1 bash "$0" "$@"
+    exec xvfb-run -a -n $((100 + RANDOM % 800)) env HITBOX_LONG_RUNS_XVFB=1 bash "$0" "$@" # -n: its own display number, not 99 (ctest runs tests at once)
 fi
 work=$(mktemp -d) && trap 'rm -rf "$work"' EXIT
 export ALSOFT_DRIVERS=null
