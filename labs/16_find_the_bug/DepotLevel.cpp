@@ -4,6 +4,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/debug/ExplainOverlay.h"
 #include "hitbox/geometry/Overlap.h"
+#include "hitbox/objects/ExplainPair.h"
 #include "hitbox/sfml/Conversions.h"
 
 #include <SFML/Graphics/RectangleShape.hpp>
@@ -167,9 +168,10 @@ void DepotLevel::render(sf::RenderTarget& target) const
     drawBox(target, {0.f, lowerBeltTop - 6.f, dropZoneBox.left + 20.f, crateSize + 12.f}, belt);
     drawBox(target, dropZoneBox, {86, 180, 233, 90}, {86, 180, 233});
     // The plate is bluish green while pressed, grey when not.
-    drawBox(target, plateBox, plate->isPressed() ? sf::Color{0, 158, 115} : sf::Color{120, 120, 120});
+    drawBox(target, plateBox,
+            plate->isPressed() ? sf::Color{0, 158, 115} : sf::Color{120, 120, 120});
     // The gate: a solid bar when closed, only its frame when open.
-    const sf::Color gate{240, 228, 66};
+    const sf::Color gate{225, 225, 235};
     drawBox(target, gatewayBox, gateOpen ? sf::Color::Transparent : gate, gate);
     for (const std::unique_ptr<Crate>& crate : crates)
         target.draw(*crate);
@@ -182,8 +184,17 @@ void DepotLevel::renderDebug(hitbox::DebugRenderer& debug) const
     for (const std::unique_ptr<Crate>& crate : crates)
         objects.push_back(crate.get());
     // The panel: why the pair under the mouse (else the last pair that met or parted) does or
-    // does not collide.
-    hitbox::explainInPanel(debug, world, hitbox::toVec2(mouse), objects);
+    // does not collide; the mouse on the gatekeeper explains it and the gateway.
+    if (hitbox::pointInBox(hitbox::toVec2(mouse), hitbox::toBox(guard->getCollisionBox())))
+    {
+        const hitbox::Explanation why = hitbox::explain(*guard, *gateway);
+        std::vector<std::string> lines{why.verdict};
+        for (const std::string& step : why.steps)
+            lines.push_back("  " + step);
+        debug.panel(lines);
+    }
+    else
+        hitbox::explainInPanel(debug, world, hitbox::toVec2(mouse), objects);
     for (const GameObject* object : objects)
     {
         const hitbox::Box box = hitbox::toBox(object->getCollisionBox());
@@ -205,17 +216,17 @@ void DepotLevel::renderDebug(hitbox::DebugRenderer& debug) const
 std::string DepotLevel::getHelpText() const
 {
     char text[160];
-    std::snprintf(text, sizeof text,
-                  "Arrows move the gatekeeper  R restart  |  delivered %d  gate %s  plate %s",
-                  delivered, gateOpen ? "open" : "closed", plate->isPressed() ? "pressed" : "up");
+    std::snprintf(text, sizeof text, "delivered %d, gate %s, plate %s", delivered,
+                  gateOpen ? "open" : "closed", plate->isPressed() ? "pressed" : "up");
     return text;
 }
 
 std::string DepotLevel::describeState() const
 {
     char text[160];
-    std::snprintf(text, sizeof text, "step %lld: delivered %d, %d crates on the belts, gate %s, plate %s",
-                  steps, delivered, getCrateCount(), gateOpen ? "open" : "closed",
+    std::snprintf(text, sizeof text,
+                  "step %lld: delivered %d, %d crates on the belts, gate %s, plate %s", steps,
+                  delivered, getCrateCount(), gateOpen ? "open" : "closed",
                   plate->isPressed() ? "pressed" : "up");
     return text;
 }

@@ -195,9 +195,8 @@ TEST(Task2TouchingIsNotInTheGateway, TouchingOnEachSideIsNotIn)
     {
         const GameObject thing = objectAt(side, "thing");
         ASSERT_THAT(thing, Touches(door));
-        EXPECT_FALSE(inGateway(gateway, side))
-            << "it only touches the gateway; explain says:\n"
-            << hitbox::toText(hitbox::explain(thing, door));
+        EXPECT_FALSE(inGateway(gateway, side)) << "it only touches the gateway; explain says:\n"
+                                               << hitbox::toText(hitbox::explain(thing, door));
     }
 }
 
