@@ -52,11 +52,11 @@ bool inGateway(const hitbox::Box& gateway, const hitbox::Box& thing)
 // STARTER TASK 2
 // bool inGateway(const hitbox::Box& gateway, const hitbox::Box& thing)
 // {
-//     const bool onX =
+//     const bool acrossX =
 //         thing.left <= gateway.left + gateway.width && gateway.left <= thing.left + thing.width;
-//     const bool onY =
+//     const bool acrossY =
 //         thing.top <= gateway.top + gateway.height && gateway.top <= thing.top + thing.height;
-//     return onX && onY;
+//     return acrossX && acrossY;
 // }
 // END TASK 2
 
@@ -80,16 +80,16 @@ int removeDelivered(hitbox::World& world, std::vector<std::unique_ptr<Crate>>& c
 // STARTER TASK 3
 // int removeDelivered(hitbox::World& world, std::vector<std::unique_ptr<Crate>>& crates)
 // {
-//     int removed = 0;
+//     int count = 0;
 //     for (std::size_t index = 0; index < crates.size(); ++index)
 //     {
 //         if (crates[index]->isDelivered())
 //         {
 //             world.remove(*crates[index]); // out of the World first: it only points at it
 //             crates.erase(crates.begin() + static_cast<std::ptrdiff_t>(index));
-//             ++removed;
+//             ++count;
 //         }
 //     }
-//     return removed;
+//     return count;
 // }
 // END TASK 3

@@ -223,12 +223,9 @@ std::string DepotLevel::getHelpText() const
 
 std::string DepotLevel::describeState() const
 {
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "step %lld: delivered %d, %d crates on the belts, gate %s, plate %s", steps,
-                  delivered, getCrateCount(), gateOpen ? "open" : "closed",
-                  plate->isPressed() ? "pressed" : "up");
-    return text;
+    return "step " + std::to_string(steps) + ": delivered " + std::to_string(delivered) + ", " +
+           std::to_string(getCrateCount()) + " crates on the belts, gate " +
+           (gateOpen ? "open" : "closed") + ", plate " + (plate->isPressed() ? "pressed" : "up");
 }
 
 std::vector<hitbox::PairEvent> DepotLevel::getContactEvents() const
