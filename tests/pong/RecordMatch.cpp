@@ -1,6 +1,7 @@
 // pong_record_match FILE [STEPS] - plays a two-player match of Pong with scripted keys for
-// STEPS fixed steps (default 3000, 25 s: a match under way), writes it as a replay that `pong --replay FILE
-// --headless` plays back, and prints the match's final state (PongLevel::describeState).
+// STEPS fixed steps (default 3000, 25 s: a match under way), writes it as a replay that
+// `pong --replay FILE --headless` plays back, and prints the match's final state
+// (PongLevel::describeState).
 //
 // scripts/same-runs.sh records on one SFML and replays on the other (scripts/ci-sfml3.sh):
 // the replay must end in the same state line, byte for byte. The level is built as `pong
