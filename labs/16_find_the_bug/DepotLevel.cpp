@@ -11,8 +11,11 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace
 {

@@ -23,8 +23,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <memory>
-#include <random>
 #include <string>
 #include <vector>
 
