@@ -53,5 +53,6 @@ echo "check-grading: Classroom: lab 1 does not compile, lab 2 still earns every 
 # leaves each of their tasks undone in turn. Add a lab here once its tests pass that check.
 fair_labs=(lab01_point_in_box lab02_bouncing_balls lab03_bouncing_squares lab04_bullet_through_paper
     lab05_ray_caster lab06_rotated_boxes lab07_swept_circles lab08_many_objects lab09_platformer
-    lab10_top_down lab11_pong lab12_broad_phase lab13_fast_movers lab14_resting_stack lab15_world)
+    lab10_top_down lab11_pong lab12_broad_phase lab13_fast_movers lab14_resting_stack lab15_world
+    lab16_find_the_bug)
 ./scripts/check-fair-marks.sh "${fair_labs[@]/#/--lab=}" "${build_options[@]}" "$work/fair-marks"

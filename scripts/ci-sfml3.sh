@@ -8,6 +8,9 @@
 #  3. Runs Pong headless, draws every lab under Xvfb and runs the broadphase benchmark, on
 #     SFML 3 (in the root) and on this machine's SFML 2 (HOST_BUILD), and compares: the same
 #     Pong result line, the same screenshots pixel for pixel, the same benchmark pair counts.
+#  4. Record and replay across the two: a match recorded on SFML 2 (this machine) is replayed
+#     on SFML 3 and the other way round; each replay's final state line must equal, byte for
+#     byte, the one of the run that recorded it (a few seconds).
 #
 # Usage: scripts/ci-sfml3.sh [HOST_BUILD]    (default build/debug, made by ./scripts/test.sh)
 # Reproduce by hand: the same command, as root, on Debian 12 with this repository checked out.
@@ -47,5 +50,20 @@ if ! diff "$compare/host/pairs.txt" "$compare/sid/pairs.txt"; then
     status=1
 fi
 python3 scripts/compare-png.py "$compare/host" "$compare/sid" || status=1
+
+echo "ci-sfml3: 4. a replay recorded on SFML 2 plays the same on SFML 3, and the other way round"
+# The root sees this repository as /hitbox (scripts/sid-root.sh).
+replay_sid() { scripts/sid-root.sh run su student -c "cd ~/hitbox && env -u DISPLAY build/debug/pong/pong --replay /hitbox/$1 --headless"; }
+replay_sid "$compare/host/match.replay" >"$compare/host-replayed-on-sfml3.txt"
+env -u DISPLAY -u WAYLAND_DISPLAY "$host_build/pong/pong" --replay "$compare/sid/match.replay" --headless \
+    >"$compare/sid-replayed-on-sfml2.txt"
+if ! diff "$compare/host/replayed.txt" "$compare/host-replayed-on-sfml3.txt"; then
+    echo "ci-sfml3: SFML 2's recorded match ended elsewhere when replayed on SFML 3 (< SFML 2, > SFML 3)" >&2
+    status=1
+fi
+if ! diff "$compare/sid/replayed.txt" "$compare/sid-replayed-on-sfml2.txt"; then
+    echo "ci-sfml3: SFML 3's recorded match ended elsewhere when replayed on SFML 2 (< SFML 3, > SFML 2)" >&2
+    status=1
+fi
 [[ $status -eq 0 ]] && echo "ci-sfml3: SFML 3 builds, passes every test and behaves as SFML 2"
 exit $status

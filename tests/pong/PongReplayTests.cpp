@@ -2,6 +2,7 @@
 // written down, read back and replayed with no input at all, ends in the same state bit for
 // bit (Replay.h). The replay gets nothing but the file's text.
 #include "PongLevel.h"
+#include "ScriptedInput.h"
 
 #include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
@@ -55,24 +56,7 @@ std::string stateBits(const PongLevel& pong)
     return bits;
 }
 
-// Keys change every few steps at random (a fixed seed), the mouse wanders: input no test
-// author would line up by hand.
-void scriptInput(Input& input, std::mt19937& random)
-{
-    const sf::Keyboard::Key keys[] = {sf::Keyboard::Key::W, sf::Keyboard::Key::S,
-                                      sf::Keyboard::Key::Up, sf::Keyboard::Key::Down};
-    std::uniform_int_distribution<int> pick(0, 15);
-    for (sf::Keyboard::Key key : keys)
-    {
-        const int roll = pick(random);
-        if (roll == 0)
-            input.setKeyDown(key);
-        else if (roll == 1)
-            input.setKeyUp(key);
-    }
-    std::uniform_real_distribution<float> move(-3.f, 3.f);
-    input.setMousePosition(input.getMousePosition() + sf::Vector2f(move(random), move(random)));
-}
+using pongtesting::scriptInput;
 
 } // namespace
 

@@ -74,6 +74,13 @@ std::string helpLine(const Level& level, const FrameSettings& settings)
     return line;
 }
 
+// Text the framework writes is UTF-8 (explain's "only touch — touching is not a collision");
+// sf::String from a std::string would read it in the locale's code page and draw each byte.
+sf::String utf8(const std::string& text)
+{
+    return sf::String::fromUtf8(text.begin(), text.end());
+}
+
 // The debug panel (DebugRenderer::panel): text lines on a dark box in the top-left corner.
 void drawPanel(sf::RenderTarget& target, const sf::Font& font,
                const std::vector<std::string>& lines)
@@ -86,7 +93,7 @@ void drawPanel(sf::RenderTarget& target, const sf::Font& font,
     float width = 0.f;
     for (std::size_t i = 0; i < lines.size(); ++i)
     {
-        texts.push_back(makeText(font, lines[i], 14));
+        texts.push_back(makeText(font, utf8(lines[i]), 14));
         texts.back().setFillColor(sf::Color(235, 235, 235));
         texts.back().setPosition({2.f * margin, 2.f * margin + lineHeight * static_cast<float>(i)});
         width = std::max(width, rectSize(texts.back().getLocalBounds()).x);
@@ -121,7 +128,7 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
     bar.setPosition({0.f, world.y - barHeight});
     bar.setFillColor(sf::Color(0, 0, 0, 170));
     target.draw(bar);
-    sf::Text help = makeText(font, helpLine(level, settings), 14);
+    sf::Text help = makeText(font, utf8(helpLine(level, settings)), 14);
     help.setFillColor(sf::Color(220, 220, 220));
     help.setPosition({8.f, world.y - barHeight + 3.f});
     target.draw(help);
