@@ -170,11 +170,11 @@ TEST(Task4LineOfSight, ALineFromFarOutsideTheGridIsBlockedByAWallInIt)
     const hitbox::TileGrid grid = gridWith({{5, 4}});
     const hitbox::Vec2 farLeft{-100000.f, 4.5f * sightCellSize};
     EXPECT_FALSE(canSee(grid, farLeft, at(5.5f, 4.5f)));
-    EXPECT_FALSE(canSee(grid, at(5.5f, 4.5f), farLeft)); // and back out to it
+    EXPECT_FALSE(canSee(grid, at(5.5f, 4.5f), farLeft));              // and back out to it
     EXPECT_FALSE(canSee(grid, {-80000.f, -60000.f}, at(5.5f, 4.5f))); // slanted
     const hitbox::Vec2 farBelow{5.5f * sightCellSize, 90000.f};
-    EXPECT_FALSE(canSee(grid, farBelow, at(5.5f, 2.5f)));              // up through the wall
-    EXPECT_TRUE(canSee(grid, farBelow, at(6.5f, 2.5f)));               // beside it: sees
+    EXPECT_FALSE(canSee(grid, farBelow, at(5.5f, 2.5f)));                 // up through the wall
+    EXPECT_TRUE(canSee(grid, farBelow, at(6.5f, 2.5f)));                  // beside it: sees
     EXPECT_TRUE(canSee(grid, farLeft, {-50000.f, 4.5f * sightCellSize})); // never over the grid
     EXPECT_EQ(canSee(grid, farLeft, at(9.5f, 3.5f)),
               hitbox::hasLineOfSight(grid, farLeft, at(9.5f, 3.5f)));
