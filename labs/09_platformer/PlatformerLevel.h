@@ -10,6 +10,10 @@
 //      least penetration); a push upwards means the feet are on a floor: grounded.
 // Key X switches to speculative contacts: the move is cut short where the player would
 // first touch a tile, so it stops even when it is too fast for step 4 (bullet through paper).
+// The tiles that are not square blocks have their own rules: a one-way platform cuts the move
+// before step 2 (task 5), a slope holds the player's foot on its surface before step 4
+// (task 6), and a checkpoint is a trigger: after the step it reports the player entering it
+// and never pushes (task 7).
 #pragma once
 
 #include "Player.h"
@@ -20,6 +24,7 @@
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/geometry/Slope.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/VertexArray.hpp>
@@ -48,9 +53,17 @@ public:
     // step, stopping early when nothing is inside (iterative resolution, as in
     // Katy Coe, "2D Platform Games Part 1: Collision Detection for Dummies").
     static constexpr int maxResolvePasses = 3;
+    // How far above a slope the foot of a player who stood on the ground the step before is
+    // pulled down onto it (task 6): a quarter tile, more than the 3.5 px a 45-degree slope
+    // drops under a full-speed run in one step, so walking down a slope never leaves it. A
+    // falling player is not pulled: it lands when its foot reaches the surface.
+    static constexpr float slopeSnapDistance = TileMap::tileSize / 4.f;
 
-    // Throws std::invalid_argument when 'P' has solid tiles both above and below it: the
-    // player, taller than a tile, could not start anywhere without a tile inside it.
+    // The surface of a slope tile ('/' or '\'), from its left edge to its right edge.
+    [[nodiscard]] static hitbox::Slope slopeOf(Tile tile, const hitbox::Box& tileBox);
+
+    // Throws std::invalid_argument when 'P' or a checkpoint 'C' has solid tiles both above and
+    // below it: the player, taller than a tile, could not start there without a tile inside it.
     explicit PlatformerLevel(TileMap map);
 
     void handleInput(const Input& input, float dt) override;
@@ -96,6 +109,13 @@ public:
     int getResolvePassesLastStep() const { return passesUsed; }
     long long getStepCount() const { return stepCount; }
     int getFallsOutOfWorld() const { return fallsOutOfWorld; }
+    // True when the player's foot stood on a slope in the last step (task 6).
+    bool isOnSlope() const { return onSlope; }
+    // Task 7: how many times the player has entered a checkpoint (each entry once), and the
+    // top-left corner of the tile it starts from after a fall or R: the last checkpoint
+    // entered, or 'P'.
+    int getCheckpointEntries() const { return checkpointEntries; }
+    hitbox::Vec2 getRespawnTile() const { return respawnTile; }
 
 private:
     void step();
@@ -103,6 +123,12 @@ private:
     void moveWithSpeculativeContacts(const hitbox::Box& before);
     void resolvePenetration(const hitbox::Box& before);
     void applyPush(const hitbox::Contact& push);
+    // Task 5 at work: the move cut by the one-way platforms under it.
+    hitbox::Vec2 landOnOneWayPlatforms(const hitbox::Box& before, hitbox::Vec2 move);
+    // Task 6 at work: the foot put on the slope under it, if any.
+    void standOnSlopes(const hitbox::Box& before);
+    // Task 7: the checkpoints the player entered this step.
+    void checkCheckpoints(const hitbox::Box& before);
     // The tiles under a box (task 3's tilesUnder), or every tile with setWholeMapSearch.
     TileRegion tilesToTest(const hitbox::Box& box) const;
     // The boxes of the solid tiles in a region.
@@ -110,8 +136,8 @@ private:
     // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
     hitbox::Hit firstHitAlong(const hitbox::Box& box, hitbox::Vec2 move) const;
     void respawn();
-    // True when the tile above 'P' is solid: the player (taller than a tile) starts lower.
-    bool startsUnderACeiling() const;
+    // True when the tile above this one is solid: the player (taller than a tile) starts lower.
+    bool isUnderACeiling(hitbox::Vec2 tileTopLeft) const;
 
     TileMap map;
     Player player;
@@ -134,6 +160,10 @@ private:
 
     // What the last step found (the debug view and the tests read these).
     bool grounded = false;
+    bool wasGrounded = false; // grounded at the end of the step before this one
+    bool onSlope = false;
+    int checkpointEntries = 0;
+    hitbox::Vec2 respawnTile;
     TileRegion testedRegion;
     hitbox::Box sweptBounds;
     std::vector<hitbox::Contact> contacts;
