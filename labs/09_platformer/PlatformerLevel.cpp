@@ -206,7 +206,8 @@ void PlatformerLevel::step()
         controls = {false, true, stepCount % 60 == 0, false};
     jumpPressed = false;
     divePressed = false;
-    player.steer(controls, grounded, speedCapOn, hitbox::stepSeconds);
+    if (steering)
+        player.steer(controls, grounded, speedCapOn, hitbox::stepSeconds);
 
     const hitbox::Box before = player.getBox();
     contacts.clear();
@@ -232,14 +233,13 @@ void PlatformerLevel::step()
 
 void PlatformerLevel::moveThenResolve(const hitbox::Box& before)
 {
-    const hitbox::Vec2 move =
-        landOnOneWayPlatforms(before, player.getVelocity() * hitbox::stepSeconds);
-    player.setPosition(player.getPosition() + move);
+    player.setPosition(player.getPosition() + plannedMove(before));
     resolvePenetration(before);
 }
 
-hitbox::Vec2 PlatformerLevel::landOnOneWayPlatforms(const hitbox::Box& before, hitbox::Vec2 move)
+hitbox::Vec2 PlatformerLevel::plannedMove(const hitbox::Box& before)
 {
+    hitbox::Vec2 move = player.getVelocity() * hitbox::stepSeconds;
     const hitbox::Box after{before.left + move.x, before.top + move.y, before.width, before.height};
     const TileRegion region = tilesToTest(reachOf(before, after, 0.f));
     bool landed = false;
@@ -335,8 +335,31 @@ std::vector<hitbox::Box> PlatformerLevel::solidTilesIn(const TileRegion& region)
 
 void PlatformerLevel::resolvePenetration(const hitbox::Box& before)
 {
-    // [slide:platformer-resolve]
+    // Over a slope the foot decides where the player stands; the bottom corners may hang
+    // into the block at the slope's top, and must not push the player back off the slope.
+    const bool skipBottomCorners = isFootOverASlope();
+    resolveCollisionPoints(before, skipBottomCorners);
+    // After the points: a foot pushed back out of the floor at a slope's low end is on it.
     standOnSlopes(before);
+}
+
+bool PlatformerLevel::isFootOverASlope() const
+{
+    const hitbox::Box box = player.getBox();
+    const int column = static_cast<int>(std::floor(hitbox::centerOf(box).x / TileMap::tileSize));
+    const int row = static_cast<int>(std::floor(hitbox::bottomOf(box) / TileMap::tileSize));
+    for (const int under : {row, row - 1}) // the tile the foot is in, or the one above it
+    {
+        const Tile tile = map.tileAt(column, under);
+        if (tile == Tile::SlopeUp || tile == Tile::SlopeDown)
+            return true;
+    }
+    return false;
+}
+
+void PlatformerLevel::resolveCollisionPoints(const hitbox::Box& before, bool skipBottomCorners)
+{
+    // [slide:platformer-resolve]
     sweptBounds = before;
     for (passesUsed = 1; passesUsed <= maxResolvePasses; ++passesUsed)
     {
@@ -347,8 +370,8 @@ void PlatformerLevel::resolvePenetration(const hitbox::Box& before)
         for (std::size_t index = 0; index < collisionPoints.size(); ++index)
             for (const hitbox::Box& tile : solidTilesIn(testedRegion))
             {
-                if (onSlope && isBottomCorner(collisionPoints[index]))
-                    continue; // on a slope the foot decides; the corners hang over it
+                if (skipBottomCorners && isBottomCorner(collisionPoints[index]))
+                    continue;
                 const hitbox::Vec2 where = pointOn(player.getBox(), collisionPoints[index]);
                 if (!hitbox::pointInBox(where, tile))
                     continue;
@@ -407,7 +430,7 @@ hitbox::Hit PlatformerLevel::firstHitAlong(const hitbox::Box& box, hitbox::Vec2 
 // longer pass through a thin floor.
 void PlatformerLevel::moveWithSpeculativeContacts(const hitbox::Box& before)
 {
-    hitbox::Vec2 move = landOnOneWayPlatforms(before, player.getVelocity() * hitbox::stepSeconds);
+    hitbox::Vec2 move = plannedMove(before);
     for (int pass = 0; pass < maxResolvePasses && (move.x != 0.f || move.y != 0.f); ++pass)
     {
         const hitbox::Hit first = firstHitAlong(player.getBox(), move);
