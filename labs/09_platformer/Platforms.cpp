@@ -43,8 +43,9 @@ hitbox::SlopeFoot footOnSlope(const hitbox::Box& player, float velocityY,
     const float footY = player.top + player.height;
     const hitbox::SlopeGround ground = hitbox::slopeGroundAt(slope, footX);
     if (!ground.over || footY > std::max(slope.left.y, slope.right.y))
-        return foot;                      // beside the slope, or under it (in the tile below)
-    const float above = ground.y - footY; // > 0: the foot is above the surface
+        return foot; // beside the slope, or under it (in the tile below)
+    // How far the foot is above the surface (negative: inside the slope).
+    const float above = ground.y - footY;
     if (above > snapDistance)
         return foot; // too high to pull down: in the air
     foot.grounded = true;

@@ -132,8 +132,8 @@ row 2 "Lab 9 - Platformer: level file '/dev/zero' is not a regular file (a devic
 row 2 "Lab 9 - Platformer: level file '$work/fifo.txt' is not a regular file (a device or a pipe); a level is a text file" "${nodisplay[@]}" "$lab09" --headless --level "$work/fifo.txt"
 row 2 "Lab 9 - Platformer: level file '$work/big.txt' is 2000000 bytes; a level file may be at most 1048576 bytes (1 MiB)" "${nodisplay[@]}" "$lab09" --headless --level "$work/big.txt"
 row 2 "Lab 9 - Platformer: level file '$work/cr.txt' line 1: unknown tile '\\r' in column 5 (a line ends in a lone carriage return: save the file with Unix or Windows line ends)" "${nodisplay[@]}" "$lab09" --headless --level "$work/cr.txt"
-row 2 "Lab 9 - Platformer: level file '$work/nul.txt' line 1: unknown tile '\\0' in column 3 (use # for solid, . for empty, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/nul.txt"
-row 2 "Lab 9 - Platformer: level file '$work/byte.txt' line 2: unknown tile '\\xEF' in column 2 (use # for solid, . for empty, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/byte.txt"
+row 2 "Lab 9 - Platformer: level file '$work/nul.txt' line 1: unknown tile '\\0' in column 3 (use # for solid, . for empty, - for a one-way platform, / and \\ for slopes, C for a checkpoint, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/nul.txt"
+row 2 "Lab 9 - Platformer: level file '$work/byte.txt' line 2: unknown tile '\\xEF' in column 2 (use # for solid, . for empty, - for a one-way platform, / and \\ for slopes, C for a checkpoint, P for the player start)" "${nodisplay[@]}" "$lab09" --headless --level "$work/byte.txt"
 row 2 "Lab 9 - Platformer: level file '$work/empty' has no rows (draw the level with # . and one P)" bash -c ': >"$1/empty"; exec env -u DISPLAY "$0" --headless --level "$1/empty"' "$lab09" "$work"
 # Issue 25, items 6 and 7: beyond the exact range, or no room for the player at 'P'.
 printf '%s\n' "$(head -c 20001 /dev/zero | tr '\0' '.')" >"$work/wide.txt"

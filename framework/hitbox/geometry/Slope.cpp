@@ -33,16 +33,17 @@ SlopeFoot standOnSlope(const Box& box, float velocityY, const Slope& slope, floa
         return foot;
     // [slide:slope-foot]
     if (velocityY < 0.f)
-        return foot; // rising: a jump leaves the slope, it is never pulled back onto it
+        return foot; // rising: a jump leaves the slope
     const Box b = normalised(box);
     const float footX = b.left + b.width / 2.f;
     const float footY = b.top + b.height;
     const SlopeGround ground = slopeGroundAt(slope, footX);
     if (!ground.over || footY > std::max(slope.left.y, slope.right.y))
-        return foot;                      // beside the slope, or under it
-    const float above = ground.y - footY; // > 0: the foot is above the surface
+        return foot; // beside the slope, or under it
+    // How far the foot is above the surface (negative: inside the slope).
+    const float above = ground.y - footY;
     if (above > 0.f && !(above <= snapDistance))
-        return foot; // too high to snap down to (or no snapping): in the air
+        return foot; // too high to pull down (or no pulling): in the air
     foot.grounded = true;
     foot.moveY = above; // down onto the surface, or up out of the slope
     // [/slide]
