@@ -41,27 +41,14 @@ bool canSee(const hitbox::TileGrid& grid, hitbox::Vec2 from, hitbox::Vec2 to)
     const bool alongX = dx == 0.0 && std::fmod(from.x, size) == 0.0;
     const bool alongY = dy == 0.0 && std::fmod(from.y, size) == 0.0;
     const double never = std::numeric_limits<double>::infinity();
-    // Only the part of the line over the grid can cross a wall: walk from where it enters
-    // the grid to where it leaves (t: 0 at `from`, 1 at `to`). Inside the grid the walk takes
-    // at most columns + rows steps; a line from far outside would use them all up on empty
-    // tiles before it reached the walls.
+    // Start the walk where the line enters the grid (t: 0 at `from`, 1 at `to`). The walk
+    // takes at most columns + rows steps over the grid; a line from far outside would use
+    // them all up on the empty tiles beyond it before it reached a wall.
     double t = 0.0;
-    double tEnd = 1.0;
-    const auto clip = [&t, &tEnd](double start, double move, double length)
-    {
-        if (move == 0.0)
-        {
-            if (start < 0.0 || start > length)
-                tEnd = -1.0; // beside the grid all along
-            return;
-        }
-        const double enter = (0.0 - start) / move;
-        const double leave = (length - start) / move;
-        t = std::max(t, std::min(enter, leave));
-        tEnd = std::min(tEnd, std::max(enter, leave));
-    };
-    clip(from.x, dx, size * grid.columns);
-    clip(from.y, dy, size * grid.rows);
+    if (dx != 0.0)
+        t = std::max(t, std::min(-from.x / dx, (size * grid.columns - from.x) / dx));
+    if (dy != 0.0)
+        t = std::max(t, std::min(-from.y / dy, (size * grid.rows - from.y) / dy));
     const int stepX = dx > 0.0 ? 1 : -1;
     const int stepY = dy > 0.0 ? 1 : -1;
     // The next vertical and horizontal grid lines ahead of where the walk starts.
@@ -69,11 +56,11 @@ bool canSee(const hitbox::TileGrid& grid, hitbox::Vec2 from, hitbox::Vec2 to)
     const double startY = from.y + dy * t;
     double lineX = dx > 0.0 ? std::floor(startX / size) + 1.0 : std::ceil(startX / size) - 1.0;
     double lineY = dy > 0.0 ? std::floor(startY / size) + 1.0 : std::ceil(startY / size) - 1.0;
-    for (int step = 0; t < tEnd && step < grid.columns + grid.rows + 4; ++step)
+    for (int step = 0; t < 1.0 && step < grid.columns + grid.rows + 4; ++step)
     {
         const double tx = dx != 0.0 ? (lineX * size - from.x) / dx : never;
         const double ty = dy != 0.0 ? (lineY * size - from.y) / dy : never;
-        const double tNext = std::min({tx, ty, tEnd});
+        const double tNext = std::min({tx, ty, 1.0});
         // The middle of this stretch is inside exactly the tile the line crosses.
         const double middle = (t + tNext) / 2.0;
         const int column = static_cast<int>(std::floor((from.x + dx * middle) / size));

@@ -179,3 +179,25 @@ TEST(Task4LineOfSight, ALineFromFarOutsideTheGridIsBlockedByAWallInIt)
     EXPECT_EQ(canSee(grid, farLeft, at(9.5f, 3.5f)),
               hitbox::hasLineOfSight(grid, farLeft, at(9.5f, 3.5f)));
 }
+
+TEST(Task4LineOfSight, ALineFromFarOutsideAWideOrTallGridIsBlockedWhereItEnters)
+{
+    // 20 tiles wide and 5 tall, then 5 wide and 20 tall: the grid's width and height differ.
+    hitbox::TileGrid wide = emptySightGrid({20 * sightCellSize, 5 * sightCellSize});
+    wide.solid[static_cast<std::size_t>(2 * wide.columns + 15)] = 1; // tile (15, 2)
+    const float middleOfRow2 = 2.5f * sightCellSize;
+    EXPECT_FALSE(canSee(wide, {100000.f, middleOfRow2}, at(5.5f, 2.5f)));   // from the right
+    EXPECT_FALSE(canSee(wide, {-100000.f, middleOfRow2}, at(17.5f, 2.5f))); // from the left
+    EXPECT_TRUE(canSee(wide, {100000.f, middleOfRow2}, at(16.5f, 2.5f)));   // short of it
+    wide.solid[static_cast<std::size_t>(2 * wide.columns + 19)] = 1;        // at the right edge too
+    EXPECT_FALSE(canSee(wide, {100000.f, middleOfRow2}, at(19.5f, 2.5f)));
+
+    hitbox::TileGrid tall = emptySightGrid({5 * sightCellSize, 20 * sightCellSize});
+    tall.solid[static_cast<std::size_t>(15 * tall.columns + 2)] = 1; // tile (2, 15)
+    const float middleOfColumn2 = 2.5f * sightCellSize;
+    EXPECT_FALSE(canSee(tall, {middleOfColumn2, 100000.f}, at(2.5f, 5.5f)));   // from below
+    EXPECT_FALSE(canSee(tall, {middleOfColumn2, -100000.f}, at(2.5f, 17.5f))); // from above
+    EXPECT_TRUE(canSee(tall, {middleOfColumn2, -100000.f}, at(2.5f, 14.5f)));
+    tall.solid[0 * 5 + 2] = 1; // tile (2, 0): the first tile the line from above meets
+    EXPECT_FALSE(canSee(tall, {middleOfColumn2, -100000.f}, at(2.5f, 0.5f)));
+}
