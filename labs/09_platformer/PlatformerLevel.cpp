@@ -263,7 +263,6 @@ hitbox::Vec2 PlatformerLevel::plannedMove(const hitbox::Box& before)
     return move;
 }
 
-// [slide:platformer-slopes]
 void PlatformerLevel::standOnSlopes(const hitbox::Box& before)
 {
     // Pulled down onto a slope only while walking (grounded the step before): a falling
@@ -289,7 +288,6 @@ void PlatformerLevel::standOnSlopes(const hitbox::Box& before)
             return; // one slope holds the foot
         }
 }
-// [/slide]
 
 void PlatformerLevel::checkCheckpoints(const hitbox::Box& before)
 {
@@ -346,8 +344,15 @@ void PlatformerLevel::resolvePenetration(const hitbox::Box& before)
 bool PlatformerLevel::isFootOverASlope() const
 {
     const hitbox::Box box = player.getBox();
-    const int column = static_cast<int>(std::floor(hitbox::centerOf(box).x / TileMap::tileSize));
-    const int row = static_cast<int>(std::floor(hitbox::bottomOf(box) / TileMap::tileSize));
+    // A tile index clipped to just outside the map before it becomes an int: far away, an int
+    // would overflow.
+    auto index = [](float pixels, int count)
+    {
+        return static_cast<int>(std::clamp(std::floor(pixels / TileMap::tileSize), -2.f,
+                                           static_cast<float>(count) + 1.f));
+    };
+    const int column = index(hitbox::centerOf(box).x, map.getColumns());
+    const int row = index(hitbox::bottomOf(box), map.getRows());
     for (const int under : {row, row - 1}) // the tile the foot is in, or the one above it
     {
         const Tile tile = map.tileAt(column, under);
