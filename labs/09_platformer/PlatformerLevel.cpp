@@ -138,7 +138,8 @@ PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
                     std::string(start ? "the player start 'P'" : "the checkpoint 'C'") +
                     " (column " + std::to_string(column + 1) + ", row " + std::to_string(row + 1) +
                     ") has solid tiles above and below it; the player is taller than one tile, "
-                    "so leave the tile above or below it empty");
+                    "so leave the tile above or below " +
+                    (start ? "'P'" : "'C'") + " empty");
         }
     respawnTile = map.getPlayerStart();
     respawn();
