@@ -130,7 +130,7 @@ PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
     for (int row = 0; row < map.getRows(); ++row)
         for (int column = 0; column < map.getColumns(); ++column)
         {
-            const hitbox::Vec2 tile{column * TileMap::tileSize, row * TileMap::tileSize};
+            const hitbox::Vec2 tile{map.tileBox(column, row).left, map.tileBox(column, row).top};
             const bool start = tile == map.getPlayerStart();
             if ((start || map.tileAt(column, row) == Tile::Checkpoint) && isUnderACeiling(tile) &&
                 map.isSolid(column, row + 1))
