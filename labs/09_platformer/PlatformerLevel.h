@@ -10,6 +10,10 @@
 //      least penetration); a push upwards means the feet are on a floor: grounded.
 // Key X switches to speculative contacts: the move is cut short where the player would
 // first touch a tile, so it stops even when it is too fast for step 4 (bullet through paper).
+// The tiles that are not square blocks have their own rules: a one-way platform cuts the move
+// before step 2 (task 5), a slope holds the player's foot on its surface before step 4
+// (task 6), and a checkpoint is a trigger: after the step it reports the player entering it
+// and never pushes (task 7).
 #pragma once
 
 #include "Player.h"
@@ -20,6 +24,7 @@
 #include "hitbox/app/FixedStep.h"
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Shapes.h"
+#include "hitbox/geometry/Slope.h"
 #include "hitbox/geometry/Sweep.h"
 
 #include <SFML/Graphics/VertexArray.hpp>
@@ -48,9 +53,17 @@ public:
     // step, stopping early when nothing is inside (iterative resolution, as in
     // Katy Coe, "2D Platform Games Part 1: Collision Detection for Dummies").
     static constexpr int maxResolvePasses = 3;
+    // How far above a slope the foot of a player who stood on the ground the step before is
+    // pulled down onto it (task 6): a quarter tile, more than the 3.5 px a 45-degree slope
+    // drops under a full-speed run in one step, so walking down a slope never leaves it. A
+    // falling player is not pulled: it lands when its foot reaches the surface.
+    static constexpr float slopeSnapDistance = TileMap::tileSize / 4.f;
 
-    // Throws std::invalid_argument when 'P' has solid tiles both above and below it: the
-    // player, taller than a tile, could not start anywhere without a tile inside it.
+    // The surface of a slope tile ('/' or '\'), from its left edge to its right edge.
+    [[nodiscard]] static hitbox::Slope slopeOf(Tile tile, const hitbox::Box& tileBox);
+
+    // Throws std::invalid_argument when 'P' or a checkpoint 'C' has solid tiles both above and
+    // below it: the player, taller than a tile, could not start there without a tile inside it.
     explicit PlatformerLevel(TileMap map);
 
     void handleInput(const Input& input, float dt) override;
@@ -73,6 +86,10 @@ public:
     void placePlayer(hitbox::Vec2 topLeft);
     // Set the player's velocity (pixels per second) for the next step. For tests.
     void setPlayerVelocity(hitbox::Vec2 velocity) { player.setVelocity(velocity); }
+    // Steer the player from the keys (the default). Off, for tests: each step moves the player
+    // by the velocity setPlayerVelocity gave (less what a push stopped), with no gravity, jump
+    // or speed cap, so the tests of tasks 5-7 cost nothing when task 1 or 4 is wrong.
+    void setSteering(bool on) { steering = on; }
 
     const Player& getPlayer() const { return player; }
     const TileMap& getMap() const { return map; }
@@ -96,6 +113,13 @@ public:
     int getResolvePassesLastStep() const { return passesUsed; }
     long long getStepCount() const { return stepCount; }
     int getFallsOutOfWorld() const { return fallsOutOfWorld; }
+    // True when the player's foot stood on a slope in the last step (task 6).
+    bool isOnSlope() const { return onSlope; }
+    // Task 7: how many times the player has entered a checkpoint (each entry once), and the
+    // top-left corner of the tile it starts from after a fall or R: the last checkpoint
+    // entered, or 'P'.
+    int getCheckpointEntries() const { return checkpointEntries; }
+    hitbox::Vec2 getRespawnTile() const { return respawnTile; }
 
 private:
     void step();
@@ -103,6 +127,16 @@ private:
     void moveWithSpeculativeContacts(const hitbox::Box& before);
     void resolvePenetration(const hitbox::Box& before);
     void applyPush(const hitbox::Contact& push);
+    // This step's move: velocity * step, cut by the one-way platforms under it (task 5).
+    hitbox::Vec2 plannedMove(const hitbox::Box& before);
+    // The collision points against the solid tiles, a few passes (and slopes after them).
+    void resolveCollisionPoints(const hitbox::Box& before, bool skipBottomCorners);
+    // True when the middle of the player's bottom is in a slope tile or just above one.
+    bool isFootOverASlope() const;
+    // Task 6 at work: the foot put on the slope under it, if any.
+    void standOnSlopes(const hitbox::Box& before);
+    // Task 7: the checkpoints the player entered this step.
+    void checkCheckpoints(const hitbox::Box& before);
     // The tiles under a box (task 3's tilesUnder), or every tile with setWholeMapSearch.
     TileRegion tilesToTest(const hitbox::Box& box) const;
     // The boxes of the solid tiles in a region.
@@ -110,8 +144,8 @@ private:
     // The earliest tile a box moving by `move` would run into (sweepBoxVsBox).
     hitbox::Hit firstHitAlong(const hitbox::Box& box, hitbox::Vec2 move) const;
     void respawn();
-    // True when the tile above 'P' is solid: the player (taller than a tile) starts lower.
-    bool startsUnderACeiling() const;
+    // True when the tile above this one is solid: the player (taller than a tile) starts lower.
+    bool isUnderACeiling(hitbox::Vec2 tileTopLeft) const;
 
     TileMap map;
     Player player;
@@ -128,12 +162,17 @@ private:
     bool speculative = false;
     bool wholeMap = false;
     bool demo = false;
+    bool steering = true;
     hitbox::FixedStep fixedStep{hitbox::stepSeconds}; // frame time -> whole steps
     long long stepCount = 0;
     int fallsOutOfWorld = 0;
 
     // What the last step found (the debug view and the tests read these).
     bool grounded = false;
+    bool wasGrounded = false; // grounded at the end of the step before this one
+    bool onSlope = false;
+    int checkpointEntries = 0;
+    hitbox::Vec2 respawnTile;
     TileRegion testedRegion;
     hitbox::Box sweptBounds;
     std::vector<hitbox::Contact> contacts;

@@ -35,7 +35,8 @@ std::string unknownTile(char tile, std::size_t column)
     if (tile == '\r')
         return what + " (a line ends in a lone carriage return: save the file with Unix or "
                       "Windows line ends)";
-    return what + " (use # for solid, . for empty, P for the player start)";
+    return what + " (use # for solid, . for empty, - for a one-way platform, / and \\ for "
+                  "slopes, C for a checkpoint, P for the player start)";
 }
 // A level too large for exact collision maths (TileMap::maxTilesAcross).
 std::string tooBig(const std::string& direction)
@@ -94,7 +95,7 @@ TileMap TileMap::parse(const std::string& text, const std::string& sourceName)
                                    static_cast<float>(map.tiles.size()) * tileSize};
                 line[column] = '.'; // the start is an empty tile
             }
-            else if (tile != '#' && tile != '.')
+            else if (std::string("#.-/\\C").find(tile) == std::string::npos)
                 throw errorAt(sourceName, lineNumber, unknownTile(tile, column));
         }
         map.tiles.push_back(line);
@@ -176,6 +177,27 @@ bool TileMap::isSolid(int column, int row) const
     return tiles[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)] == '#';
 }
 // [/slide]
+
+Tile TileMap::tileAt(int column, int row) const
+{
+    if (column < 0 || row < 0 || column >= columns || row >= rows)
+        return Tile::Empty;
+    switch (tiles[static_cast<std::size_t>(row)][static_cast<std::size_t>(column)])
+    {
+    case '#':
+        return Tile::Solid;
+    case '-':
+        return Tile::OneWay;
+    case '/':
+        return Tile::SlopeUp;
+    case '\\':
+        return Tile::SlopeDown;
+    case 'C':
+        return Tile::Checkpoint;
+    default:
+        return Tile::Empty;
+    }
+}
 
 hitbox::Box TileMap::tileBox(int column, int row) const
 {

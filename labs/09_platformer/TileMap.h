@@ -2,6 +2,9 @@
 //
 // The file is a picture of the level, one character per tile:
 //     #  solid tile        .  empty        P  where the player starts (an empty tile)
+//     -  one-way platform (solid only from above, at the tile's top; task 5)
+//     /  slope rising to the right    \  slope falling to the right (task 6)
+//     C  checkpoint: a trigger zone the player passes through (task 7)
 // Every row must have the same number of tiles, and a level may be at most maxTilesAcross
 // tiles wide and tall, inside the range the collision maths is exact for. A mistake in the file
 // stops the program with ONE line naming the file, the line and what is wrong, so a student can fix
@@ -35,6 +38,18 @@ struct TileRegion
     {
         return isEmpty() ? 0 : (lastColumn - firstColumn + 1) * (lastRow - firstRow + 1);
     }
+};
+
+// What a tile is. Only Solid tiles are tested with the collision points; the others have
+// their own rules (PlatformerLevel.cpp).
+enum class Tile
+{
+    Empty,
+    Solid,
+    OneWay,    // '-'
+    SlopeUp,   // '/': from the tile's bottom-left corner up to its top-right corner
+    SlopeDown, // '\': from the top-left corner down to the bottom-right corner
+    Checkpoint // 'C'
 };
 
 class TileMap
@@ -71,6 +86,8 @@ public:
 
     // Outside the map there is nothing: a player who leaves it falls out of the world.
     bool isSolid(int column, int row) const;
+    // The kind of a tile; Empty outside the map.
+    Tile tileAt(int column, int row) const;
     hitbox::Box tileBox(int column, int row) const;
 
     // The tiles a box covers. Only tiles it SHARES AREA with count (the edge rule): a box
@@ -81,6 +98,6 @@ public:
 private:
     int columns = 0;
     int rows = 0;
-    std::vector<std::string> tiles; // tiles[row][column], only '#' and '.'
+    std::vector<std::string> tiles; // tiles[row][column]: '#', '.', '-', '/', '\\' or 'C'
     hitbox::Vec2 playerStart;
 };

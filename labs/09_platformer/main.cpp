@@ -3,9 +3,11 @@
 // a jump only from the ground); collision points around the player tested against solid
 // tiles in a fixed order; corners pushed out along the axis of least penetration; knowing
 // when the player is grounded; the swept-bounds broad phase (only nearby tiles are tested);
-// a speed cap against tunnelling, and speculative contacts as the other cure.
+// a speed cap against tunnelling, and speculative contacts as the other cure; one-way
+// platforms, slopes (the foot follows the surface) and a checkpoint trigger.
 // Keys: A/D or arrows run, Space/W jump, S dive (very fast, downwards), C speed cap on/off,
-//       X speculative contacts on/off, R restart, plus the shared keys (F1 debug view).
+//       X speculative contacts on/off, R back to the last checkpoint, plus the shared keys
+//       (F1 debug view).
 // Options: --level levels/NAME.txt loads another level from assets/ (or a full path);
 //          --demo on makes the player run right and jump by itself (lectures, screenshots).
 #include "PlatformerLevel.h"

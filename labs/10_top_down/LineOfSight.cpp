@@ -41,12 +41,21 @@ bool canSee(const hitbox::TileGrid& grid, hitbox::Vec2 from, hitbox::Vec2 to)
     const bool alongX = dx == 0.0 && std::fmod(from.x, size) == 0.0;
     const bool alongY = dy == 0.0 && std::fmod(from.y, size) == 0.0;
     const double never = std::numeric_limits<double>::infinity();
+    // Start the walk where the line enters the grid (t: 0 at `from`, 1 at `to`). The walk
+    // takes at most columns + rows steps over the grid; a line from far outside would use
+    // them all up on the empty tiles beyond it before it reached a wall.
+    double t = 0.0;
+    if (dx != 0.0)
+        t = std::max(t, std::min(-from.x / dx, (size * grid.columns - from.x) / dx));
+    if (dy != 0.0)
+        t = std::max(t, std::min(-from.y / dy, (size * grid.rows - from.y) / dy));
     const int stepX = dx > 0.0 ? 1 : -1;
     const int stepY = dy > 0.0 ? 1 : -1;
-    // The next vertical and horizontal grid lines ahead, as line numbers.
-    double lineX = dx > 0.0 ? std::floor(from.x / size) + 1.0 : std::ceil(from.x / size) - 1.0;
-    double lineY = dy > 0.0 ? std::floor(from.y / size) + 1.0 : std::ceil(from.y / size) - 1.0;
-    double t = 0.0; // how far along: 0 at `from`, 1 at `to`
+    // The next vertical and horizontal grid lines ahead of where the walk starts.
+    const double startX = from.x + dx * t;
+    const double startY = from.y + dy * t;
+    double lineX = dx > 0.0 ? std::floor(startX / size) + 1.0 : std::ceil(startX / size) - 1.0;
+    double lineY = dy > 0.0 ? std::floor(startY / size) + 1.0 : std::ceil(startY / size) - 1.0;
     for (int step = 0; t < 1.0 && step < grid.columns + grid.rows + 4; ++step)
     {
         const double tx = dx != 0.0 ? (lineX * size - from.x) / dx : never;

@@ -25,7 +25,7 @@ NO_DISPLAY_FOUND = ("no display found ({}). Run with --headless --frames N to si
 SHARED_OPTIONS = ("--headless --frames N --seconds S --screenshot FILE.png --debug --seed N "
                   "--record FILE --replay FILE --timeline F.csv --pause-at-step N")
 LAB9 = "Lab 9 - Platformer: "
-LAB9_TILES = "(use # for solid, . for empty, P for the player start)"
+LAB9_TILES = r"(use # for solid, . for empty, - for a one-way platform, / and \ for slopes, C for a checkpoint, P for the player start)"
 
 
 def find_program(build, name):

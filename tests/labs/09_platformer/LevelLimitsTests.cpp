@@ -81,3 +81,19 @@ TEST(PlayerStart, AOneTileGapAroundTheStartIsRefused)
             << error.what();
     }
 }
+
+TEST(PlayerStart, AOneTileGapAroundACheckpointIsRefused)
+{
+    // The player restarts at a checkpoint as at 'P': it needs the same room.
+    try
+    {
+        PlatformerLevel level(TileMap::parse("#####\n#...#\n#####\n#CP.#\n##.##\n", "test"));
+        FAIL() << "a checkpoint with no room for the player was accepted";
+    }
+    catch (const std::invalid_argument& error)
+    {
+        EXPECT_NE(std::string(error.what()).find("the checkpoint 'C' (column 2, row 4)"),
+                  std::string::npos)
+            << error.what();
+    }
+}

@@ -42,6 +42,22 @@ TEST(LevelFile, ReadsSolidTilesEmptyTilesAndTheStart)
     EXPECT_FALSE(map.isSolid(-1, 0)) << "outside the map there is nothing";
 }
 
+TEST(LevelFile, ReadsOneWayPlatformsSlopesAndCheckpoints)
+{
+    const TileMap map = TileMap::parse("#####\n#-/\\#\n#CP.#\n#####\n", "test");
+    EXPECT_EQ(map.tileAt(1, 1), Tile::OneWay);
+    EXPECT_EQ(map.tileAt(2, 1), Tile::SlopeUp);
+    EXPECT_EQ(map.tileAt(3, 1), Tile::SlopeDown);
+    EXPECT_EQ(map.tileAt(1, 2), Tile::Checkpoint);
+    EXPECT_EQ(map.tileAt(2, 2), Tile::Empty) << "the start is an empty tile";
+    EXPECT_EQ(map.tileAt(0, 0), Tile::Solid);
+    EXPECT_EQ(map.tileAt(5, 0), Tile::Empty) << "outside the map there is nothing";
+    // Only '#' is tested with the collision points: the others have their own rules.
+    for (int column = 1; column <= 3; ++column)
+        EXPECT_FALSE(map.isSolid(column, 1));
+    EXPECT_FALSE(map.isSolid(1, 2));
+}
+
 TEST(LevelFile, ReadsWindowsLineEnds)
 {
     const TileMap map = TileMap::parse("###\r\n#P#\r\n###\r\n", "test");

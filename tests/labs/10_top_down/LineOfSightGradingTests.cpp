@@ -161,3 +161,43 @@ TEST(Task4LineOfSight, AnEnemyBehindAWallDoesNotChase)
     level.update(hitbox::stepSeconds);
     EXPECT_EQ(level.getEnemies().at(0).state, EnemyState::Idle);
 }
+
+TEST(Task4LineOfSight, ALineFromFarOutsideTheGridIsBlockedByAWallInIt)
+{
+    // From 100 000 px to the left the line crosses 10 000 empty tiles' worth of grid lines
+    // before it reaches the grid: only the part over the grid may be walked, or the walk
+    // gives up before the wall and sees through it.
+    const hitbox::TileGrid grid = gridWith({{5, 4}});
+    const hitbox::Vec2 farLeft{-100000.f, 4.5f * sightCellSize};
+    EXPECT_FALSE(canSee(grid, farLeft, at(5.5f, 4.5f)));
+    EXPECT_FALSE(canSee(grid, at(5.5f, 4.5f), farLeft));              // and back out to it
+    EXPECT_FALSE(canSee(grid, {-80000.f, -60000.f}, at(5.5f, 4.5f))); // slanted
+    const hitbox::Vec2 farBelow{5.5f * sightCellSize, 90000.f};
+    EXPECT_FALSE(canSee(grid, farBelow, at(5.5f, 2.5f)));                 // up through the wall
+    EXPECT_TRUE(canSee(grid, farBelow, at(6.5f, 2.5f)));                  // beside it: sees
+    EXPECT_TRUE(canSee(grid, farLeft, {-50000.f, 4.5f * sightCellSize})); // never over the grid
+    EXPECT_EQ(canSee(grid, farLeft, at(9.5f, 3.5f)),
+              hitbox::hasLineOfSight(grid, farLeft, at(9.5f, 3.5f)));
+}
+
+TEST(Task4LineOfSight, ALineFromFarOutsideAWideOrTallGridIsBlockedWhereItEnters)
+{
+    // 20 tiles wide and 5 tall, then 5 wide and 20 tall: the grid's width and height differ.
+    hitbox::TileGrid wide = emptySightGrid({20 * sightCellSize, 5 * sightCellSize});
+    wide.solid[static_cast<std::size_t>(2 * wide.columns + 15)] = 1; // tile (15, 2)
+    const float middleOfRow2 = 2.5f * sightCellSize;
+    EXPECT_FALSE(canSee(wide, {100000.f, middleOfRow2}, at(5.5f, 2.5f)));   // from the right
+    EXPECT_FALSE(canSee(wide, {-100000.f, middleOfRow2}, at(17.5f, 2.5f))); // from the left
+    EXPECT_TRUE(canSee(wide, {100000.f, middleOfRow2}, at(16.5f, 2.5f)));   // short of it
+    wide.solid[static_cast<std::size_t>(2 * wide.columns + 19)] = 1;        // at the right edge too
+    EXPECT_FALSE(canSee(wide, {100000.f, middleOfRow2}, at(19.5f, 2.5f)));
+
+    hitbox::TileGrid tall = emptySightGrid({5 * sightCellSize, 20 * sightCellSize});
+    tall.solid[static_cast<std::size_t>(15 * tall.columns + 2)] = 1; // tile (2, 15)
+    const float middleOfColumn2 = 2.5f * sightCellSize;
+    EXPECT_FALSE(canSee(tall, {middleOfColumn2, 100000.f}, at(2.5f, 5.5f)));   // from below
+    EXPECT_FALSE(canSee(tall, {middleOfColumn2, -100000.f}, at(2.5f, 17.5f))); // from above
+    EXPECT_TRUE(canSee(tall, {middleOfColumn2, -100000.f}, at(2.5f, 14.5f)));
+    tall.solid[0 * 5 + 2] = 1; // tile (2, 0): the first tile the line from above meets
+    EXPECT_FALSE(canSee(tall, {middleOfColumn2, -100000.f}, at(2.5f, 0.5f)));
+}
