@@ -41,14 +41,10 @@ cp "$root/home/student/hitbox/build/same-runs/"* "$compare/sid/"
 scripts/same-runs.sh "$host_build" "$compare/host"
 
 status=0
-if ! diff "$compare/host/pong.txt" "$compare/sid/pong.txt"; then
-    echo "ci-sfml3: Pong gave another result on SFML 3 (above: < SFML 2, > SFML 3)" >&2
-    status=1
-fi
-if ! diff "$compare/host/pairs.txt" "$compare/sid/pairs.txt"; then
-    echo "ci-sfml3: the broadphase found other pair counts on SFML 3" >&2
-    status=1
-fi
+# same FILE_A FILE_B MESSAGE: the two files must be equal; otherwise the diff and MESSAGE.
+same() { diff "$1" "$2" || { echo "ci-sfml3: $3" >&2; status=1; }; }
+same "$compare/host/pong.txt" "$compare/sid/pong.txt" "Pong gave another result on SFML 3 (above: < SFML 2, > SFML 3)"
+same "$compare/host/pairs.txt" "$compare/sid/pairs.txt" "the broadphase found other pair counts on SFML 3"
 python3 scripts/compare-png.py "$compare/host" "$compare/sid" || status=1
 
 echo "ci-sfml3: 4. a replay recorded on SFML 2 plays the same on SFML 3, and the other way round"
@@ -57,13 +53,7 @@ replay_sid() { scripts/sid-root.sh run su student -c "cd ~/hitbox && env -u DISP
 replay_sid "$compare/host/match.replay" >"$compare/host-replayed-on-sfml3.txt"
 env -u DISPLAY -u WAYLAND_DISPLAY "$host_build/pong/pong" --replay "$compare/sid/match.replay" --headless \
     >"$compare/sid-replayed-on-sfml2.txt"
-if ! diff "$compare/host/replayed.txt" "$compare/host-replayed-on-sfml3.txt"; then
-    echo "ci-sfml3: SFML 2's recorded match ended elsewhere when replayed on SFML 3 (< SFML 2, > SFML 3)" >&2
-    status=1
-fi
-if ! diff "$compare/sid/replayed.txt" "$compare/sid-replayed-on-sfml2.txt"; then
-    echo "ci-sfml3: SFML 3's recorded match ended elsewhere when replayed on SFML 2 (< SFML 3, > SFML 2)" >&2
-    status=1
-fi
+same "$compare/host/replayed.txt" "$compare/host-replayed-on-sfml3.txt" "SFML 2's recorded match ended elsewhere when replayed on SFML 3 (< SFML 2, > SFML 3)"
+same "$compare/sid/replayed.txt" "$compare/sid-replayed-on-sfml2.txt" "SFML 3's recorded match ended elsewhere when replayed on SFML 2 (< SFML 3, > SFML 2)"
 [[ $status -eq 0 ]] && echo "ci-sfml3: SFML 3 builds, passes every test and behaves as SFML 2"
 exit $status
