@@ -106,7 +106,7 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
                const FrameSettings& settings, float leftover)
 {
     const sf::Vector2f world = level.getWorldSize();
-    target.clear(sf::Color(18, 20, 28));
+    target.clear(DebugRenderer::backgroundColor);
     level.renderBlended(target, leftover);
     if (settings.showDebug)
     {
