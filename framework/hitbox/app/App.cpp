@@ -8,6 +8,7 @@
 #include "hitbox/app/SavePath.h"
 #include "hitbox/app/WholeFile.h"
 #include "hitbox/app/private/LongRun.h"
+#include "hitbox/app/private/ScreenshotRun.h"
 #include "hitbox/app/private/Window.h"
 #include "hitbox/platform/SilentAudio.h"
 
