@@ -14,8 +14,8 @@
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Graphics/View.hpp>
-#include <SFML/Window/VideoMode.hpp>
 #include <SFML/System/Clock.hpp>
+#include <SFML/Window/VideoMode.hpp>
 
 #include <algorithm>
 #include <string>
