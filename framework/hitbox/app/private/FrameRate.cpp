@@ -1,5 +1,7 @@
 #include "hitbox/app/private/FrameRate.h"
 
+#include <SFML/System/Time.hpp>
+
 #include <iostream>
 
 namespace hitbox
