@@ -50,13 +50,17 @@ float keyAxis(const Input& input, sf::Keyboard::Key upKey, sf::Keyboard::Key dow
 const int maxPointsToWin = 99;
 } // namespace
 
-PongLevel::PongLevel(const PongSettings& pongSettings)
+PongState::PongState(const PongSettings& pongSettings)
     : settings(pongSettings), arena(), ball(), leftPaddle(-1, arena), rightPaddle(+1, arena),
       // Each computer player has its own random numbers, so one player's choices never
       // shift the other's.
       leftComputer(settings.difficulty, settings.seed * 2u + 1u),
       rightComputer(settings.difficulty, settings.seed * 2u + 2u), score(settings.pointsToWin),
       random(settings.seed), mode(settings.mode)
+{
+}
+
+PongLevel::PongLevel(const PongSettings& pongSettings) : PongState(pongSettings)
 {
     ball.placeAt({arena.centerX(), arena.centerY()});
     ballStepStart = ball.getPosition();

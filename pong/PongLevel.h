@@ -54,7 +54,50 @@ struct PongSettings
     float secondsBeforeRematch = 4.f;      // computer vs computer: next match starts by itself
 };
 
-class PongLevel : public hitbox::Level
+// Everything a step changes, in one plain struct: saveState copies it whole and restoreState
+// assigns it back (PongSnapshot.cpp), so a value added here is rewound without another line.
+// What is not here (the font, the sounds) no rule reads.
+struct PongState
+{
+    explicit PongState(const PongSettings& chosen);
+
+    PongSettings settings;
+    Arena arena;
+    Ball ball;
+    Paddle leftPaddle;
+    Paddle rightPaddle;
+    Opponent leftComputer;
+    Opponent rightComputer;
+    Score score;
+    std::mt19937 random; // serve angles and the first server; seeded, so runs repeat
+
+    Screen screen = Screen::Title;
+    Mode mode = Mode::OnePlayer;
+    bool attractMode = false;
+    bool muted = false;
+    float leftIntent = 0.f; // -1 up .. +1 down, from the keys or the computer
+    float rightIntent = 0.f;
+    float serveSecondsLeft = 0.f;
+    Side serveSide = Side::Left;
+    float idleSeconds = 0.f; // title screen: time since the last key
+    float secondsOnWinScreen = 0.f;
+    float secondsSinceContact = 99.f; // for the debug view's "touching" colour
+
+    std::vector<GameEvent> events;
+    hitbox::Hit lastHit;        // the ball's last contact, for the debug view
+    sf::Vector2f ballStepStart; // where the ball began the last step (debug view)
+    sf::Vector2f leftStepStart; // where the paddles began it (drawing between steps)
+    sf::Vector2f rightStepStart;
+    long long stepCount = 0;
+    int matchesFinished = 0;
+    int leftMatchesWon = 0;
+    int rightMatchesWon = 0;
+    long long paddleHitsTotal = 0;
+};
+
+// PongLevel inherits its state privately: the rules read `ball`, `score`... as plain members, and
+// only the snapshot sees the whole.
+class PongLevel : public hitbox::Level, private PongState
 {
 public:
     explicit PongLevel(const PongSettings& settings = {});
@@ -113,39 +156,6 @@ private:
     void serve();
     void scorePoint(Side scorer);
     void finishMatch();
-
-    PongSettings settings;
-    Arena arena;
-    Ball ball;
-    Paddle leftPaddle;
-    Paddle rightPaddle;
-    Opponent leftComputer;
-    Opponent rightComputer;
-    Score score;
-    std::mt19937 random; // serve angles and the first server; seeded, so runs repeat
-
-    Screen screen = Screen::Title;
-    Mode mode;
-    bool attractMode = false;
-    bool muted = false;
-    float leftIntent = 0.f; // -1 up .. +1 down, from the keys or the computer
-    float rightIntent = 0.f;
-    float serveSecondsLeft = 0.f;
-    Side serveSide = Side::Left;
-    float idleSeconds = 0.f; // title screen: time since the last key
-    float secondsOnWinScreen = 0.f;
-    float secondsSinceContact = 99.f; // for the debug view's "touching" colour
-
-    std::vector<GameEvent> events;
-    hitbox::Hit lastHit;        // the ball's last contact, for the debug view
-    sf::Vector2f ballStepStart; // where the ball began the last step (debug view)
-    sf::Vector2f leftStepStart; // where the paddles began it (drawing between steps)
-    sf::Vector2f rightStepStart;
-    long long stepCount = 0;
-    int matchesFinished = 0;
-    int leftMatchesWon = 0;
-    int rightMatchesWon = 0;
-    long long paddleHitsTotal = 0;
 
     hitbox::LazyFont font;          // read by the first render(): tests need no font file
     std::unique_ptr<Sounds> sounds; // null: silent (headless runs, tests)

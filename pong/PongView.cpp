@@ -142,7 +142,7 @@ void PongLevel::renderBlended(sf::RenderTarget& target, float leftover) const
     // On a dark strip, so the net does not run through the words.
     sf::RectangleShape strip({440.f, 48.f});
     strip.setPosition({centerX - 220.f, arena.playBottom() - 48.f});
-    strip.setFillColor(sf::Color(18, 20, 28));
+    strip.setFillColor(hitbox::DebugRenderer::backgroundColor);
     target.draw(strip);
     drawCentered(target, font.get(), status, 18, centerX, arena.playBottom() - 34.f,
                  attractMode ? highlightColor : dimTextColor);

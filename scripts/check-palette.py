@@ -26,8 +26,8 @@ MIN_DELTA_E = 30.0
 # out only 23.6 apart under deuteranopia: the check must refuse it, or it checks nothing.
 KNOWN_BAD = ((80, 255, 120), (255, 70, 70), "deuteranopia")
 MIN_PIXELS = 50  # a state counts as drawn when this many pixels have its exact colour
-BACKGROUND = (18, 20, 28)  # the windows' clear colour (app/private/Window.cpp)
 STATES = ("freeColor", "touchingColor", "overlappingColor")
+BACKGROUND = "backgroundColor"  # the windows' clear colour, also from DebugRenderer.cpp
 SIMULATIONS = {  # Machado et al. 2009, table of severity 1.0
     "protanopia": ((0.152286, 1.052583, -0.204868), (0.114503, 0.786281, 0.099216),
                    (-0.003882, -0.048116, 1.051998)),
@@ -101,7 +101,7 @@ def main():
         print("check-palette: the threshold lets the old red/green pair through", file=sys.stderr)
         return 1
     colours = palette()
-    missing = [name for name in STATES if name not in colours]
+    missing = [name for name in STATES + (BACKGROUND,) if name not in colours]
     if missing:
         print(f"check-palette: DebugRenderer.cpp defines no {', '.join(missing)}", file=sys.stderr)
         return 2
@@ -126,7 +126,7 @@ def main():
                 if drawn[name] < MIN_PIXELS]
     for deficiency, matrix in SIMULATIONS.items():
         seen = {name: simulate(colours[name], matrix) for name in STATES}
-        seen["background"] = simulate(BACKGROUND, matrix)
+        seen["background"] = simulate(colours[BACKGROUND], matrix)
         names = list(seen)
         for i, first in enumerate(names):
             for second in names[i + 1:]:

@@ -55,10 +55,11 @@ hitbox::Vec2 fromAngle(float angle, float length)
 } // namespace
 
 ManyObjectsLevel::ManyObjectsLevel(const LabSettings& settings)
-    : method(settings.method), random(settings.seed),
-      printTimingSeconds(settings.printTimingSeconds), stopWhenTooSlow(settings.stopWhenTooSlow),
+    : printTimingSeconds(settings.printTimingSeconds), stopWhenTooSlow(settings.stopWhenTooSlow),
       threads(settings.threads)
 {
+    method = settings.method;
+    random.seed(settings.seed);
     startScene(settings.scene, settings.balls);
 }
 

@@ -74,7 +74,30 @@ constexpr int bruteForceBallLimit = 1000;
 // happen in a test's few steps: the average starts at 0 and needs a dozen slow steps.)
 constexpr float slowStepMilliseconds = 40.f;
 
-class ManyObjectsLevel : public hitbox::Level
+// Every value a step changes and no step rebuilds, in one plain struct: saveState copies it
+// whole and restoreState assigns it back (LevelSnapshot.cpp), so a value added here is rewound
+// without another line. The rest of the level is rebuilt (the broadphase, this step's items
+// and pairs) or only measured (timings).
+struct ManyObjectsState
+{
+    Scene scene = Scene::Crowd;
+    hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
+    std::mt19937 random;
+    std::vector<Ball> balls;
+    PairTable table;
+    std::size_t contacts = 0;
+    bool bruteForceSkipped = false;
+    std::size_t ownShipHits = 0;
+    std::size_t pickupBumps = 0;
+    float gridCellScale = 1.f; // grid cell = hitbox::gridCellSizeFor(average ball width) * this
+    float fireTimer = 0.f;
+    float fireAngle = 0.f;
+    float secondsSincePrint = 0.f; // simulated
+};
+
+// The level inherits its state privately: the rules read `balls`, `table`... as plain
+// members, and only the snapshot sees the whole.
+class ManyObjectsLevel : public hitbox::Level, private ManyObjectsState
 {
 public:
     explicit ManyObjectsLevel(const LabSettings& settings = {});
@@ -144,24 +167,13 @@ private:
     Scene scene = Scene::Crowd;
     hitbox::BroadphaseMethod method = hitbox::BroadphaseMethod::Grid;
     std::unique_ptr<TimedBroadphase> broadphase; // the method, measuring its own CPU time
-    std::mt19937 random;
-    std::vector<Ball> balls;
-    std::vector<hitbox::BroadphaseItem> items; // balls[i].item(), rebuilt every step
-    std::vector<hitbox::Pair> candidatePairs;  // the broadphase's answer this step
-    PairTable table;
-    std::size_t contacts = 0;
-    bool bruteForceSkipped = false;
+    std::vector<hitbox::BroadphaseItem> items;   // balls[i].item(), rebuilt every step
+    std::vector<hitbox::Pair> candidatePairs;    // the broadphase's answer this step
     bool stoppedAsTooSlow = false;
-    std::size_t ownShipHits = 0;
-    std::size_t pickupBumps = 0;
-    float gridCellScale = 1.f; // grid cell = hitbox::gridCellSizeFor(average ball width) * this
     float gridCellSize = 0.f;
-    float fireTimer = 0.f;
-    float fireAngle = 0.f;
     float collisionMilliseconds = 0.f; // CPU time in findPairsAndRespond, averaged over steps
     float printTimingSeconds = 0.f;
     StepTiming stepTiming;            // every collision step since the last timing line
-    float secondsSincePrint = 0.f;    // simulated
     std::size_t replayedContacts = 0; // the exact tests timed apart (recordStepTime)
     bool stopWhenTooSlow = false;
     int threads = 2;

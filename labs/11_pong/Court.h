@@ -4,6 +4,8 @@
 // any of them and the tests still check the same behaviour. Pixels and seconds.
 #pragma once
 
+#include "hitbox/app/Level.h" // hitbox::defaultWorldSize: the world, 1200 x 675
+
 // The court: the ball and the paddles stay between `top` and `bottom` (the walls); `left`
 // and `right` are the goal lines. Touching an edge is inside (Hitbox's edge rule: touching
 // is not overlapping).
@@ -15,8 +17,9 @@ struct Court
     float bottom;
 };
 
-// The numbers to play with.
-constexpr Court court{0.f, 24.f, 1200.f, 640.f}; // the world is 1200 x 675: help line below
+// The numbers to play with. The court is as wide as the world; below it, the bottom wall
+// and the help line.
+inline const Court court{0.f, 24.f, hitbox::defaultWorldSize.x, 640.f};
 constexpr float paddleWidth = 16.f;
 constexpr float paddleHeight = 96.f;
 constexpr float paddleInset = 48.f;  // from the goal line to the paddle

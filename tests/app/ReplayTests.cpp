@@ -6,6 +6,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Keys.h"
 #include "hitbox/app/Replay.h"
+#include "hitbox/app/SavePath.h"
 #include "hitbox/app/WholeFile.h"
 
 #include <gtest/gtest.h>
@@ -182,7 +183,7 @@ TEST(WholeFile, SavesCompleteFilesAndRefusesFoldersWithoutLeavingAnything)
     std::getline(in, text);
     EXPECT_EQ(text, "second");
     EXPECT_FALSE(hitbox::saveWholeFile(folder.string(), "x"));
-    const std::string missing = hitbox::checkTextPath((folder / "no" / "x").string()).problem;
+    const std::string missing = hitbox::checkSavePath((folder / "no" / "x").string()).problem;
     EXPECT_NE(missing.find("does not exist"), std::string::npos) << missing;
     int files = 0;
     for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder))

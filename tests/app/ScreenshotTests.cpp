@@ -84,7 +84,11 @@ TEST(Screenshot, AFolderADeviceAndAMissingFolderAreRefusedAndLeaveNothing)
         hitbox::saveImage(noisyImage(), (folder / "missing" / "a.png").string());
     EXPECT_FALSE(noFolder);
     EXPECT_NE(noFolder.problem.find("does not exist"), std::string::npos) << noFolder.problem;
-    EXPECT_FALSE(hitbox::saveImage(noisyImage(), (folder / "shot.txt").string()));
+    EXPECT_EQ(hitbox::saveImage(noisyImage(), (folder / "shot.txt").string()).problem,
+              "the name must end in .png (or .bmp, .tga, .jpg)");
+    // The file's own state is told before its ending: `--screenshot shots` names a folder.
+    fs::create_directory(folder / "shots");
+    EXPECT_EQ(hitbox::checkImagePath((folder / "shots").string()).problem, "it is a folder");
     // A pipe stands for any device: never a real one such as /dev/full, which a broken
     // save run as root would replace. Windows has no named pipes in folders.
     const fs::path pipe = folder / "pipe.png";

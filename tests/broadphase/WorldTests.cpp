@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -53,6 +54,44 @@ TEST(World, UsesTheGridByDefaultAndALevelCanPickAnother)
     EXPECT_EQ(world.getMethod(), BroadphaseMethod::Grid);
     world.setMethod(BroadphaseMethod::Quadtree);
     EXPECT_EQ(world.getMethod(), BroadphaseMethod::Quadtree);
+}
+
+// The grid's cell size as the World was given it, or the rule's (3 x the boxes' average side).
+TEST(World, TakesTheGridsCellSizeAndKeepsItAcrossMethodChanges)
+{
+    Recorder a(0.f, 0.f), b(10.f, 10.f), c(200.f, 200.f), d(400.f, 90.f);
+    World world;
+    for (Recorder* object : {&a, &b, &c, &d})
+        world.add(*object);
+    ASSERT_EQ(world.checkCollisions(), 1u);
+    EXPECT_FLOAT_EQ(world.getBroadphaseLayout().cellSize, 60.f) << "the rule: 3 x 20 px";
+
+    hitbox::GridSettings grid;
+    grid.cellSize = 100.f;
+    world.setGridSettings(grid);
+    EXPECT_EQ(world.checkCollisions(), 1u) << "the same pairs with any cell size";
+    EXPECT_FLOAT_EQ(world.getBroadphaseLayout().cellSize, 100.f);
+    world.setMethod(BroadphaseMethod::Quadtree);
+    world.setMethod(BroadphaseMethod::Grid);
+    EXPECT_EQ(world.checkCollisions(), 1u);
+    EXPECT_FLOAT_EQ(world.getBroadphaseLayout().cellSize, 100.f) << "kept for the next grid";
+    World moved(std::move(world));
+    EXPECT_FLOAT_EQ(moved.getGridSettings().cellSize, 100.f);
+
+    // Settings given while another method runs wait for the grid.
+    World sweep(BroadphaseMethod::SortAndSweep);
+    sweep.setGridSettings(grid);
+    EXPECT_EQ(sweep.getMethod(), BroadphaseMethod::SortAndSweep);
+    EXPECT_FLOAT_EQ(sweep.getGridSettings().cellSize, 100.f);
+
+    // 0 and NaN: the rule again.
+    for (float none : {0.f, std::numeric_limits<float>::quiet_NaN()})
+    {
+        grid.cellSize = none;
+        moved.setGridSettings(grid);
+        EXPECT_EQ(moved.checkCollisions(), 1u);
+        EXPECT_FLOAT_EQ(moved.getBroadphaseLayout().cellSize, 60.f) << none;
+    }
 }
 
 TEST(World, TouchingObjectsDoNotRespond)

@@ -91,6 +91,17 @@ TEST(ShapeTable, StandardTableHasBoxAndCircleAndEveryPair)
     EXPECT_STREQ(table.nameOf(hitbox::ShapeKind::Circle), "circle");
 }
 
+// Collision::getContact's default argument: one table for every call, not one built per call
+// (docs/performance.md measures the difference); a copy can still be extended.
+TEST(ShapeTable, TheStandardTableIsBuiltOnceAndACopyCanGrow)
+{
+    EXPECT_EQ(&hitbox::ShapeTable::standard(), &hitbox::ShapeTable::standard());
+    hitbox::ShapeTable copy = hitbox::ShapeTable::standard();
+    copy.addKind(diamondKind, {"diamond", diamondBounds, diamondOf});
+    EXPECT_TRUE(copy.has(diamondKind));
+    EXPECT_FALSE(hitbox::ShapeTable::standard().has(diamondKind));
+}
+
 TEST(ShapeTable, OneDirectionServesBothWithTheNormalTurnedRound)
 {
     GameObject ball = square(0.f, 0.f);

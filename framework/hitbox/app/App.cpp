@@ -5,8 +5,10 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/ReplayLevel.h"
+#include "hitbox/app/SavePath.h"
 #include "hitbox/app/WholeFile.h"
 #include "hitbox/app/private/LongRun.h"
+#include "hitbox/app/private/ScreenshotRun.h"
 #include "hitbox/app/private/Window.h"
 #include "hitbox/platform/SilentAudio.h"
 
@@ -110,7 +112,7 @@ int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& 
          {std::pair<std::string, std::string>{"--record", options.recordPath},
           {"--timeline", options.timelinePath}})
     {
-        const SaveResult writable = path.empty() ? SaveResult{true, ""} : checkTextPath(path);
+        const SaveResult writable = path.empty() ? SaveResult{true, ""} : checkSavePath(path);
         if (!writable)
         {
             std::cerr << info.title << ": " << option << ": cannot save '" << printable(path, 200)

@@ -1,18 +1,14 @@
 #include "hitbox/app/Screenshot.h"
 
-#include "hitbox/app/Options.h"
 #include "hitbox/platform/Platform.h"
 
 #include <SFML/System/Err.hpp>
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
-#include <functional>
 #include <sstream>
 #include <system_error>
 
@@ -49,50 +45,17 @@ SaveResult failed(const std::string& problem)
 
 } // namespace
 
-// Hidden, beside the target (a rename within one folder never copies), with the same ending.
-// Named by a hash of the file name, not the name itself: a legal 254-byte name plus
-// ".writing" would be longer than a file system allows (255 bytes on most).
-fs::path temporaryFor(const fs::path& target)
-{
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    char hash[24] = {};
-    std::snprintf(
-        hash, sizeof(hash), "%016llx",
-        static_cast<unsigned long long>(std::hash<std::string>{}(target.filename().string())));
-    return folder / (".hitbox-" + std::string(hash) + ".writing" + target.extension().string());
-}
-
 SaveResult checkImagePath(const std::string& path)
 {
-    if (path.empty())
-        return failed("no file name given");
-    const fs::path target(path);
-    std::error_code error;
-    const fs::file_status link = fs::symlink_status(target, error);
-    if (fs::is_symlink(link))
-        return failed("it is a symbolic link (save to the file it points to, or to a new name)");
-    const fs::file_status status = fs::status(target, error);
-    if (fs::is_directory(status))
-        return failed("it is a folder");
-    if (fs::exists(status) && !fs::is_regular_file(status))
-        return failed("it is not a regular file (a device or a pipe)");
-    // Someone made it read-only to keep it: replacing it (even as root, who may) is not ours.
-    if (fs::exists(status) && (status.permissions() & fs::perms::owner_write) == fs::perms::none)
-        return failed("it is read-only (make it writable, or save to a new name)");
-    const std::string ending = lowerCase(target.extension().string());
+    // The file's own state first: "it is a folder" tells more about `--screenshot shots/` than
+    // a wrong ending would.
+    const SaveResult usable = checkSavePath(path);
+    if (!usable)
+        return usable;
+    const std::string ending = lowerCase(fs::path(path).extension().string());
     if (ending != ".png" && ending != ".bmp" && ending != ".tga" && ending != ".jpg" &&
         ending != ".jpeg")
         return failed("the name must end in .png (or .bmp, .tga, .jpg)");
-
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    if (!fs::is_directory(folder, error))
-        return failed("the folder '" + printable(folder.string(), 200) + "' does not exist");
-    const fs::path temporary = temporaryFor(target);
-    const bool created = static_cast<bool>(std::ofstream(temporary, std::ios::binary));
-    fs::remove(temporary, error);
-    if (!created)
-        return failed("cannot create a file in '" + printable(folder.string(), 200) +
-                      "' (is it writable?)");
     return {true, ""};
 }
 
@@ -103,7 +66,7 @@ SaveResult saveImage(const sf::Image& image, const std::string& path)
         return usable;
     const fs::path target(path);
     const std::string ending = lowerCase(target.extension().string());
-    const fs::path temporary = temporaryFor(target);
+    const fs::path temporary = temporaryBeside(target);
     std::error_code error;
 
     // SFML prints its own lines on failure; the caller prints one clear line instead.

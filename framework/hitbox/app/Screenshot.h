@@ -6,6 +6,8 @@
 // says "saved" only for a file that is complete.
 #pragma once
 
+#include "hitbox/app/SavePath.h"
+
 #include <SFML/Graphics/Image.hpp>
 
 #include <string>
@@ -13,18 +15,10 @@
 namespace hitbox
 {
 
-struct SaveResult
-{
-    bool saved = false;
-    std::string problem; // when not saved: why, in one line, e.g. "the disk is full"
-
-    explicit operator bool() const { return saved; }
-};
-
-// Whether `path` can take a picture, checked without drawing: the folder exists and takes a
-// new file, the name ends in .png/.bmp/.tga/.jpg, and it is not a folder, a device, a pipe,
-// a symbolic link or a read-only file (those are never replaced). Used before a long
-// --screenshot simulation, and by saveImage.
+// Whether `path` can take a picture, checked without drawing: SavePath.h's checkSavePath (the
+// folder takes a new file; not a folder, a device, a pipe, a symbolic link or a read-only
+// file), then the name ends in .png/.bmp/.tga/.jpg. Used before a long --screenshot
+// simulation, and by saveImage.
 [[nodiscard]] SaveResult checkImagePath(const std::string& path);
 
 // Saves `image` as `path` (.png, .bmp, .tga or .jpg, chosen by the ending). An existing

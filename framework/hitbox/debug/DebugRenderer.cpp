@@ -19,6 +19,7 @@ const sf::Color DebugRenderer::overlappingColor{213, 94, 0}; // vermillion #D55E
 const sf::Color DebugRenderer::velocityColor{204, 121, 167}; // reddish purple #CC79A7
 const sf::Color DebugRenderer::normalColor{0, 158, 115};     // bluish green #009E73
 const sf::Color DebugRenderer::hintColor{150, 150, 160};     // grey
+const sf::Color DebugRenderer::backgroundColor{18, 20, 28};  // near-black, slightly blue
 const char* const DebugRenderer::legend = "Debug: solid free, dashed touching, hatched overlapping";
 
 namespace

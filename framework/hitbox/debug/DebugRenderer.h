@@ -46,6 +46,9 @@ public:
     static const sf::Color velocityColor;    // reddish purple: velocity arrows
     static const sf::Color normalColor;      // bluish green: contact normals
     static const sf::Color hintColor;        // grey: anything else (rays, swept areas, grids)
+    // What the windows clear to (and Pong's text strips): the dark the palette is checked
+    // against.
+    static const sf::Color backgroundColor;
     // What the cues mean, for every program's help line while F1 is on.
     static const char* const legend;
 

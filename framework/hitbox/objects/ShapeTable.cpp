@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace hitbox
 {
@@ -80,9 +81,7 @@ Contact circleVsBoxTest(const GameObject& first, const GameObject& second)
     return circleVsBox(a, b) ? hitDescribedBy(circleVsBoxContact(a, b)) : Contact{};
 }
 
-} // namespace
-
-ShapeTable ShapeTable::standard()
+ShapeTable buildStandard()
 {
     ShapeTable table;
     table.addKind(ShapeKind::Box, {"box", boxOf, boxOutline});
@@ -90,6 +89,20 @@ ShapeTable ShapeTable::standard()
     table.setTest(ShapeKind::Box, ShapeKind::Box, boxVsBoxTest);
     table.setTest(ShapeKind::Circle, ShapeKind::Circle, circleVsCircleTest);
     table.setTest(ShapeKind::Circle, ShapeKind::Box, circleVsBoxTest);
+    return table;
+}
+
+} // namespace
+
+// Nothing to tear down at exit (so no order of destruction to get wrong), whatever reads it last.
+static_assert(std::is_trivially_destructible_v<ShapeTable>,
+              "the standard table outlives its users");
+
+const ShapeTable& ShapeTable::standard()
+{
+    // A function-local static is built once, on first use, even with threads (C++17
+    // [stmt.dcl]/4); const, so every caller sees the same three tests.
+    static const ShapeTable table = buildStandard();
     return table;
 }
 

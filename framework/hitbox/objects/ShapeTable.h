@@ -48,8 +48,10 @@ class ShapeTable
 public:
     // An empty table: no kinds, no tests.
     ShapeTable() = default;
-    // Hitbox's table: Box and Circle, and the three tests between them.
-    [[nodiscard]] static ShapeTable standard();
+    // Hitbox's table: Box and Circle, and the three tests between them. Built once, on the
+    // first call, and never changed after (a const table, not shared state): the default of
+    // every query that takes a table costs no building. Copy it to add a kind.
+    [[nodiscard]] static const ShapeTable& standard();
 
     // Puts `row` in the table as `kind` (replacing what was there). A kind past
     // maxShapeKinds is refused with std::invalid_argument.

@@ -40,7 +40,7 @@ std::size_t World::PairKeyHash::operator()(const PairKey& key) const
 }
 
 World::World(BroadphaseMethod chosen, ShapeTable table)
-    : method(chosen), shapes(table), broadphase(makeBroadphase(chosen))
+    : method(chosen), shapes(table), broadphase(newBroadphase())
 {
     if (!shapes.isComplete())
         throw std::invalid_argument("hitbox::World: its ShapeTable has a pair of shape kinds "
@@ -74,9 +74,10 @@ World& World::operator=(World&& other) noexcept
 void World::takeFrom(World& other) noexcept
 {
     method = other.method;
+    gridSettings = other.gridSettings;
     shapes = other.shapes;
     broadphase = std::move(other.broadphase);
-    other.broadphase = makeBroadphase(other.method);
+    other.broadphase = other.newBroadphase();
     entries = std::move(other.entries);
     other.entries.clear();
     liveCount = std::exchange(other.liveCount, 0);
@@ -229,7 +230,21 @@ void World::setRule(PairRule newRule)
 void World::setMethod(BroadphaseMethod newMethod)
 {
     method = newMethod;
-    broadphase = makeBroadphase(newMethod);
+    broadphase = newBroadphase();
+}
+
+void World::setGridSettings(const GridSettings& settings)
+{
+    gridSettings = settings;
+    if (method == BroadphaseMethod::Grid)
+        broadphase = newBroadphase();
+}
+
+std::unique_ptr<Broadphase> World::newBroadphase() const
+{
+    if (method == BroadphaseMethod::Grid)
+        return std::make_unique<GridBroadphase>(gridSettings);
+    return makeBroadphase(method);
 }
 
 BroadphaseStats World::getBroadphaseStats() const

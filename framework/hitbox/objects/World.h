@@ -31,6 +31,7 @@
 #pragma once
 
 #include "hitbox/broadphase/Broadphase.h"
+#include "hitbox/broadphase/GridBroadphase.h"
 #include "hitbox/objects/ContactEvent.h"
 #include "hitbox/objects/ShapeTable.h"
 
@@ -99,6 +100,13 @@ public:
     // Another broadphase: same pairs found, other speed.
     void setMethod(BroadphaseMethod method);
     [[nodiscard]] BroadphaseMethod getMethod() const { return method; }
+    // The grid's settings (GridBroadphase.h: cell size, threads, pair order), used whenever
+    // the method is Grid, now and after a later setMethod(Grid). The default cell size, 0,
+    // works it out from the boxes every step (gridCellSizeFor); a cell size that is 0 or
+    // less, or NaN, does the same; one too small for the boxes' spread is grown by the grid
+    // (never more than a few cells per box). Same pairs whatever the settings, other speed.
+    void setGridSettings(const GridSettings& settings);
+    [[nodiscard]] const GridSettings& getGridSettings() const { return gridSettings; }
     // true: after a colliding pair's responses, two solid objects (Moving or Fixed, neither a
     // Trigger) still colliding are pushed apart along the contact normal - half each when
     // both are Moving, all of it on the Moving one against a Fixed one. Off by default: the
@@ -192,8 +200,11 @@ private:
     void settle();
     void compact();
     void takeFrom(World& other) noexcept; // the move: its objects now point here
+    // A broadphase of `method`, the grid with gridSettings.
+    [[nodiscard]] std::unique_ptr<Broadphase> newBroadphase() const;
 
     BroadphaseMethod method;
+    GridSettings gridSettings;
     ShapeTable shapes;
     std::unique_ptr<Broadphase> broadphase;
     std::vector<Entry> entries; // in the order added; leaving entries until settle()

@@ -3,7 +3,7 @@
 // `--seconds 100000000` is allowed (Options.h) and can take days: a silent terminal looks
 // like a hang. So a run without a window prints one progress line on stderr every
 // progressSeconds of wall time, and Ctrl-C ends it with one line instead of killing it
-// mid-print. Only App.cpp and private/Window.cpp call this; tests use hitbox::simulate.
+// mid-print. Only App.cpp and private/ScreenshotRun.cpp call this; tests use hitbox::simulate.
 #pragma once
 
 #include "hitbox/app/Level.h"

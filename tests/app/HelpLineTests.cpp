@@ -1,0 +1,41 @@
+// The help line along the bottom of every window (app/private/HelpLine.h): the shared keys,
+// the level's, the frame rate; with F1 on, the debug legend first.
+#include "hitbox/app/Keys.h"
+#include "hitbox/app/Level.h"
+#include "hitbox/app/private/HelpLine.h"
+#include "hitbox/debug/DebugRenderer.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace
+{
+
+class KeysLevel : public hitbox::Level
+{
+public:
+    void update(float) override {}
+    void render(sf::RenderTarget&) const override {}
+    std::string getHelpText() const override { return keys; }
+    std::string keys;
+};
+
+} // namespace
+
+TEST(HelpLine, SharedKeysThenTheLevelsThenTheFrameRate)
+{
+    KeysLevel level;
+    EXPECT_EQ(hitbox::helpLine(level, false, 0), hitbox::sharedKeysHelp());
+    level.keys = "W/S move";
+    EXPECT_EQ(hitbox::helpLine(level, false, 59),
+              hitbox::sharedKeysHelp() + "   |   W/S move   |   59 fps");
+}
+
+TEST(HelpLine, TheDebugLegendComesFirstWhereItIsNeverCutOff)
+{
+    KeysLevel level;
+    const std::string line = hitbox::helpLine(level, true, 0);
+    EXPECT_EQ(line.rfind(hitbox::DebugRenderer::legend, 0), 0u) << line;
+    EXPECT_NE(line.find(hitbox::sharedKeysHelp()), std::string::npos) << line;
+}
