@@ -68,6 +68,13 @@ std::vector<std::unique_ptr<Broadphase>> everyMethod()
     hitbox::GridSettings plainSorted;
     plainSorted.simd = false;
     methods.push_back(std::make_unique<hitbox::GridBroadphase>(plainSorted));
+    // Slim entries (item words only; the tests fetch the edges), as from 40,000 boxes.
+    hitbox::GridSettings slim = twoThreads;
+    slim.slimEntriesFromItems = 0;
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(slim));
+    hitbox::GridSettings slimPlainSorted = plainSorted;
+    slimPlainSorted.slimEntriesFromItems = 0;
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(slimPlainSorted));
     return methods;
 }
 
@@ -256,6 +263,11 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
     plainOne.simd = false;
     hitbox::GridBroadphase plainOneThread(plainOne);
     std::vector<Pair> fromPlain;
+    // Slim entries (as from 40,000 boxes) with two threads: the same cells, so the same order.
+    hitbox::GridSettings slimTwo = two;
+    slimTwo.slimEntriesFromItems = 0;
+    hitbox::GridBroadphase slimTwoThreads(slimTwo);
+    std::vector<Pair> fromSlim;
     auto sweep = hitbox::makeBroadphase(hitbox::BroadphaseMethod::SortAndSweep);
     std::vector<Pair> fromOne, fromTwo, sorted, expected;
     for (int frame = 0; frame < 3; ++frame)
@@ -264,6 +276,7 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
         twoThreads.findPairs(items, fromTwo);
         sortedTwoThreads.findPairs(items, sorted);
         plainOneThread.findPairs(items, fromPlain);
+        slimTwoThreads.findPairs(items, fromSlim);
         sweep->findPairs(items, expected);
         ASSERT_GT(expected.size(), 1000u) << "the scene should have many pairs";
         ASSERT_EQ(fromOne.size(), fromTwo.size()) << "frame " << frame;
@@ -271,6 +284,11 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
             ASSERT_TRUE(fromOne[k].first == fromTwo[k].first &&
                         fromOne[k].second == fromTwo[k].second)
                 << "pair #" << k << " differs, frame " << frame;
+        ASSERT_EQ(fromOne.size(), fromSlim.size()) << "frame " << frame;
+        for (std::size_t k = 0; k < fromOne.size(); ++k)
+            ASSERT_TRUE(fromOne[k].first == fromSlim[k].first &&
+                        fromOne[k].second == fromSlim[k].second)
+                << "slim entries: pair #" << k << " differs, frame " << frame;
         EXPECT_EQ(firstDifference(expected, inPromisedOrder(oneThread, fromOne), items), "");
         EXPECT_EQ(firstDifference(expected, sorted, items), "");
         // (As sets: the two sum the boxes' sizes in another order, so their grids may differ.)

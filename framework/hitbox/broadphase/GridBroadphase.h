@@ -46,6 +46,12 @@ enum class PairOrder
 // boxes takes about 0.3 ms, starting a thread tens of microseconds): one thread is used.
 constexpr std::size_t kGridTwoThreadsFromItems = 20000;
 
+// From this many boxes the cells list only each box's 4-byte item word, and the tests fetch
+// the box's edges from the per-item array ("Slim entries" in the .cpp): the entries then fit a
+// core's 1 MB cache while they are written in scattered places. Below it the 20-byte entries
+// fit anyway and are read without the extra step.
+constexpr std::size_t kGridSlimEntriesFromItems = 40000;
+
 struct GridSettings
 {
     float cellSize = 0.f; // <= 0: gridCellSizeFor(the items' average side), every frame
@@ -57,6 +63,7 @@ struct GridSettings
     // true: the SSE steps where the compiler offers SSE (x86-64); false: the plain C++ steps
     // every other machine (ARM, 32-bit x86) runs, so tests check both give the same pairs.
     bool simd = true;
+    std::size_t slimEntriesFromItems = kGridSlimEntriesFromItems; // tests lower it to 0
 };
 
 class GridBroadphase : public Broadphase
@@ -112,6 +119,7 @@ private:
         std::unique_ptr<Pair[]> found;          // foundRoom pairs; the first foundCount are real
         std::size_t foundRoom = 0;
         std::size_t foundCount = 0;
+        std::vector<Edges> gathered; // slim entries: the edges of the cell being tested
     };
 
     struct CellFinder;
@@ -121,10 +129,12 @@ private:
     [[nodiscard]] bool keepsShape(const Shape& ideal, std::size_t count) const;
     void startCells();
     void fillCells(Half& half);
+    void fillItemWords(Half& half);
     void testCells(Half& half);
     // The pairs found in half's cells, written to `out`; PairTest: the SSE or the plain test.
-    template <typename PairTest>
-    [[nodiscard]] std::size_t testCellRange(const Half& half, Pair* out) const;
+    // Slim: the entries hold item words only (fillItemWords); the edges are fetched per cell.
+    template <typename PairTest, bool Slim>
+    [[nodiscard]] std::size_t testCellRange(Half& half, Pair* out) const;
     void gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs);
     void sortPairs(std::vector<Pair>& pairs);
 
@@ -143,6 +153,8 @@ private:
     Shape shape;
     Half halves[2];
     std::size_t itemCount = 0;
+    bool slimEntries = false;                     // this frame: see kGridSlimEntriesFromItems
+    std::uint32_t largestCell = 0;                // the most entries in one cell this frame
     const BroadphaseItem* currentItems = nullptr; // during findPairs
     std::vector<Edges> edges;                     // per item
     std::vector<std::uint32_t> cellWords;         // per item: its cells, packed (see .cpp)
