@@ -33,6 +33,20 @@
 #define HITBOX_GRID_SSE 1
 #endif
 
+// Eight-wide compares (AVX) on 64-bit x86 only, compiled for AVX in this one function's
+// attribute and used only when the CPU says it has AVX (checked at run time, cpuHasAvx): the
+// rest of the program stays plain x86-64, so it runs on CPUs without AVX.
+#if defined(HITBOX_GRID_SSE) && (defined(__x86_64__) || defined(_M_X64) || defined(_M_AMD64))
+#include <immintrin.h>
+#define HITBOX_GRID_AVX 1
+#if defined(_MSC_VER) && !defined(__clang__)
+#include <intrin.h>
+#define HITBOX_TARGET_AVX // MSVC compiles AVX intrinsics without a flag
+#else
+#define HITBOX_TARGET_AVX __attribute__((target("avx")))
+#endif
+#endif
+
 namespace hitbox
 {
 namespace
@@ -189,6 +203,10 @@ inline void prefetch(const void* where)
 #endif
 }
 
+#if defined(HITBOX_GRID_AVX)
+bool cpuHasAvx(); // below, with the eight-wide tests
+#endif
+
 // The three dummy counters forEachCell uses, after the grid's cells.
 constexpr std::size_t kDummyCounters = 3;
 
@@ -196,7 +214,12 @@ constexpr std::size_t kDummyCounters = 3;
 
 GridBroadphase::GridBroadphase(float cellSize) : GridBroadphase(GridSettings{cellSize}) {}
 
-GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(settings) {}
+GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(settings)
+{
+#if defined(HITBOX_GRID_AVX)
+    hasAvx = cpuHasAvx();
+#endif
+}
 
 // Which cells a box covers under a grid: the grid's numbers copied once into a small struct,
 // so the loops keep them in registers (the compiler cannot tell that writing an entry leaves
@@ -631,6 +654,92 @@ struct SsePairTest
 };
 #endif
 
+#if defined(HITBOX_GRID_AVX)
+// What testCellsEightWide needs of the grid (it is a free function: see HITBOX_TARGET_AVX).
+struct WideCellTest
+{
+    const std::uint32_t* start = nullptr;
+    const std::uint32_t* items = nullptr;
+    const float* cellEdges = nullptr; // null: slim entries, fetched from itemEdges
+    const float* itemEdges = nullptr;
+    float* gathered = nullptr; // room for the largest cell + 1
+    std::size_t firstCell = 0, endCell = 0;
+    std::uint32_t bothFlags = 0, indexMask = 0;
+};
+
+// Eight-wide compares: the same pair test as SsePairTest, on two entries per instruction (the
+// query in both halves of an AVX register), so the inner loop runs half as often, and its end,
+// which the CPU guesses wrong about once per entry, comes up half as often. The second entry
+// of the last step may be one past the cell: its answer is masked off (`q + 1 < end`).
+HITBOX_TARGET_AVX std::size_t testCellsEightWide(const WideCellTest& test, Pair* out)
+{
+    const std::uint32_t* items = test.items;
+    const std::uint32_t both = test.bothFlags;
+    const std::uint32_t mask = test.indexMask;
+    std::uint32_t fetched = test.start[test.firstCell];
+    const std::uint32_t lastEntry = test.start[test.endCell];
+    const __m128 signs = _mm_set1_ps(-0.f);
+    std::size_t found = 0;
+    for (std::size_t cell = test.firstCell; cell < test.endCell; ++cell)
+    {
+        const std::uint32_t begin = test.start[cell];
+        const std::uint32_t end = test.start[cell + 1];
+        if (end - begin < 2)
+            continue;
+        const float* boxes = test.gathered;
+        if (test.cellEdges == nullptr)
+        {
+            const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
+            for (fetched = std::max(fetched, end); fetched < until; ++fetched)
+                prefetch(test.itemEdges + 4 * std::size_t(items[fetched] & mask));
+            for (std::uint32_t p = begin; p < end; ++p)
+                _mm_store_ps(test.gathered + 4 * std::size_t(p - begin),
+                             _mm_load_ps(test.itemEdges + 4 * std::size_t(items[p] & mask)));
+        }
+        else
+            boxes = test.cellEdges + 4 * std::size_t(begin);
+        for (std::uint32_t p = begin; p + 1 < end; ++p)
+        {
+            const std::uint32_t a = items[p];
+            const std::uint32_t first = a & mask;
+            const __m128 negated = _mm_xor_ps(_mm_load_ps(boxes + 4 * (p - begin)), signs);
+            const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+            const __m256 queries = _mm256_insertf128_ps(_mm256_castps128_ps256(query), query, 1);
+            for (std::uint32_t q = p + 1; q < end; q += 2)
+            {
+                const __m256 two = _mm256_loadu_ps(boxes + 4 * (q - begin));
+                const int lanes = _mm256_movemask_ps(_mm256_cmp_ps(two, queries, _CMP_LT_OQ));
+                const std::uint32_t b0 = items[q];
+                const std::uint32_t b1 = items[q + 1];
+                // Branch-free: `&`, not `&&`.
+                const bool hit0 = ((lanes & 0xF) == 0xF) & (((a | b0) & both) == both);
+                const bool hit1 =
+                    ((lanes >> 4) == 0xF) & (((a | b1) & both) == both) & (q + 1 < end);
+                out[found] = {first, b0 & mask};
+                found += hit0;
+                out[found] = {first, b1 & mask};
+                found += hit1;
+            }
+        }
+    }
+    return found;
+}
+
+// Whether this CPU runs AVX instructions (and the system saves its registers).
+bool cpuHasAvx()
+{
+#if defined(_MSC_VER) && !defined(__clang__)
+    int info[4] = {};
+    __cpuid(info, 1);
+    const bool osSaves = (info[2] & (1 << 27)) != 0;
+    const bool avx = (info[2] & (1 << 28)) != 0;
+    return osSaves && avx && (_xgetbv(0) & 6) == 6;
+#else
+    return __builtin_cpu_supports("avx") != 0;
+#endif
+}
+#endif
+
 } // namespace
 
 template <typename PairTest, bool Slim>
@@ -689,6 +798,24 @@ std::size_t GridBroadphase::testCellRange(Half& half, Pair* out) const
 void GridBroadphase::testCells(Half& half)
 {
     Pair* out = half.found.get(); // sized by startCells
+#if defined(HITBOX_GRID_AVX)
+    if (gridSettings.simd && gridSettings.eightWide && hasAvx)
+    {
+        WideCellTest test;
+        test.start = start.data();
+        test.items = cellItems.data();
+        test.cellEdges = slimEntries ? nullptr : &cellEdges.data()->minX;
+        test.itemEdges = &edges.data()->minX;
+        half.gathered.resize(std::size_t(largestCell) + 1); // + 1: the pair loop reads one past
+        test.gathered = &half.gathered.data()->minX;
+        test.firstCell = half.firstCell;
+        test.endCell = half.endCell;
+        test.bothFlags = kBothFlags;
+        test.indexMask = kItemIndexMask;
+        half.foundCount = testCellsEightWide(test, out);
+        return;
+    }
+#endif
 #if defined(HITBOX_GRID_SSE)
     if (gridSettings.simd)
     {

@@ -64,6 +64,10 @@ struct GridSettings
     // every other machine (ARM, 32-bit x86) runs, so tests check both give the same pairs.
     bool simd = true;
     std::size_t slimEntriesFromItems = kGridSlimEntriesFromItems; // tests lower it to 0
+    // With simd: true compares two entries per instruction (AVX) when the CPU has AVX (asked
+    // at run time), false one (SSE). Off by default: measured 3-6 % slower on this workload
+    // (docs/performance.md); kept, and tested, so the measurement can be repeated.
+    bool eightWide = false;
 };
 
 class GridBroadphase : public Broadphase
@@ -153,6 +157,7 @@ private:
     Shape shape;
     Half halves[2];
     std::size_t itemCount = 0;
+    bool hasAvx = false;                          // the CPU runs AVX (eightWide)
     bool slimEntries = false;                     // this frame: see kGridSlimEntriesFromItems
     std::uint32_t largestCell = 0;                // the most entries in one cell this frame
     const BroadphaseItem* currentItems = nullptr; // during findPairs
