@@ -9,7 +9,7 @@
 // uses it (pairs sorted, one thread), GridCellOrder/<N> leaves the pairs in cell order and
 // GridEightWide/<N> is GridCellOrder with two entries per compare (AVX, where the CPU has it)
 // instead of one (SSE), GridSlimEntries/<N> is GridCellOrder with slim entries at every N (the
-// default from 40,000 boxes), GridTwoThreads/<N> also splits the work over two threads (its CPU
+// default from 5,000 boxes), GridTwoThreads/<N> also splits the work over two threads (its CPU
 // time counts both threads; its wall time is the "Time" column). Before timing, each grid's pairs
 // are checked against the baseline's, as a set: a benchmark whose pairs differ stops with an error.
 // Results, machine and the exact command: docs/performance.md.

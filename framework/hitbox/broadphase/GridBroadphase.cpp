@@ -12,6 +12,13 @@
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
 //   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
 //   - Split entries: 16 aligned bytes of edges plus a 4-byte item word in a second array.
+//   - Slim entries: from kGridSlimEntriesFromItems boxes the fill writes the item words only
+//     (4 bytes a box-in-a-cell, which stay in the cache while written in scattered places) and
+//     the tests copy each busy cell's edges from the per-item array.
+//   - Prefetched edges: with slim entries the tests ask for the next 24 entries' edges while
+//     a cell is tested, so the copies find them in the cache.
+//   - Eight-wide compares (GridSettings::eightWide, off: measured slower): two entries per
+//     AVX compare, chosen at run time by asking the CPU; SSE or plain C++ otherwise.
 //   - Pairs in cell order: no sort when the caller does not need (first, second) order.
 //   - Two halves: with two threads, each half of the items is prepared and filled in by one
 //     thread, and each half of the cells tested by one; the halves never change the result.
