@@ -805,8 +805,9 @@ std::size_t GridBroadphase::testCellRange(Half& half, Pair* out) const
 void GridBroadphase::testCells(Half& half)
 {
     Pair* out = half.found.get(); // sized by startCells
+    const bool eightWide = gridSettings.simd && gridSettings.eightWide && hasAvx;
 #if defined(HITBOX_GRID_AVX)
-    if (gridSettings.simd && gridSettings.eightWide && hasAvx)
+    if (eightWide)
     {
         WideCellTest test;
         test.start = start.data();
@@ -822,6 +823,8 @@ void GridBroadphase::testCells(Half& half)
         half.foundCount = testCellsEightWide(test, out);
         return;
     }
+#else
+    (void)eightWide; // never true where AVX is not compiled (hasAvx stays false)
 #endif
 #if defined(HITBOX_GRID_SSE)
     if (gridSettings.simd)
