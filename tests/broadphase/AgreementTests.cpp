@@ -68,6 +68,19 @@ std::vector<std::unique_ptr<Broadphase>> everyMethod()
     hitbox::GridSettings plainSorted;
     plainSorted.simd = false;
     methods.push_back(std::make_unique<hitbox::GridBroadphase>(plainSorted));
+    // Slim entries (item words only; the tests fetch the edges), as from 5,000 boxes.
+    hitbox::GridSettings slim = twoThreads;
+    slim.slimEntriesFromItems = 0;
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(slim));
+    // Two entries per compare (AVX; on CPUs without it, the same as one), slim and not.
+    hitbox::GridSettings eightWide = slim;
+    eightWide.eightWide = true;
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(eightWide));
+    eightWide.slimEntriesFromItems = hitbox::kGridSlimEntriesFromItems;
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(eightWide));
+    hitbox::GridSettings slimPlainSorted = plainSorted;
+    slimPlainSorted.slimEntriesFromItems = 0;
+    methods.push_back(std::make_unique<hitbox::GridBroadphase>(slimPlainSorted));
     return methods;
 }
 
@@ -256,6 +269,17 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
     plainOne.simd = false;
     hitbox::GridBroadphase plainOneThread(plainOne);
     std::vector<Pair> fromPlain;
+    // Full entries (as below 5,000 boxes; these 24,000 get slim ones) with two threads: the
+    // same cells, so the same order.
+    hitbox::GridSettings slimTwo = two;
+    slimTwo.slimEntriesFromItems = items.size() + 1;
+    hitbox::GridBroadphase slimTwoThreads(slimTwo);
+    std::vector<Pair> fromSlim;
+    // Two entries per compare (AVX where the CPU has it), one thread: the same order again.
+    hitbox::GridSettings wideOne = one;
+    wideOne.eightWide = true;
+    hitbox::GridBroadphase wideOneThread(wideOne);
+    std::vector<Pair> fromWide;
     auto sweep = hitbox::makeBroadphase(hitbox::BroadphaseMethod::SortAndSweep);
     std::vector<Pair> fromOne, fromTwo, sorted, expected;
     for (int frame = 0; frame < 3; ++frame)
@@ -264,6 +288,8 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
         twoThreads.findPairs(items, fromTwo);
         sortedTwoThreads.findPairs(items, sorted);
         plainOneThread.findPairs(items, fromPlain);
+        slimTwoThreads.findPairs(items, fromSlim);
+        wideOneThread.findPairs(items, fromWide);
         sweep->findPairs(items, expected);
         ASSERT_GT(expected.size(), 1000u) << "the scene should have many pairs";
         ASSERT_EQ(fromOne.size(), fromTwo.size()) << "frame " << frame;
@@ -271,6 +297,16 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
             ASSERT_TRUE(fromOne[k].first == fromTwo[k].first &&
                         fromOne[k].second == fromTwo[k].second)
                 << "pair #" << k << " differs, frame " << frame;
+        ASSERT_EQ(fromOne.size(), fromSlim.size()) << "frame " << frame;
+        for (std::size_t k = 0; k < fromOne.size(); ++k)
+            ASSERT_TRUE(fromOne[k].first == fromSlim[k].first &&
+                        fromOne[k].second == fromSlim[k].second)
+                << "full entries: pair #" << k << " differs, frame " << frame;
+        ASSERT_EQ(fromOne.size(), fromWide.size()) << "frame " << frame;
+        for (std::size_t k = 0; k < fromOne.size(); ++k)
+            ASSERT_TRUE(fromOne[k].first == fromWide[k].first &&
+                        fromOne[k].second == fromWide[k].second)
+                << "eight-wide: pair #" << k << " differs, frame " << frame;
         EXPECT_EQ(firstDifference(expected, inPromisedOrder(oneThread, fromOne), items), "");
         EXPECT_EQ(firstDifference(expected, sorted, items), "");
         // (As sets: the two sum the boxes' sizes in another order, so their grids may differ.)

@@ -12,6 +12,13 @@
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
 //   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
 //   - Split entries: 16 aligned bytes of edges plus a 4-byte item word in a second array.
+//   - Slim entries: from kGridSlimEntriesFromItems boxes the fill writes the item words only
+//     (4 bytes a box-in-a-cell, which stay in the cache while written in scattered places) and
+//     the tests copy each busy cell's edges from the per-item array.
+//   - Prefetched edges: with slim entries the tests ask for the next 24 entries' edges while
+//     a cell is tested, so the copies find them in the cache.
+//   - Eight-wide compares (GridSettings::eightWide, off: measured slower): two entries per
+//     AVX compare, chosen at run time by asking the CPU; SSE or plain C++ otherwise.
 //   - Pairs in cell order: no sort when the caller does not need (first, second) order.
 //   - Two halves: with two threads, each half of the items is prepared and filled in by one
 //     thread, and each half of the cells tested by one; the halves never change the result.
@@ -31,6 +38,20 @@
 #if defined(__SSE2__) || defined(_M_X64) || defined(_M_AMD64)
 #include <emmintrin.h>
 #define HITBOX_GRID_SSE 1
+#endif
+
+// Eight-wide compares (AVX) on 64-bit x86 only, compiled for AVX in this one function's
+// attribute and used only when the CPU says it has AVX (checked at run time, cpuHasAvx): the
+// rest of the program stays plain x86-64, so it runs on CPUs without AVX.
+#if defined(HITBOX_GRID_SSE) && (defined(__x86_64__) || defined(_M_X64) || defined(_M_AMD64))
+#include <immintrin.h>
+#define HITBOX_GRID_AVX 1
+#if defined(_MSC_VER) && !defined(__clang__)
+#include <intrin.h>
+#define HITBOX_TARGET_AVX // MSVC compiles AVX intrinsics without a flag
+#else
+#define HITBOX_TARGET_AVX __attribute__((target("avx")))
+#endif
 #endif
 
 namespace hitbox
@@ -175,6 +196,24 @@ inline std::uint32_t packCells(const Range& range, std::size_t width)
     return std::uint32_t(cell) | std::uint32_t(right) << 30 | std::uint32_t(down) << 31;
 }
 
+// Slim entries: how many entries ahead the tests ask for the boxes' edges.
+constexpr std::uint32_t kFetchAhead = 24;
+
+// Asks the cache for the line at `where` without waiting for it (a hint; nothing where SSE is
+// not compiled).
+inline void prefetch(const void* where)
+{
+#if defined(HITBOX_GRID_SSE)
+    _mm_prefetch(static_cast<const char*>(where), _MM_HINT_T0);
+#else
+    (void)where;
+#endif
+}
+
+#if defined(HITBOX_GRID_AVX)
+bool cpuHasAvx(); // below, with the eight-wide tests
+#endif
+
 // The three dummy counters forEachCell uses, after the grid's cells.
 constexpr std::size_t kDummyCounters = 3;
 
@@ -182,7 +221,12 @@ constexpr std::size_t kDummyCounters = 3;
 
 GridBroadphase::GridBroadphase(float cellSize) : GridBroadphase(GridSettings{cellSize}) {}
 
-GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(settings) {}
+GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(settings)
+{
+#if defined(HITBOX_GRID_AVX)
+    hasAvx = cpuHasAvx();
+#endif
+}
 
 // Which cells a box covers under a grid: the grid's numbers copied once into a small struct,
 // so the loops keep them in registers (the compiler cannot tell that writing an entry leaves
@@ -474,10 +518,12 @@ void GridBroadphase::startCells()
     std::uint32_t* second = halves[1].cursor.data();
     std::uint32_t total = 0;
     std::size_t tested = 0;
+    std::uint32_t largest = 0;
     for (std::size_t c = 0; c < cellCount; ++c)
     {
         const std::uint32_t inFirst = first[c];
         const std::uint32_t inCell = inFirst + second[c];
+        largest = std::max(largest, inCell);
         start[c] = total;
         tested += std::size_t(inCell) * (inCell - (inCell > 0 ? 1u : 0u)) / 2;
         total += inCell;
@@ -486,8 +532,10 @@ void GridBroadphase::startCells()
     }
     start[cellCount] = total;
     lastStats.pairsTested = tested;
+    largestCell = largest;
     // Two spare entries, one per filling thread (forEachCell's covered = 0 calls write there).
-    growWithRoom(cellEdges, std::size_t(total) + 2);
+    if (!slimEntries)
+        growWithRoom(cellEdges, std::size_t(total) + 2);
     growWithRoom(cellItems, std::size_t(total) + 2);
     // Each half of the cells is tested by one thread: split where half the entries are.
     const std::size_t middle =
@@ -543,6 +591,39 @@ void GridBroadphase::fillCells(Half& half)
     // [/slide]
 }
 
+void GridBroadphase::fillItemWords(Half& half)
+{
+    // Slim entries: fillCells without the edges. At 100,000 boxes the entries' edges are
+    // 2.8 MB written to scattered places (each write a cache miss); the item words alone are
+    // 0.7 MB, which a core's 1 MB cache holds while they are written. testCellRange fetches
+    // the edges of each busy cell from the per-item array (reads, which overlap).
+    const std::size_t width = std::size_t(shape.columns);
+    const std::size_t cellCount = width * std::size_t(shape.rows);
+    std::uint32_t* cursor = half.cursor.data();
+    std::uint32_t* outItems = cellItems.data();
+    const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
+    const Edges* box = edges.data();
+    const std::uint32_t* words = cellWords.data();
+    const CellFinder finder(shape);
+    for (std::size_t i = half.end; i-- > half.begin;)
+    {
+        const std::uint32_t item = std::uint32_t(i);
+        auto put = [cursor, outItems, spare, item](std::size_t target, std::uint32_t covered,
+                                                   std::uint32_t flags)
+        {
+            const std::uint32_t slot = --cursor[target];
+            outItems[selectWithoutBranch(covered, slot, spare)] = item | flags;
+        };
+        const std::uint32_t word = words[i];
+        if (word != kWideBox)
+            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
+                         kFirstColumnFlag, kFirstRowFlag, put);
+        else
+            forEachCell(finder.cellsOf(box[i]), width, cellCount, kFirstColumnFlag, kFirstRowFlag,
+                        put);
+    }
+}
+
 namespace
 {
 
@@ -580,13 +661,104 @@ struct SsePairTest
 };
 #endif
 
+#if defined(HITBOX_GRID_AVX)
+// What testCellsEightWide needs of the grid (it is a free function: see HITBOX_TARGET_AVX).
+struct WideCellTest
+{
+    const std::uint32_t* start = nullptr;
+    const std::uint32_t* items = nullptr;
+    const float* cellEdges = nullptr; // null: slim entries, fetched from itemEdges
+    const float* itemEdges = nullptr;
+    float* gathered = nullptr; // room for the largest cell + 1
+    std::size_t firstCell = 0, endCell = 0;
+    std::uint32_t bothFlags = 0, indexMask = 0;
+};
+
+// Eight-wide compares: the same pair test as SsePairTest, on two entries per instruction (the
+// query in both halves of an AVX register), so the inner loop runs half as often, and its end,
+// which the CPU guesses wrong about once per entry, comes up half as often. The second entry
+// of the last step may be one past the cell: its answer is masked off (`q + 1 < end`).
+HITBOX_TARGET_AVX std::size_t testCellsEightWide(const WideCellTest& test, Pair* out)
+{
+    const std::uint32_t* items = test.items;
+    const std::uint32_t both = test.bothFlags;
+    const std::uint32_t mask = test.indexMask;
+    std::uint32_t fetched = test.start[test.firstCell];
+    const std::uint32_t lastEntry = test.start[test.endCell];
+    const __m128 signs = _mm_set1_ps(-0.f);
+    std::size_t found = 0;
+    for (std::size_t cell = test.firstCell; cell < test.endCell; ++cell)
+    {
+        const std::uint32_t begin = test.start[cell];
+        const std::uint32_t end = test.start[cell + 1];
+        if (end - begin < 2)
+            continue;
+        const float* boxes = test.gathered;
+        if (test.cellEdges == nullptr)
+        {
+            const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
+            for (fetched = std::max(fetched, end); fetched < until; ++fetched)
+                prefetch(test.itemEdges + 4 * std::size_t(items[fetched] & mask));
+            for (std::uint32_t p = begin; p < end; ++p)
+                _mm_store_ps(test.gathered + 4 * std::size_t(p - begin),
+                             _mm_load_ps(test.itemEdges + 4 * std::size_t(items[p] & mask)));
+        }
+        else
+            boxes = test.cellEdges + 4 * std::size_t(begin);
+        for (std::uint32_t p = begin; p + 1 < end; ++p)
+        {
+            const std::uint32_t a = items[p];
+            const std::uint32_t first = a & mask;
+            const __m128 negated = _mm_xor_ps(_mm_load_ps(boxes + 4 * (p - begin)), signs);
+            const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+            const __m256 queries = _mm256_insertf128_ps(_mm256_castps128_ps256(query), query, 1);
+            for (std::uint32_t q = p + 1; q < end; q += 2)
+            {
+                const __m256 two = _mm256_loadu_ps(boxes + 4 * (q - begin));
+                const int lanes = _mm256_movemask_ps(_mm256_cmp_ps(two, queries, _CMP_LT_OQ));
+                const std::uint32_t b0 = items[q];
+                const std::uint32_t b1 = items[q + 1];
+                // Branch-free: `&`, not `&&`.
+                const bool hit0 = ((lanes & 0xF) == 0xF) & (((a | b0) & both) == both);
+                const bool hit1 =
+                    ((lanes >> 4) == 0xF) & (((a | b1) & both) == both) & (q + 1 < end);
+                out[found] = {first, b0 & mask};
+                found += hit0;
+                out[found] = {first, b1 & mask};
+                found += hit1;
+            }
+        }
+    }
+    return found;
+}
+
+// Whether this CPU runs AVX instructions (and the system saves its registers).
+bool cpuHasAvx()
+{
+#if defined(_MSC_VER) && !defined(__clang__)
+    int info[4] = {};
+    __cpuid(info, 1);
+    const bool osSaves = (info[2] & (1 << 27)) != 0;
+    const bool avx = (info[2] & (1 << 28)) != 0;
+    return osSaves && avx && (_xgetbv(0) & 6) == 6;
+#else
+    return __builtin_cpu_supports("avx") != 0;
+#endif
+}
+#endif
+
 } // namespace
 
-template <typename PairTest>
-std::size_t GridBroadphase::testCellRange(const Half& half, Pair* out) const
+template <typename PairTest, bool Slim>
+std::size_t GridBroadphase::testCellRange(Half& half, Pair* out) const
 {
-    const Edges* boxes = cellEdges.data();
     const std::uint32_t* items = cellItems.data();
+    const Edges* itemEdges = edges.data();
+    if (Slim)
+        half.gathered.resize(largestCell);
+    Edges* gathered = half.gathered.data();
+    std::uint32_t fetched = start[half.firstCell]; // slim: entries whose edges were asked for
+    const std::uint32_t lastEntry = start[half.endCell];
     std::size_t found = 0;
     for (std::size_t cell = half.firstCell; cell < half.endCell; ++cell)
     {
@@ -594,15 +766,29 @@ std::size_t GridBroadphase::testCellRange(const Half& half, Pair* out) const
         const std::uint32_t end = start[cell + 1];
         if (end - begin < 2)
             continue; // most cells: nothing to test, and no hashing to find that out
+        // Slim entries: the cell's edges fetched into a small array first, so the inner loop
+        // reads them from the nearest cache. The fetches do not depend on each other.
+        // boxes[p - begin] is entry p's edges either way.
+        if (Slim)
+        {
+            // Ask for the edges of the next kFetchAhead entries now, so they arrive while
+            // this cell is tested (the cache fetches on its own only what is read in order).
+            const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
+            for (fetched = std::max(fetched, end); fetched < until; ++fetched)
+                prefetch(itemEdges + (items[fetched] & kItemIndexMask));
+            for (std::uint32_t p = begin; p < end; ++p)
+                gathered[p - begin] = itemEdges[items[p] & kItemIndexMask];
+        }
+        const Edges* boxes = Slim ? gathered : cellEdges.data() + begin;
         // [slide:grid-test]
         for (std::uint32_t p = begin; p + 1 < end; ++p)
         {
             const std::uint32_t a = items[p];
             const std::uint32_t first = a & kItemIndexMask;
-            const PairTest test(&boxes[p].minX);
+            const PairTest test(&boxes[p - begin].minX);
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
-                const bool overlap = test.overlaps(&boxes[q].minX);
+                const bool overlap = test.overlaps(&boxes[q - begin].minX);
                 // Each pair once: only the top-left cell two boxes share reports them.
                 const std::uint32_t b = items[q];
                 const bool reportHere = ((a | b) & kBothFlags) == kBothFlags;
@@ -619,14 +805,37 @@ std::size_t GridBroadphase::testCellRange(const Half& half, Pair* out) const
 void GridBroadphase::testCells(Half& half)
 {
     Pair* out = half.found.get(); // sized by startCells
+    const bool eightWide = gridSettings.simd && gridSettings.eightWide && hasAvx;
+#if defined(HITBOX_GRID_AVX)
+    if (eightWide)
+    {
+        WideCellTest test;
+        test.start = start.data();
+        test.items = cellItems.data();
+        test.cellEdges = slimEntries ? nullptr : &cellEdges.data()->minX;
+        test.itemEdges = &edges.data()->minX;
+        half.gathered.resize(std::size_t(largestCell) + 1); // + 1: the pair loop reads one past
+        test.gathered = &half.gathered.data()->minX;
+        test.firstCell = half.firstCell;
+        test.endCell = half.endCell;
+        test.bothFlags = kBothFlags;
+        test.indexMask = kItemIndexMask;
+        half.foundCount = testCellsEightWide(test, out);
+        return;
+    }
+#else
+    (void)eightWide; // never true where AVX is not compiled (hasAvx stays false)
+#endif
 #if defined(HITBOX_GRID_SSE)
     if (gridSettings.simd)
     {
-        half.foundCount = testCellRange<SsePairTest>(half, out);
+        half.foundCount = slimEntries ? testCellRange<SsePairTest, true>(half, out)
+                                      : testCellRange<SsePairTest, false>(half, out);
         return;
     }
 #endif
-    half.foundCount = testCellRange<PlainPairTest>(half, out);
+    half.foundCount = slimEntries ? testCellRange<PlainPairTest, true>(half, out)
+                                  : testCellRange<PlainPairTest, false>(half, out);
 }
 
 void GridBroadphase::gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
@@ -711,8 +920,12 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
         hasShape = true;
         extra += runHalves(twoThreads, [this](int h) { countCells(halves[h]); });
     }
+    slimEntries = count >= gridSettings.slimEntriesFromItems;
     startCells();
-    extra += runHalves(twoThreads, [this](int h) { fillCells(halves[h]); });
+    if (slimEntries)
+        extra += runHalves(twoThreads, [this](int h) { fillItemWords(halves[h]); });
+    else
+        extra += runHalves(twoThreads, [this](int h) { fillCells(halves[h]); });
     extra += runHalves(twoThreads, [this](int h) { testCells(halves[h]); });
     gatherPairs(items, pairs);
     workerExtraSeconds = extra;
