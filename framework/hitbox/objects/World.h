@@ -41,10 +41,9 @@
 #include <utility>
 #include <vector>
 
-class GameObject;
-
 namespace hitbox
 {
+class GameObject;
 
 class World
 {
@@ -138,7 +137,7 @@ public:
     [[nodiscard]] BroadphaseLayout getBroadphaseLayout() const;
 
 private:
-    friend class ::GameObject; // its destructor calls forgetDestroyed
+    friend class GameObject; // its destructor calls forgetDestroyed
 
     struct Entry
     {
