@@ -68,7 +68,7 @@ const BallSettings& Ball::getSettings() const
 }
 
 // [slide:pong-collision-response]
-void Ball::collisionResponse(GameObject* other)
+void Ball::collisionResponse(hitbox::GameObject* other)
 {
     // The physics stored the contact first; its normal points out of what we hit, towards
     // the ball (Shapes.h). A wall is the world, so it arrives as nullptr (GameObject.h).
@@ -92,7 +92,7 @@ void Ball::bounceOffWall()
 // [/slide]
 
 // [slide:pong-paddle-angle]
-void Ball::bounceOffPaddleFace(const GameObject& paddle)
+void Ball::bounceOffPaddleFace(const hitbox::GameObject& paddle)
 {
     // Where did it hit? -1 at the paddle's top end, 0 in the middle, +1 at the bottom end.
     // Counting half the ball too, so a ball that only clips the corner still counts as +-1.
@@ -110,7 +110,7 @@ void Ball::bounceOffPaddleFace(const GameObject& paddle)
 }
 // [/slide]
 
-void Ball::bounceOffPaddleEnd(const GameObject& paddle)
+void Ball::bounceOffPaddleEnd(const hitbox::GameObject& paddle)
 {
     // Turn round vertically, and leave faster than the paddle is moving, so the paddle that
     // is chasing the ball does not catch it again in the next step.

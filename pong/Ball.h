@@ -21,7 +21,7 @@ struct BallSettings
     float maxBounceDegrees = 60.f;
 };
 
-class Ball : public GameObject
+class Ball : public hitbox::GameObject
 {
 public:
     explicit Ball(const BallSettings& settings = {});
@@ -40,14 +40,14 @@ public:
     const hitbox::Contact& getLastContact() const;
 
     // other == nullptr: a wall. Otherwise a paddle.
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
 
     const BallSettings& getSettings() const;
 
 private:
     void bounceOffWall();
-    void bounceOffPaddleFace(const GameObject& paddle);
-    void bounceOffPaddleEnd(const GameObject& paddle);
+    void bounceOffPaddleFace(const hitbox::GameObject& paddle);
+    void bounceOffPaddleEnd(const hitbox::GameObject& paddle);
 
     BallSettings settings;
     hitbox::Contact lastContact;

@@ -12,7 +12,7 @@ struct Obstacle
 {
     hitbox::Box box;
     hitbox::Vec2 move;
-    GameObject* object;
+    hitbox::GameObject* object;
 };
 
 hitbox::Box movedBy(hitbox::Box box, hitbox::Vec2 offset)

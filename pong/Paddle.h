@@ -24,7 +24,7 @@ struct PaddleSettings
     float wallGap = 20.f;
 };
 
-class Paddle : public GameObject
+class Paddle : public hitbox::GameObject
 {
 public:
     // side: -1 the left paddle, +1 the right one.

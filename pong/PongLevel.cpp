@@ -33,7 +33,7 @@ Mode modeFromName(const std::string& name)
 
 namespace
 {
-bool anyPlayerKeyPressed(const Input& input)
+bool anyPlayerKeyPressed(const hitbox::Input& input)
 {
     // The framework's own keys never count as "a player pressed something".
     for (int key = 0; key < hitbox::keyCount; ++key)
@@ -42,7 +42,7 @@ bool anyPlayerKeyPressed(const Input& input)
     return false;
 }
 
-float keyAxis(const Input& input, sf::Keyboard::Key upKey, sf::Keyboard::Key downKey)
+float keyAxis(const hitbox::Input& input, sf::Keyboard::Key upKey, sf::Keyboard::Key downKey)
 {
     return (input.isKeyDown(downKey) ? 1.f : 0.f) - (input.isKeyDown(upKey) ? 1.f : 0.f);
 }
@@ -140,7 +140,7 @@ bool PongLevel::isComputer(Side side) const
     return mode == Mode::OnePlayer && side == Side::Right;
 }
 
-void PongLevel::handleTitleKeys(const Input& input)
+void PongLevel::handleTitleKeys(const hitbox::Input& input)
 {
     if (input.isPressed(sf::Keyboard::Key::Num1) || input.isPressed(sf::Keyboard::Key::Numpad1) ||
         input.isPressed(sf::Keyboard::Key::Enter) || input.isPressed(sf::Keyboard::Key::Space))
@@ -163,7 +163,7 @@ void PongLevel::handleTitleKeys(const Input& input)
         ++settings.pointsToWin;
 }
 
-void PongLevel::handleInput(const Input& input, float)
+void PongLevel::handleInput(const hitbox::Input& input, float)
 {
     const bool playerPressedAKey = anyPlayerKeyPressed(input);
     if (input.isPressed(sf::Keyboard::Key::M))

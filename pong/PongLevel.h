@@ -113,7 +113,7 @@ public:
     // Play sound effects from now on. Only for a program with a window (see Sounds.h).
     void enableSound();
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     // The ball and paddles drawn `leftover` of a step past the step before (Level.h).
@@ -150,7 +150,7 @@ public:
 
 private:
     bool isComputer(Side side) const;
-    void handleTitleKeys(const Input& input);
+    void handleTitleKeys(const hitbox::Input& input);
     void playStep(float dt);
     void prepareServe(Side towards);
     void serve();

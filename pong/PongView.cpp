@@ -67,7 +67,7 @@ namespace
 // Draws `object` where it was `leftover` of the way from `stepStart` to where it is now
 // (Nystrom, Game Programming Patterns, "Game Loop": render(lag / MS_PER_UPDATE)). A jump
 // longer than any step's move (a serve from the middle) is drawn where it landed.
-sf::RenderStates between(const GameObject& object, sf::Vector2f stepStart, float leftover)
+sf::RenderStates between(const hitbox::GameObject& object, sf::Vector2f stepStart, float leftover)
 {
     const float longestMove = 60.f;
     const sf::Vector2f move = object.getPosition() - stepStart;

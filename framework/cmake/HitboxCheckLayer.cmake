@@ -7,7 +7,7 @@
 #   STAMP    the file to touch when every include is allowed
 #   ROOT     framework/ (optional): also refuse a forward declaration (`class Input;`) of a
 #            type that a layer this one may not use defines (or compat/ does): it would get
-#            past the include check. KNOWN lists "file:Type" pairs let through for now.
+#            past the include check. No exceptions.
 cmake_minimum_required(VERSION 3.16)
 set(problems "")
 
@@ -65,8 +65,7 @@ foreach(file IN LISTS FILES)
     file(STRINGS "${file}" declarations REGEX "^[ \t]*(class|struct)[ \t]+[A-Za-z_][A-Za-z0-9_]*[ \t]*;")
     foreach(line IN LISTS declarations)
         string(REGEX REPLACE "^[ \t]*(class|struct)[ \t]+([A-Za-z_][A-Za-z0-9_]*).*$" "\\2" name "${line}")
-        get_filename_component(file_name "${file}" NAME)
-        if(name IN_LIST foreign_types AND NOT "${file_name}:${name}" IN_LIST KNOWN)
+        if(name IN_LIST foreign_types)
             string(APPEND problems "  ${file}: ${line} (a type of ${defined_in_${name}}/)\n")
         endif()
     endforeach()

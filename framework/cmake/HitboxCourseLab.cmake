@@ -258,14 +258,11 @@ function(hitbox_add_course_lab lab_folder)
         list(REMOVE_ITEM compat_sources "${compat_folder}/Framework/${class_name}.cpp")
     endforeach()
     if(generation EQUAL 2025)
-        # Hitbox's Animation is the course's Animation; nothing else of the object layer is:
-        # the 2019-24 classes of the same names (GameObject, Input, BaseLevel) must not be
-        # linked into the same program, so the course's classes sit on Hitbox's maths only.
-        if(NOT Animation IN_LIST COURSE_LAB_OWN_CLASSES)
-            list(APPEND compat_sources "${PROJECT_SOURCE_DIR}/framework/hitbox/objects/Animation.cpp")
-        endif()
+        # Built on Hitbox's object layer (GameObject, Animation; Hitbox's own classes are in
+        # namespace hitbox, so the course's names are free). A lab's own Animation.cpp is
+        # linked before the layer's, which is then never pulled in.
         add_library(${library} STATIC ${compat_sources})
-        target_link_libraries(${library} PUBLIC hitbox_sfml hitbox_geometry)
+        target_link_libraries(${library} PUBLIC hitbox_objects)
     else()
         add_library(${library} STATIC ${compat_sources})
         target_link_libraries(${library} PUBLIC hitbox_course_2019)

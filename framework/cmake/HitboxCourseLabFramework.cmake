@@ -24,8 +24,9 @@ endif()
 set(HITBOX_COURSE_FRAMEWORK_HASHES "${CMAKE_CURRENT_LIST_DIR}/../compat/course-framework-hashes.json")
 
 # The course classes that 2019-24 labs may replace: the ones Hitbox implements in
-# framework/compat/ per lab. GameObject, Collision, Input and Animation are Hitbox's own, and
-# BaseLevel and Vector are built once (hitbox_course_2019), so a lab cannot swap them.
+# framework/compat/ per lab. GameObject, Input, BaseLevel and Vector are built once
+# (hitbox_course_2019, on Hitbox's own classes) and Collision and Animation are Hitbox's own,
+# so a lab cannot swap them.
 set(HITBOX_COURSE_2019_REPLACEABLE AudioManager SoundObject MusicObject TileMap GameState)
 # The Framework/ files whose lab copy is always used (see above): never compared with the
 # course's, and left out of the table (tests/course/write_framework_hashes.py asks here).

@@ -69,7 +69,7 @@ hitbox::DebugState SandboxLevel::stateOf(const Obstacle& obstacle) const
     return edgesMeetAnother(obstacle) ? hitbox::DebugState::Touching : hitbox::DebugState::Free;
 }
 
-void SandboxLevel::handleInput(const Input& input, float)
+void SandboxLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.getMousePosition() != lastMouseReading)
         mouse = input.getMousePosition();
@@ -80,7 +80,7 @@ void SandboxLevel::handleInput(const Input& input, float)
 
 hitbox::Contact SandboxLevel::testCursorAgainst(Obstacle& obstacle)
 {
-    GameObject* target = &obstacle.shape;
+    hitbox::GameObject* target = &obstacle.shape;
     if (cursorIsCircle && obstacle.isCircle)
         return Collision::getBoundingCircleContact(&cursor, target);
     if (cursorIsCircle)

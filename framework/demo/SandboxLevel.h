@@ -15,7 +15,7 @@ class SandboxLevel : public hitbox::Level
 public:
     SandboxLevel();
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
@@ -25,7 +25,7 @@ public:
 private:
     struct Obstacle
     {
-        GameObject shape;
+        hitbox::GameObject shape;
         bool isCircle = false;
         bool touching = false;
         hitbox::Contact contact; // how the cursor shape touches it
@@ -39,7 +39,7 @@ private:
     hitbox::DebugState stateOf(const Obstacle& obstacle) const;
 
     std::vector<Obstacle> obstacles;
-    GameObject cursor;
+    hitbox::GameObject cursor;
     bool cursorIsCircle = false;
     // Where the cursor shape starts (over two shapes, so a --screenshot shows contacts);
     // it follows the mouse once the mouse moves.

@@ -23,23 +23,23 @@ Sides sidesOf(const sf::FloatRect& box)
 
 } // namespace
 
-bool MyCollision::canCollide(const GameObject* object)
+bool MyCollision::canCollide(const hitbox::GameObject* object)
 {
     return object != nullptr && object->isAlive() && object->isCollider();
 }
 
-bool MyCollision::canCollide(const GameObject* first, const GameObject* second)
+bool MyCollision::canCollide(const hitbox::GameObject* first, const hitbox::GameObject* second)
 {
     return first != second && canCollide(first) && canCollide(second);
 }
 
-Sides MyCollision::localCollisionBox(const GameObject& object)
+Sides MyCollision::localCollisionBox(const hitbox::GameObject& object)
 {
     return sidesOf(object.getLocalCollisionBox());
 }
 
 // [slide:lab00-world-box]
-Sides MyCollision::worldBox(const GameObject& object)
+Sides MyCollision::worldBox(const hitbox::GameObject& object)
 {
     // BEGIN TASK 1: the collision box in world coordinates
     // The local box is measured from the origin point, but getTransform() expects the
@@ -69,7 +69,7 @@ Sides MyCollision::worldBox(const GameObject& object)
 // [/slide]
 
 // [slide:lab00-box-box]
-bool MyCollision::checkBoundingBox(GameObject* first, GameObject* second)
+bool MyCollision::checkBoundingBox(hitbox::GameObject* first, hitbox::GameObject* second)
 {
     // BEGIN TASK 2: box against box
     if (!canCollide(first, second))
@@ -87,7 +87,7 @@ bool MyCollision::checkBoundingBox(GameObject* first, GameObject* second)
 }
 // [/slide]
 
-bool MyCollision::checkBoundingBox(GameObject* object, sf::Vector2f point)
+bool MyCollision::checkBoundingBox(hitbox::GameObject* object, sf::Vector2f point)
 {
     // BEGIN TASK 3: a point in a box
     if (!canCollide(object))
@@ -103,7 +103,7 @@ bool MyCollision::checkBoundingBox(GameObject* object, sf::Vector2f point)
 }
 
 // [slide:lab00-bounding-circle]
-WorldCircle MyCollision::worldCircle(const GameObject& object)
+WorldCircle MyCollision::worldCircle(const hitbox::GameObject& object)
 {
     // BEGIN TASK 4: the bounding circle
     // The circle inside the collision box, not inside the picture: its radius is half the
@@ -124,7 +124,7 @@ WorldCircle MyCollision::worldCircle(const GameObject& object)
     // END TASK 4
 }
 
-bool MyCollision::checkBoundingCircle(GameObject* first, GameObject* second)
+bool MyCollision::checkBoundingCircle(hitbox::GameObject* first, hitbox::GameObject* second)
 {
     // BEGIN TASK 4: the bounding circle
     if (!canCollide(first, second))
@@ -145,7 +145,7 @@ bool MyCollision::checkBoundingCircle(GameObject* first, GameObject* second)
 // [/slide]
 
 // [slide:lab00-circle-box]
-bool MyCollision::checkCircleBox(GameObject* circleObject, GameObject* boxObject)
+bool MyCollision::checkCircleBox(hitbox::GameObject* circleObject, hitbox::GameObject* boxObject)
 {
     // BEGIN TASK 5: circle against box
     if (!canCollide(circleObject, boxObject))

@@ -9,7 +9,10 @@
 
 #include <SFML/System/Vector2.hpp>
 
+namespace hitbox
+{
 class GameObject;
+}
 
 // A box by its four sides in world pixels (left <= right, top <= bottom).
 struct Sides
@@ -34,23 +37,23 @@ public:
 
     // Given: the framework's rule for objects that cannot collide. False for a null
     // pointer, a dead object, one that is not a collider, or an object against itself.
-    static bool canCollide(const GameObject* object);
-    static bool canCollide(const GameObject* first, const GameObject* second);
+    static bool canCollide(const hitbox::GameObject* object);
+    static bool canCollide(const hitbox::GameObject* first, const hitbox::GameObject* second);
     // Given: the object's collision box measured from its origin point, in unscaled
     // pixels, turned the right way round (a negative size spans backwards, as in SFML).
-    static Sides localCollisionBox(const GameObject& object);
+    static Sides localCollisionBox(const hitbox::GameObject& object);
 
     // Task 1: the collision box in world coordinates: the local box moved, scaled and
     // rotated with the object; when rotated, the smallest upright box around it.
-    static Sides worldBox(const GameObject& object);
+    static Sides worldBox(const hitbox::GameObject& object);
     // Task 2: do the two objects' world boxes overlap (touching is not overlapping)?
-    static bool checkBoundingBox(GameObject* first, GameObject* second);
+    static bool checkBoundingBox(hitbox::GameObject* first, hitbox::GameObject* second);
     // Task 3: is a world point strictly inside the object's world box?
-    static bool checkBoundingBox(GameObject* object, sf::Vector2f point);
+    static bool checkBoundingBox(hitbox::GameObject* object, sf::Vector2f point);
     // Task 4: the circle inscribed in the collision box (centre of the box, radius half
     // its shorter side, after scaling), and do two objects' circles overlap?
-    static WorldCircle worldCircle(const GameObject& object);
-    static bool checkBoundingCircle(GameObject* first, GameObject* second);
+    static WorldCircle worldCircle(const hitbox::GameObject& object);
+    static bool checkBoundingCircle(hitbox::GameObject* first, hitbox::GameObject* second);
     // Task 5: the first object's circle against the second object's world box.
-    static bool checkCircleBox(GameObject* circleObject, GameObject* boxObject);
+    static bool checkCircleBox(hitbox::GameObject* circleObject, hitbox::GameObject* boxObject);
 };

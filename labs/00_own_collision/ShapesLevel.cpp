@@ -19,9 +19,9 @@ const sf::Color probeColor{200, 150, 60};
 const sf::Color hitColor{210, 70, 60};
 
 // An object centred on its position (its origin point in the middle of the picture).
-GameObject centred(sf::Vector2f position, sf::Vector2f size)
+hitbox::GameObject centred(sf::Vector2f position, sf::Vector2f size)
 {
-    GameObject object;
+    hitbox::GameObject object;
     object.setSize(size);
     object.setOrigin({size.x / 2.f, size.y / 2.f});
     object.setPosition(position);
@@ -29,7 +29,7 @@ GameObject centred(sf::Vector2f position, sf::Vector2f size)
 }
 
 // Turns an object by `degrees` clockwise (SFML 3 takes an sf::Angle, SFML 2 a float).
-void turn(GameObject& object, float degrees)
+void turn(hitbox::GameObject& object, float degrees)
 {
     hitbox::setRotationDegrees(object, hitbox::getRotationDegrees(object) + degrees);
 }
@@ -44,25 +44,25 @@ sf::FloatRect rectangleOf(const Sides& sides)
 ShapesLevel::ShapesLevel()
 {
     // An upright box, its origin at the top-left corner (the default).
-    GameObject upright;
+    hitbox::GameObject upright;
     upright.setSize({200.f, 120.f});
     upright.setPosition({90.f, 90.f});
     shapes.push_back({upright, false, false});
 
     // A box turned by 30 degrees, whose collision box is smaller than its picture.
-    GameObject turned = centred({560.f, 190.f}, {220.f, 120.f});
+    hitbox::GameObject turned = centred({560.f, 190.f}, {220.f, 120.f});
     turn(turned, 30.f);
     turned.setCollisionBox(-80.f, -40.f, 160.f, 80.f);
     shapes.push_back({turned, false, false});
 
     // A box stretched by its scale.
-    GameObject stretched = centred({960.f, 200.f}, {120.f, 120.f});
+    hitbox::GameObject stretched = centred({960.f, 200.f}, {120.f, 120.f});
     stretched.setScale({1.6f, 0.8f});
     shapes.push_back({stretched, false, false});
 
     // A ball, and a ball drawn at half its size by its scale.
     shapes.push_back({centred({260.f, 470.f}, {140.f, 140.f}), true, false});
-    GameObject halfBall = centred({640.f, 500.f}, {200.f, 200.f});
+    hitbox::GameObject halfBall = centred({640.f, 500.f}, {200.f, 200.f});
     halfBall.setScale({0.5f, 0.5f});
     shapes.push_back({halfBall, true, false});
 
@@ -73,7 +73,7 @@ ShapesLevel::ShapesLevel()
     update(0.f); // the first frame already shows what the probe hits
 }
 
-void ShapesLevel::handleInput(const Input& input, float)
+void ShapesLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.getMousePosition() != lastMouseReading)
         probe.object.setPosition(input.getMousePosition());

@@ -18,7 +18,7 @@ class ShapesLevel : public hitbox::Level
 public:
     ShapesLevel();
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
@@ -31,7 +31,7 @@ public:
 private:
     struct Shape
     {
-        GameObject object;
+        hitbox::GameObject object;
         bool isCircle = false;
         bool hit = false;
     };

@@ -53,7 +53,7 @@ PointInBoxLevel::PointInBoxLevel()
 {
     for (const BoxSetup& setup : boxSetups)
     {
-        GameObject box;
+        hitbox::GameObject box;
         box.setSize(setup.size);
         box.setPosition(setup.position);
         box.setFillColor(setup.color);
@@ -71,7 +71,7 @@ PointInBoxLevel::PointInBoxLevel()
     // (one mistake must cost one task). The first step, 1/120 s in, shows the hovered box.
 }
 
-void PointInBoxLevel::handleInput(const Input& input, float)
+void PointInBoxLevel::handleInput(const hitbox::Input& input, float)
 {
     // Follow the mouse once it moves (until then, keep the starting point: see the header).
     if (input.getMousePosition() != lastMouseReading)
@@ -235,7 +235,7 @@ int PointInBoxLevel::getBoxCount() const
     return static_cast<int>(boxes.size());
 }
 
-const GameObject& PointInBoxLevel::getBox(int index) const
+const hitbox::GameObject& PointInBoxLevel::getBox(int index) const
 {
     return boxes.at(static_cast<std::size_t>(index));
 }

@@ -26,7 +26,7 @@ public:
 
     PointInBoxLevel();
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
@@ -35,7 +35,7 @@ public:
 
     // What the player sees, for the screen and for the grading tests.
     int getBoxCount() const;
-    const GameObject& getBox(int index) const;
+    const hitbox::GameObject& getBox(int index) const;
     int getHoveredBox() const;  // the box under the mouse, or noBox
     int getSelectedBox() const; // the box being dragged, or noBox
     float getZoom() const;
@@ -56,7 +56,7 @@ public:
     sf::Vector2f windowToScene(sf::Vector2f windowPoint) const;
 
 private:
-    std::vector<GameObject> boxes;
+    std::vector<hitbox::GameObject> boxes;
     float zoom = 1.f;
 
     // The mouse as the last input step saw it. It starts over the second box so that a

@@ -54,7 +54,7 @@ void Ball::update(float dt)
     // [/slide]
 }
 
-void Ball::collisionResponse(GameObject*)
+void Ball::collisionResponse(hitbox::GameObject*)
 {
     ++hitCount;
     flash = 1.f;

@@ -11,7 +11,7 @@
 constexpr float ballRadius = 28.f; // pixels
 constexpr float ballSpeed = 260.f; // pixels per second, every ball's speed at the start
 
-class Ball : public GameObject
+class Ball : public hitbox::GameObject
 {
 public:
     Ball(sf::Vector2f center, sf::Vector2f startVelocity, sf::Color color);
@@ -19,7 +19,7 @@ public:
     // Moves the ball, then keeps it inside the world (the walls are the world's edges).
     void update(float dt) override;
     // Something hit the ball: another ball, or a wall when `other` is nullptr.
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
 
     void setWorldSize(sf::Vector2f size);
     float getRadius() const;

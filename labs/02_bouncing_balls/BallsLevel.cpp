@@ -63,7 +63,7 @@ void BallsLevel::addRandomBall()
     }
 }
 
-void BallsLevel::handleInput(const Input& input, float)
+void BallsLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.isPressed(sf::Keyboard::Key::Space) && getBallCount() < maxBalls)
         addRandomBall();

@@ -21,7 +21,7 @@ public:
     // Space adds balls up to this many (and --balls accepts 2 to this many).
     static constexpr int maxBalls = 60;
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

@@ -63,7 +63,7 @@ void Square::update(float dt)
     // END TASK 2
 }
 
-void Square::collisionResponse(GameObject*)
+void Square::collisionResponse(hitbox::GameObject*)
 {
     ++hitCount;
     flash = 1.f;

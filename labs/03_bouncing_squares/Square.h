@@ -14,7 +14,7 @@ constexpr float spriteSize = 100.f;  // the whole picture, margin included (pixe
 constexpr float crateSize = 64.f;    // the solid crate in the middle of the picture
 constexpr float squareSpeed = 220.f; // pixels per second, every square's speed at the start
 
-class Square : public GameObject
+class Square : public hitbox::GameObject
 {
 public:
     Square(sf::Vector2f center, sf::Vector2f startVelocity, sf::Color color);
@@ -22,7 +22,7 @@ public:
     // Moves the square, then keeps its collision box inside the world.
     void update(float dt) override;
     // Something hit the square: another square, or a wall when `other` is nullptr.
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
 
     void setWorldSize(sf::Vector2f size);
     // How many hits collisionResponse has been told about (walls and squares).

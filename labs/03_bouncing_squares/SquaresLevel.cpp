@@ -56,7 +56,7 @@ void SquaresLevel::addRandomSquare()
     }
 }
 
-void SquaresLevel::handleInput(const Input& input, float)
+void SquaresLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.isPressed(sf::Keyboard::Key::Space) && getSquareCount() < maxSquares)
         addRandomSquare();

@@ -21,7 +21,7 @@ public:
     // Space adds squares up to this many (and --squares accepts 2 to this many).
     static constexpr int maxSquares = 40;
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

@@ -15,7 +15,7 @@ enum class Lane
     Swept     // test the whole move of each step
 };
 
-class Bullet : public GameObject
+class Bullet : public hitbox::GameObject
 {
 public:
     Bullet(Lane lane, sf::Vector2f start, float speed);

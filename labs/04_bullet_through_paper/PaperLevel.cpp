@@ -98,7 +98,7 @@ const hitbox::Box& PaperLevel::getWall() const
     return wall;
 }
 
-void PaperLevel::handleInput(const Input& input, float)
+void PaperLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.isPressed(sf::Keyboard::Key::Up))
         nextSpeed = std::min(nextSpeed * speedFactor, maxSpeed);

@@ -23,7 +23,7 @@ class PaperLevel : public hitbox::Level
 public:
     PaperLevel();
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

@@ -79,7 +79,7 @@ RayLevel::RayLevel(std::vector<hitbox::Box> solidBoxes, sf::Vector2f playerStart
     trail.push_back(player.getPosition() + playerSize / 2.f);
 }
 
-void RayLevel::handleInput(const Input& input, float)
+void RayLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.getMousePosition() != lastMouseReading)
         mouse = input.getMousePosition();
@@ -119,7 +119,7 @@ void RayLevel::setMoveDirection(sf::Vector2f direction)
     moveDirection = direction;
 }
 
-const GameObject& RayLevel::getPlayer() const
+const hitbox::GameObject& RayLevel::getPlayer() const
 {
     return player;
 }

@@ -42,7 +42,7 @@ public:
     // Any set of solid boxes and a player box starting at `playerStart` (tests use this).
     RayLevel(std::vector<hitbox::Box> solids, sf::Vector2f playerStart);
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
@@ -58,7 +58,7 @@ public:
     // Where the player wants to go: each axis -1, 0 or 1 (like holding the arrow keys).
     void setMoveDirection(sf::Vector2f direction);
 
-    const GameObject& getPlayer() const;
+    const hitbox::GameObject& getPlayer() const;
     const std::vector<hitbox::Box>& getSolids() const;
     // The round pillars (task 4): only the lab's own field has them.
     const std::vector<hitbox::Circle>& getPillars() const;
@@ -77,7 +77,7 @@ private:
 
     std::vector<hitbox::Box> solids;
     std::vector<hitbox::Circle> pillars;
-    GameObject player;
+    hitbox::GameObject player;
     sf::Vector2f moveDirection{-1.f, 1.f}; // the demo: down-left along the tiled floor
     bool keyboardControl = false;          // a movement key has been pressed
     bool timeOrder = true;

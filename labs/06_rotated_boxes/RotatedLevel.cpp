@@ -154,7 +154,7 @@ bool RotatedLevel::isOverlapping(std::size_t i) const
     return i < overlapping.size() && overlapping[i];
 }
 
-void RotatedLevel::handleInput(const Input& input, float)
+void RotatedLevel::handleInput(const hitbox::Input& input, float)
 {
     const hitbox::Vec2 mouse = hitbox::toVec2(input.getMousePosition());
     if (input.isLeftMousePressed())

@@ -49,7 +49,7 @@ public:
     // it). The lecture's animation uses it to show the SAT axes turning with the shape.
     void setSpin(float degreesPerSecond);
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

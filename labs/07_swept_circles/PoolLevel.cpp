@@ -110,7 +110,7 @@ hitbox::Box PoolLevel::getTable() const
     return table;
 }
 
-void PoolLevel::handleInput(const Input& input, float)
+void PoolLevel::handleInput(const hitbox::Input& input, float)
 {
     mouse = hitbox::toVec2(input.getMousePosition());
     if (input.isLeftMousePressed() || input.isPressed(sf::Keyboard::Key::Space))

@@ -44,7 +44,7 @@ public:
     // Any balls on a table whose playing area (inside the cushions) is `table`.
     PoolLevel(std::vector<Ball> balls, hitbox::Box table);
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

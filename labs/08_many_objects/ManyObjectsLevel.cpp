@@ -212,7 +212,7 @@ void ManyObjectsLevel::spawnLayersScene()
     fireAngle = 0.f;
 }
 
-void ManyObjectsLevel::handleInput(const Input& input, float)
+void ManyObjectsLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.isPressed(sf::Keyboard::Key::Num1))
         startScene(Scene::Crowd, 1000);

@@ -102,7 +102,7 @@ class ManyObjectsLevel : public hitbox::Level, private ManyObjectsState
 public:
     explicit ManyObjectsLevel(const LabSettings& settings = {});
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

@@ -169,7 +169,7 @@ PlatformerLevel::PlatformerLevel(TileMap levelMap) : map(std::move(levelMap))
         }
 }
 
-void PlatformerLevel::handleInput(const Input& input, float)
+void PlatformerLevel::handleInput(const hitbox::Input& input, float)
 {
     holdingLeft = input.isKeyDown(sf::Keyboard::Key::A) || input.isKeyDown(sf::Keyboard::Key::Left);
     holdingRight =

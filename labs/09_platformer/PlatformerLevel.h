@@ -66,7 +66,7 @@ public:
     // below it: the player, taller than a tile, could not start there without a tile inside it.
     explicit PlatformerLevel(TileMap map);
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

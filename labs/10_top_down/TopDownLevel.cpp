@@ -108,7 +108,7 @@ void TopDownLevel::placePlayer(hitbox::Vec2 feet)
     player.health = playerHealth;
 }
 
-void TopDownLevel::handleInput(const Input& input, float)
+void TopDownLevel::handleInput(const hitbox::Input& input, float)
 {
     heldDirection = {0.f, 0.f};
     if (input.isKeyDown(sf::Keyboard::Key::A) || input.isKeyDown(sf::Keyboard::Key::Left))

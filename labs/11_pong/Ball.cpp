@@ -46,7 +46,7 @@ bool Ball::bounceOffWalls()
     // END TASK 2
 }
 
-void Ball::collisionResponse(GameObject* other)
+void Ball::collisionResponse(hitbox::GameObject* other)
 {
     if (other == nullptr)
         return;

@@ -7,7 +7,7 @@
 
 class Paddle;
 
-class Ball : public GameObject
+class Ball : public hitbox::GameObject
 {
 public:
     Ball(); // ballSize square, standing still
@@ -23,7 +23,7 @@ public:
     // Task 3: the ball hit `other` (a paddle; nullptr, the world, never happens in Pong).
     // It leaves away from the paddle at the same speed, at an angle set only by where it
     // hit: flat from the middle, steeper towards the ends, maxBounceDegrees at most.
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
 };
 
 // Task 5: moves `ball` by velocity * dt, swept against both paddles and the moves they

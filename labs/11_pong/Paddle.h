@@ -9,7 +9,7 @@
 
 #include "hitbox/objects/GameObject.h"
 
-class Paddle : public GameObject
+class Paddle : public hitbox::GameObject
 {
 public:
     // A paddle whose centre stands at `centerX`, halfway down the court.

@@ -19,7 +19,7 @@ const sf::Color lineColor{90, 96, 112};
 const sf::Color scoreColor{150, 156, 172};
 
 // -1 while `up` is held, +1 while `down` is, 0 for neither or both.
-float keyDirection(const Input& input, sf::Keyboard::Key up, sf::Keyboard::Key down)
+float keyDirection(const hitbox::Input& input, sf::Keyboard::Key up, sf::Keyboard::Key down)
 {
     return (input.isKeyDown(down) ? 1.f : 0.f) - (input.isKeyDown(up) ? 1.f : 0.f);
 }
@@ -39,7 +39,7 @@ PongLevel::PongLevel(unsigned seed, int players)
     serveTowards(std::bernoulli_distribution(0.5)(random) ? 1 : -1);
 }
 
-void PongLevel::handleInput(const Input& input, float)
+void PongLevel::handleInput(const hitbox::Input& input, float)
 {
     leftDirection = keyDirection(input, sf::Keyboard::Key::W, sf::Keyboard::Key::S);
     rightDirection = keyDirection(input, sf::Keyboard::Key::Up, sf::Keyboard::Key::Down);

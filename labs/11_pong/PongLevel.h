@@ -23,7 +23,7 @@ public:
     // both sides (a demonstration, and what --headless shows).
     explicit PongLevel(unsigned seed = 1, int players = 1);
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;

@@ -35,7 +35,7 @@ CrowdLevel::CrowdLevel(int boxCount, unsigned seed)
     update(0.f);
 }
 
-void CrowdLevel::handleInput(const Input& input, float)
+void CrowdLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.isPressed(sf::Keyboard::Key::M))
         method = static_cast<Method>((static_cast<int>(method) + 1) % 3);

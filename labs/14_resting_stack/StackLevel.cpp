@@ -85,7 +85,7 @@ void StackLevel::restack()
     stepsInWindow = 0;
 }
 
-void StackLevel::handleInput(const Input& input, float)
+void StackLevel::handleInput(const hitbox::Input& input, float)
 {
     if (input.isPressed(sf::Keyboard::Key::Up))
         passes[1] = std::min(passes[1] + 1, maxPasses);

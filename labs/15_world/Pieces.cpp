@@ -13,7 +13,7 @@ Kind Piece::getKind() const
     return kind;
 }
 
-Kind kindOf(const GameObject& object)
+Kind kindOf(const hitbox::GameObject& object)
 {
     return static_cast<const Piece&>(object).getKind();
 }
@@ -21,7 +21,7 @@ Kind kindOf(const GameObject& object)
 namespace
 {
 // A square of `size` pixels centred on `center`.
-void makeSquare(GameObject& object, sf::Vector2f center, float size)
+void makeSquare(hitbox::GameObject& object, sf::Vector2f center, float size)
 {
     object.setSize({size, size});
     object.setOrigin({size / 2.f, size / 2.f});
@@ -30,7 +30,7 @@ void makeSquare(GameObject& object, sf::Vector2f center, float size)
 
 // Keeps a centred square of `size` inside `world`; returns which way it was pushed back
 // (-1, 0 or +1 on each axis).
-sf::Vector2f keepInside(GameObject& object, float size, sf::Vector2f world)
+sf::Vector2f keepInside(hitbox::GameObject& object, float size, sf::Vector2f world)
 {
     const float half = size / 2.f;
     const sf::Vector2f center = object.getPosition();
@@ -60,7 +60,7 @@ void Player::setWorldSize(sf::Vector2f size)
     worldSize = size;
 }
 
-void Player::collisionResponse(GameObject* other)
+void Player::collisionResponse(hitbox::GameObject* other)
 {
     if (other == nullptr || kindOf(*other) != Kind::Enemy)
         return;
@@ -118,7 +118,7 @@ void Enemy::setWorldSize(sf::Vector2f size)
     worldSize = size;
 }
 
-void Enemy::collisionResponse(GameObject* other)
+void Enemy::collisionResponse(hitbox::GameObject* other)
 {
     if (other == nullptr || kindOf(*other) != Kind::Enemy)
         return;

@@ -32,7 +32,7 @@ constexpr std::uint32_t coin = 1u << 1;
 constexpr std::uint32_t enemy = 1u << 2;
 } // namespace layer
 
-class Piece : public GameObject
+class Piece : public hitbox::GameObject
 {
 public:
     explicit Piece(Kind kind);
@@ -43,7 +43,7 @@ private:
 };
 
 // What `object` is (every object in this lab is a Piece).
-Kind kindOf(const GameObject& object);
+Kind kindOf(const hitbox::GameObject& object);
 
 class Player : public Piece
 {
@@ -55,7 +55,7 @@ public:
     void setWorldSize(sf::Vector2f size);
     // An enemy hurts the player every time it is told about one, and starts it blinking.
     // (Task 3's game rule is what stops a blinking player being hurt again.)
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
 
     bool isBlinking() const;
     float getBlinkLeft() const; // seconds
@@ -72,7 +72,7 @@ class Coin : public Piece
 public:
     explicit Coin(sf::Vector2f center);
     // Task 2 (Rules.cpp): touched by the player, the coin is collected.
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
     bool isCollected() const;
 
 private:
@@ -88,7 +88,7 @@ public:
     void update(float dt) override;
     void setWorldSize(sf::Vector2f size);
     // Another enemy: head away from it (they bump). Anything else: keep going.
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
     int getBumpCount() const;
 
 private:

@@ -25,7 +25,7 @@ Layers layersFor(Kind kind)
 // END TASK 1
 
 // BEGIN TASK 2: collect a coin the player touches
-void Coin::collisionResponse(GameObject* other)
+void Coin::collisionResponse(hitbox::GameObject* other)
 {
     if (other == nullptr || kindOf(*other) != Kind::Player)
         return;
@@ -54,7 +54,7 @@ int removeCollectedCoins(hitbox::World& world, std::vector<std::unique_ptr<Coin>
     return removed;
 }
 // STARTER TASK 2
-// void Coin::collisionResponse(GameObject*) {}
+// void Coin::collisionResponse(hitbox::GameObject*) {}
 //
 // int removeCollectedCoins(hitbox::World&, std::vector<std::unique_ptr<Coin>>&)
 // {
@@ -63,18 +63,18 @@ int removeCollectedCoins(hitbox::World& world, std::vector<std::unique_ptr<Coin>
 // END TASK 2
 
 // BEGIN TASK 3: a blinking player is not tested against enemies
-bool mayMeetNow(const GameObject& first, const GameObject& second)
+bool mayMeetNow(const hitbox::GameObject& first, const hitbox::GameObject& second)
 {
     // A hurt player blinks and cannot be hurt again until it stops: skip the pair before
     // its exact test, rather than test it and then ignore the hit.
-    const auto blinkingPlayer = [](const GameObject& object)
+    const auto blinkingPlayer = [](const hitbox::GameObject& object)
     { return kindOf(object) == Kind::Player && static_cast<const Player&>(object).isBlinking(); };
     const bool playerAndEnemy = (blinkingPlayer(first) && kindOf(second) == Kind::Enemy) ||
                                 (blinkingPlayer(second) && kindOf(first) == Kind::Enemy);
     return !playerAndEnemy;
 }
 // STARTER TASK 3
-// bool mayMeetNow(const GameObject&, const GameObject&)
+// bool mayMeetNow(const hitbox::GameObject&, const hitbox::GameObject&)
 // {
 //     return true; // no rule yet: every pair the layers allow is tested
 // }

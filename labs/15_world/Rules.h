@@ -31,4 +31,4 @@ inline bool mayEverMeet(const Layers& first, const Layers& second)
 int removeCollectedCoins(hitbox::World& world, std::vector<std::unique_ptr<Coin>>& coins);
 
 // Task 3: the game rule (World::setRule): false for a pair that must not be tested now.
-bool mayMeetNow(const GameObject& first, const GameObject& second);
+bool mayMeetNow(const hitbox::GameObject& first, const hitbox::GameObject& second);

@@ -99,7 +99,7 @@ void WorldLevel::setAutopilot(bool on)
         player->setVelocity({});
 }
 
-void WorldLevel::handleInput(const Input& input, float)
+void WorldLevel::handleInput(const hitbox::Input& input, float)
 {
     mouse = input.getMousePosition();
     if (input.isPressed(sf::Keyboard::Key::R))
@@ -116,7 +116,7 @@ void WorldLevel::handleInput(const Input& input, float)
 
 // The arrow keys move the player (and switch the autopilot off); the autopilot heads for
 // the nearest coin, so a run with no keyboard (--headless, the screenshot) still plays.
-void WorldLevel::steerPlayer(const Input& input)
+void WorldLevel::steerPlayer(const hitbox::Input& input)
 {
     sf::Vector2f direction;
     direction.x = (input.isKeyDown(sf::Keyboard::Key::Right) ? 1.f : 0.f) -
@@ -197,13 +197,13 @@ void WorldLevel::renderDebug(hitbox::DebugRenderer& debug) const
     hitbox::drawBroadphase(debug, world.getBroadphaseLayout());
     // The panel: why the pair under the mouse (else the last pair that met or parted) does
     // or does not collide.
-    std::vector<const GameObject*> objects{player.get()};
+    std::vector<const hitbox::GameObject*> objects{player.get()};
     for (const std::unique_ptr<Coin>& coin : coins)
         objects.push_back(coin.get());
     for (const std::unique_ptr<Enemy>& enemy : enemies)
         objects.push_back(enemy.get());
     hitbox::explainInPanel(debug, world, hitbox::toVec2(mouse), objects);
-    const auto collided = [this](const GameObject& object)
+    const auto collided = [this](const hitbox::GameObject& object)
     {
         for (const auto& pair : world.getCollisions())
             if (pair.first == &object || pair.second == &object)

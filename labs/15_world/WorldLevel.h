@@ -25,7 +25,7 @@ public:
     // Coins and enemies in random places from `seed`; the player in the middle, on autopilot.
     explicit WorldLevel(unsigned seed = 1);
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
@@ -54,7 +54,7 @@ private:
     void addRandomCoin();
     void addRandomEnemy();
     void wander(float dt);
-    void steerPlayer(const Input& input);
+    void steerPlayer(const hitbox::Input& input);
 
     std::mt19937 random;
     sf::Vector2f mouse; // world coordinates: F1 explains the pair under it

@@ -5,7 +5,7 @@
 // BEGIN TASK 1: a plate that lets go: count with enter and exit events
 // The World says when something starts (Enter) and stops (Exit) colliding, also when it is
 // removed or destroyed while on the plate: count who is on it, and never miss a leaver.
-void PressurePlate::collisionResponse(GameObject*) {}
+void PressurePlate::collisionResponse(hitbox::GameObject*) {}
 
 void PressurePlate::onCollisionEnter(const hitbox::CollisionEvent&)
 {
@@ -22,7 +22,7 @@ bool PressurePlate::isPressed() const
     return standingOn > 0;
 }
 // STARTER TASK 1
-// void PressurePlate::collisionResponse(GameObject*)
+// void PressurePlate::collisionResponse(hitbox::GameObject*)
 // {
 //     // Remember that something stood on the plate, so it is not counted twice.
 //     if (!alreadyPressed)

@@ -81,7 +81,7 @@ void DepotLevel::start()
     gateOpen = false;
 }
 
-void DepotLevel::handleInput(const Input& input, float)
+void DepotLevel::handleInput(const hitbox::Input& input, float)
 {
     mouse = input.getMousePosition();
     if (input.isPressed(sf::Keyboard::Key::R))
@@ -183,7 +183,8 @@ void DepotLevel::render(sf::RenderTarget& target) const
 
 void DepotLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
-    std::vector<const GameObject*> objects{plate.get(), gateway.get(), dropZone.get(), guard.get()};
+    std::vector<const hitbox::GameObject*> objects{plate.get(), gateway.get(), dropZone.get(),
+                                                   guard.get()};
     for (const std::unique_ptr<Crate>& crate : crates)
         objects.push_back(crate.get());
     // The panel: why the pair under the mouse (else the last pair that met or parted) does or
@@ -198,11 +199,11 @@ void DepotLevel::renderDebug(hitbox::DebugRenderer& debug) const
     }
     else
         hitbox::explainInPanel(debug, world, hitbox::toVec2(mouse), objects);
-    for (const GameObject* object : objects)
+    for (const hitbox::GameObject* object : objects)
     {
         const hitbox::Box box = hitbox::toBox(object->getCollisionBox());
         hitbox::DebugState state = hitbox::DebugState::Free;
-        for (const GameObject* other : objects)
+        for (const hitbox::GameObject* other : objects)
         {
             if (other == object)
                 continue;
@@ -241,12 +242,12 @@ const PressurePlate& DepotLevel::getPlate() const
     return *plate;
 }
 
-const GameObject& DepotLevel::getGuard() const
+const hitbox::GameObject& DepotLevel::getGuard() const
 {
     return *guard;
 }
 
-const GameObject& DepotLevel::getGateway() const
+const hitbox::GameObject& DepotLevel::getGateway() const
 {
     return *gateway;
 }

@@ -30,7 +30,7 @@ class DepotLevel : public hitbox::Level
 public:
     DepotLevel();
 
-    void handleInput(const Input& input, float dt) override;
+    void handleInput(const hitbox::Input& input, float dt) override;
     void update(float dt) override;
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
@@ -40,8 +40,8 @@ public:
 
     // For the grading tests.
     [[nodiscard]] const PressurePlate& getPlate() const;
-    [[nodiscard]] const GameObject& getGuard() const;
-    [[nodiscard]] const GameObject& getGateway() const;
+    [[nodiscard]] const hitbox::GameObject& getGuard() const;
+    [[nodiscard]] const hitbox::GameObject& getGateway() const;
     [[nodiscard]] int getCrateCount() const;
     [[nodiscard]] const Crate& getCrate(int index) const;
     [[nodiscard]] int getDelivered() const;

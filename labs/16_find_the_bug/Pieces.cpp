@@ -11,7 +11,7 @@ Kind Piece::getKind() const
     return kind;
 }
 
-Kind kindOf(const GameObject& object)
+Kind kindOf(const hitbox::GameObject& object)
 {
     return static_cast<const Piece&>(object).getKind();
 }

@@ -33,7 +33,7 @@ constexpr std::uint32_t zone = 1u << 1;
 constexpr std::uint32_t guard = 1u << 2;
 } // namespace layer
 
-class Piece : public GameObject
+class Piece : public hitbox::GameObject
 {
 public:
     // A box of `size` with its top-left corner at `topLeft`.
@@ -45,7 +45,7 @@ private:
 };
 
 // What `object` is (every object in this lab is a Piece).
-[[nodiscard]] Kind kindOf(const GameObject& object);
+[[nodiscard]] Kind kindOf(const hitbox::GameObject& object);
 
 class Crate : public Piece
 {
@@ -64,7 +64,7 @@ class PressurePlate : public Piece
 {
 public:
     PressurePlate(sf::Vector2f topLeft, sf::Vector2f size);
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
     void onCollisionEnter(const hitbox::CollisionEvent& event) override;
     void onCollisionExit(const hitbox::CollisionEvent& event) override;
     [[nodiscard]] bool isPressed() const;

@@ -164,7 +164,7 @@ public:
     explicit ScriptedHost(std::vector<float> frames) : frames(std::move(frames)) {}
     bool isRunning() const override { return next < frames.size(); }
     float secondsSinceLastFrame() override { return frames[next++]; }
-    void processInput(Input&) override { ++inputs; }
+    void processInput(hitbox::Input&) override { ++inputs; }
     int stepsToRun(int due) override { return due; }
     void render(const hitbox::Level& level, float leftover) override
     {

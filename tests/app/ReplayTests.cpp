@@ -24,15 +24,15 @@ namespace
 {
 
 // Every state one key can be in after a frame of events, reached through Input's setters.
-std::vector<Input> everyKeyState(int key)
+std::vector<hitbox::Input> everyKeyState(int key)
 {
-    std::vector<Input> states;
+    std::vector<hitbox::Input> states;
     const std::vector<std::vector<bool>> scripts = {
         {}, {true}, {true, false}, {true, false, true}, {false}, {true, false, true, false}};
     for (bool heldBefore : {false, true})
         for (const std::vector<bool>& script : scripts)
         {
-            Input input;
+            hitbox::Input input;
             if (heldBefore)
             {
                 input.setKeyDown(key);
@@ -54,10 +54,10 @@ std::vector<Input> everyKeyState(int key)
 TEST(Replay, EveryKeyAndButtonStateComesBackThroughASnapshot)
 {
     for (int key : {0, static_cast<int>(sf::Keyboard::Key::Space), hitbox::keyCount - 1})
-        for (const Input& input : everyKeyState(key))
+        for (const hitbox::Input& input : everyKeyState(key))
         {
             const hitbox::InputSnapshot snapshot = hitbox::captureInput(input);
-            const Input back = hitbox::restoreInput(snapshot);
+            const hitbox::Input back = hitbox::restoreInput(snapshot);
             EXPECT_EQ(back.isKeyDown(key), input.isKeyDown(key));
             EXPECT_EQ(back.isPressed(key), input.isPressed(key));
             EXPECT_EQ(back.isReleased(key), input.isReleased(key));
@@ -75,7 +75,7 @@ TEST(Replay, TheFileRoundTripsEveryFieldBitForBit)
     recording.seed = 4294967295u;
     recording.headless = true;
     recording.options = {{"--balls", "10000"}, {"--scene", "a,b"}};
-    Input input;
+    hitbox::Input input;
     recording.addStep(hitbox::captureInput(input)); // step 0: nothing, so no row
     input.setKeyDown(sf::Keyboard::Key::W);
     input.setMousePosition(sf::Vector2f(0.1f, -1e-39f)); // a denormal, too

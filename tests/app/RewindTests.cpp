@@ -34,7 +34,7 @@ public:
             state->v.push_back(30.f * static_cast<float>(i % 3) - 20.f);
         }
     }
-    void handleInput(const Input& input, float dt) override
+    void handleInput(const hitbox::Input& input, float dt) override
     {
         if (input.isKeyDown(sf::Keyboard::Key::Right))
             state->v[0] += 400.f * dt;
@@ -73,7 +73,7 @@ public:
 };
 
 // The keys of step `i`: changes every few steps, from a seed.
-void scriptKeys(Input& input, std::mt19937& random)
+void scriptKeys(hitbox::Input& input, std::mt19937& random)
 {
     std::uniform_int_distribution<int> roll(0, 9);
     const int r = roll(random);
@@ -87,7 +87,7 @@ void scriptKeys(Input& input, std::mt19937& random)
         input.setKeyUp(sf::Keyboard::Key::Left);
 }
 
-void liveStep(hitbox::Level& level, Input& input)
+void liveStep(hitbox::Level& level, hitbox::Input& input)
 {
     level.handleInput(input, hitbox::stepSeconds);
     level.update(hitbox::stepSeconds);
@@ -105,8 +105,8 @@ TEST(Rewind, EveryKeptStepIsShownExactlyAndTheRunGoesOnUnchanged)
     hitbox::RewindLevel rewind(rewound, kept, every);
     ASSERT_TRUE(rewind.canRewind());
     std::vector<std::string> history{reference.bits()};
-    Input referenceInput;
-    Input input;
+    hitbox::Input referenceInput;
+    hitbox::Input input;
     std::mt19937 referenceRandom(5);
     std::mt19937 random(5);
     for (int i = 0; i < 700; ++i)
@@ -143,7 +143,7 @@ TEST(Rewind, MemoryStaysBoundedHoweverLongTheRun)
 {
     PushLevel level;
     hitbox::RewindLevel rewind(level, 120, 30);
-    Input input;
+    hitbox::Input input;
     std::size_t most = 0;
     for (int i = 0; i < 5000; ++i)
     {

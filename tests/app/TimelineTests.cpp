@@ -27,7 +27,7 @@ public:
     {
         ++steps;
         events.clear();
-        const auto event = [this](hitbox::ContactPhase phase, GameObject* other)
+        const auto event = [this](hitbox::ContactPhase phase, hitbox::GameObject* other)
         {
             hitbox::PairEvent pair;
             pair.phase = phase;
@@ -50,8 +50,8 @@ public:
     void render(sf::RenderTarget&) const override {}
     std::vector<hitbox::PairEvent> getContactEvents() const override { return events; }
 
-    GameObject first;
-    GameObject second;
+    hitbox::GameObject first;
+    hitbox::GameObject second;
     int steps = 0;
     std::vector<hitbox::PairEvent> events;
 };

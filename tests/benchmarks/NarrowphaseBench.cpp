@@ -151,10 +151,10 @@ void CircleCircle_FrameworkCircleVsCircle(benchmark::State& state)
              { return hitbox::circleVsCircle(all[i], all[j]); });
 }
 
-std::vector<GameObject> boxObjects()
+std::vector<hitbox::GameObject> boxObjects()
 {
     const Boxes b = randomBoxes(1);
-    std::vector<GameObject> objects(b.minX.size());
+    std::vector<hitbox::GameObject> objects(b.minX.size());
     for (std::size_t i = 0; i < objects.size(); ++i)
     {
         objects[i].setPosition({b.minX[i], b.minY[i]});
@@ -163,19 +163,19 @@ std::vector<GameObject> boxObjects()
     return objects;
 }
 
-std::vector<GameObject*> addressesOf(std::vector<GameObject>& objects)
+std::vector<hitbox::GameObject*> addressesOf(std::vector<hitbox::GameObject>& objects)
 {
-    std::vector<GameObject*> addresses;
-    for (GameObject& object : objects)
+    std::vector<hitbox::GameObject*> addresses;
+    for (hitbox::GameObject& object : objects)
         addresses.push_back(&object);
     return addresses;
 }
 
 void BoxBox_CollisionStandardTable(benchmark::State& state)
 {
-    std::vector<GameObject> objects = boxObjects();
+    std::vector<hitbox::GameObject> objects = boxObjects();
     runTests(state, addressesOf(objects),
-             [](const std::vector<GameObject*>& all, std::size_t i, std::size_t j)
+             [](const std::vector<hitbox::GameObject*>& all, std::size_t i, std::size_t j)
              {
                  return Collision::getContact(all[i], hitbox::ShapeKind::Box, all[j],
                                               hitbox::ShapeKind::Box)
@@ -184,10 +184,10 @@ void BoxBox_CollisionStandardTable(benchmark::State& state)
 }
 void BoxBox_CollisionGivenTable(benchmark::State& state)
 {
-    std::vector<GameObject> objects = boxObjects();
+    std::vector<hitbox::GameObject> objects = boxObjects();
     const hitbox::ShapeTable table = hitbox::ShapeTable::standard();
     runTests(state, addressesOf(objects),
-             [&table](const std::vector<GameObject*>& all, std::size_t i, std::size_t j)
+             [&table](const std::vector<hitbox::GameObject*>& all, std::size_t i, std::size_t j)
              {
                  return Collision::getContact(all[i], hitbox::ShapeKind::Box, all[j],
                                               hitbox::ShapeKind::Box, table)

@@ -17,7 +17,7 @@ namespace
 {
 
 // Remembers who it was told it hit.
-class Recorder : public GameObject
+class Recorder : public hitbox::GameObject
 {
 public:
     Recorder(float x, float y, float side = 20.f)
@@ -25,8 +25,8 @@ public:
         setSize({side, side});
         setPosition({x, y});
     }
-    void collisionResponse(GameObject* other) override { hits.push_back(other); }
-    std::vector<GameObject*> hits;
+    void collisionResponse(hitbox::GameObject* other) override { hits.push_back(other); }
+    std::vector<hitbox::GameObject*> hits;
 };
 
 const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce, BroadphaseMethod::SortAndSweep,
@@ -42,8 +42,8 @@ TEST(World, CallsCollisionResponseOnBothObjectsOncePerPair)
         world.add(b);
         world.add(c);
         EXPECT_EQ(world.checkCollisions(), 1u) << hitbox::toString(method);
-        EXPECT_EQ(a.hits, std::vector<GameObject*>{&b});
-        EXPECT_EQ(b.hits, std::vector<GameObject*>{&a});
+        EXPECT_EQ(a.hits, std::vector<hitbox::GameObject*>{&b});
+        EXPECT_EQ(b.hits, std::vector<hitbox::GameObject*>{&a});
         EXPECT_TRUE(c.hits.empty());
     }
 }
@@ -130,9 +130,9 @@ TEST(World, HonoursLayersAndMasks)
     world.add(bullet, bulletLayer, enemyLayer); // the player's bullet ignores the player
     world.add(enemy, enemyLayer, playerLayer | bulletLayer);
     EXPECT_EQ(world.checkCollisions(), 2u);
-    EXPECT_EQ(player.hits, std::vector<GameObject*>{&enemy});
-    EXPECT_EQ(bullet.hits, std::vector<GameObject*>{&enemy});
-    EXPECT_EQ(enemy.hits, (std::vector<GameObject*>{&player, &bullet}));
+    EXPECT_EQ(player.hits, std::vector<hitbox::GameObject*>{&enemy});
+    EXPECT_EQ(bullet.hits, std::vector<hitbox::GameObject*>{&enemy});
+    EXPECT_EQ(enemy.hits, (std::vector<hitbox::GameObject*>{&player, &bullet}));
 }
 
 TEST(World, TheRuleCallbackVetoesPairsBeforeTheExactTest)
@@ -144,7 +144,7 @@ TEST(World, TheRuleCallbackVetoesPairsBeforeTheExactTest)
     world.add(c);
     int calls = 0;
     world.setRule(
-        [&](const GameObject& first, const GameObject& second)
+        [&](const hitbox::GameObject& first, const hitbox::GameObject& second)
         {
             ++calls;
             return &first != &c && &second != &c; // c collides with nothing
@@ -152,7 +152,7 @@ TEST(World, TheRuleCallbackVetoesPairsBeforeTheExactTest)
     EXPECT_EQ(world.checkCollisions(), 1u);
     EXPECT_EQ(calls, 3);                  // three overlapping pairs reached the rule
     EXPECT_EQ(world.getExactTests(), 1u); // only the allowed one got the exact test
-    EXPECT_EQ(a.hits, std::vector<GameObject*>{&b});
+    EXPECT_EQ(a.hits, std::vector<hitbox::GameObject*>{&b});
     EXPECT_TRUE(c.hits.empty());
 }
 
@@ -179,7 +179,7 @@ TEST(World, ACircleAgainstABoxUsesTheCircleBoxTest)
     EXPECT_EQ(world.checkCollisions(), 0u); // the circle misses the box's corner
     box.setPosition({15.f, 5.f});
     EXPECT_EQ(world.checkCollisions(), 1u);
-    EXPECT_EQ(circle.hits, std::vector<GameObject*>{&box});
+    EXPECT_EQ(circle.hits, std::vector<hitbox::GameObject*>{&box});
 }
 
 TEST(World, RemovedObjectsNoLongerCollide)

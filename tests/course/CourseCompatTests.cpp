@@ -11,6 +11,7 @@
 #include "compat/Framework/Input.h"
 #include "compat/Framework/Vector.h"
 #include "compat/Framework/VectorHelper.h"
+#include "hitbox/objects/World.h"
 
 #include <gtest/gtest.h>
 
@@ -153,4 +154,83 @@ TEST(CourseCompat, HelpersAndAnimationUnderTheOldNames)
     walk.setFrameSpeed(1.f / 10.f);
     walk.animate(0.05f);
     EXPECT_EQ(walk.getCurrentFrame(), sf::IntRect({0, 0}, {15, 21}));
+}
+
+TEST(CourseCompat, OldStyleOverrideIsCalledByAWorldAndThroughHitboxsHook)
+{
+    // Old code overrides collisionResponse(GameObject*) with the course's GameObject; a World
+    // (and any Hitbox code) calls Hitbox's hook, which must reach that override.
+    Paddle left;
+    Paddle right;
+    left.setPosition({100, 300});
+    right.setPosition({105, 300}); // overlapping boxes
+    hitbox::World world;
+    world.add(left);
+    world.add(right);
+    EXPECT_EQ(world.checkCollisions(), 1u);
+    EXPECT_EQ(left.lastHit, &right);
+    EXPECT_EQ(right.lastHit, &left);
+
+    hitbox::GameObject& seenByHitbox = left;
+    seenByHitbox.collisionResponse(nullptr); // the world (a wall), as Hitbox says it
+    EXPECT_EQ(left.lastHit, nullptr);
+}
+
+TEST(CourseCompat, AnAssignedCollisionBoxIsTheOneCollisionsRead)
+{
+    // Old code assigns the member instead of calling setCollisionBox.
+    class Crate : public GameObject
+    {
+    public:
+        Crate()
+        {
+            setSize(sf::Vector2f(50, 50));
+            collisionBox = sf::FloatRect({10, 10}, {30, 30});
+        }
+        sf::FloatRect assigned() const { return collisionBox; }
+    };
+    Crate crate;
+    crate.setPosition({100, 100});
+    EXPECT_EQ(crate.getCollisionBox(), sf::FloatRect({110, 110}, {30, 30}));
+    EXPECT_EQ(crate.getBoundingCircle().radius, 15.f); // inscribed in the assigned box
+    GameObject point;
+    point.setSize({1, 1});
+    point.setPosition({105, 105}); // inside the shape, outside the assigned box
+    EXPECT_FALSE(Collision::checkBoundingBox(&crate, &point));
+    crate.setCollisionBox(0, 0, 50, 50); // the setter and the member are one box
+    EXPECT_EQ(crate.assigned(), sf::FloatRect({0, 0}, {50, 50}));
+    EXPECT_TRUE(Collision::checkBoundingBox(&crate, &point));
+    crate.clearCollisionBox();
+    EXPECT_EQ(crate.assigned(), sf::FloatRect()); // {0, 0, 0, 0} until assigned, as in the course
+    EXPECT_EQ(crate.getCollisionBox(), sf::FloatRect({100, 100}, {50, 50})); // the whole shape
+}
+
+TEST(CourseCompat, BothMouseStylesFeedTheSameButtons)
+{
+    Input input;
+    input.setMouseLDown(true); // the early weeks' style
+    EXPECT_TRUE(input.isMouseLDown());
+    EXPECT_TRUE(input.isLeftMousePressed());
+    input.update();
+    input.setLeftMouse(Input::UP); // the later weeks' style
+    EXPECT_FALSE(input.isMouseLDown());
+    EXPECT_TRUE(input.isLeftMouseReleased());
+
+    // PRESSED then UP in one frame: a press and a release.
+    input.setRightMouse(Input::PRESSED);
+    input.setRightMouse(Input::UP);
+    EXPECT_TRUE(input.isRightMousePressed());
+    EXPECT_TRUE(input.isRightMouseReleased());
+    // Old code marks a press handled by setting DOWN: no press any more, still held, and a
+    // release in the same frame does not bring the press back.
+    input.update();
+    input.setLeftMouse(Input::PRESSED);
+    input.setLeftMouse(Input::DOWN);
+    EXPECT_FALSE(input.isLeftMousePressed());
+    EXPECT_TRUE(input.isLeftMouseDown());
+    input.setLeftMouse(Input::UP);
+    EXPECT_FALSE(input.isLeftMousePressed());
+    input.update();
+    input.setLeftMouse(Input::PRESSED); // a new frame's click is a press again
+    EXPECT_TRUE(input.isLeftMousePressed());
 }

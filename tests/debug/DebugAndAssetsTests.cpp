@@ -43,7 +43,7 @@ TEST(BroadphaseDrawing, EachMethodsStructureIsDrawn)
 
 TEST(DebugRenderer, CollidingObjectsAreHatchedInTheOverlappingColourAndShowVelocity)
 {
-    GameObject object;
+    hitbox::GameObject object;
     object.setSize({10.f, 10.f});
     object.setVelocity(100.f, 0.f);
     hitbox::DebugRenderer debug;

@@ -37,7 +37,7 @@ const std::size_t maxObjects = 48;
 
 struct Scene;
 
-class FuzzObject : public GameObject
+class FuzzObject : public hitbox::GameObject
 {
 public:
     FuzzObject(Scene& scene, std::uint8_t place, std::uint8_t action) : scene(scene), action(action)
@@ -46,7 +46,7 @@ public:
         setPosition(
             {static_cast<float>(place / 4 % 8) * 10.f, static_cast<float>(place / 32) * 6.f});
     }
-    void collisionResponse(GameObject* other) override;
+    void collisionResponse(hitbox::GameObject* other) override;
     void onCollisionEnter(const hitbox::CollisionEvent& event) override
     {
         if (event.phase != hitbox::ContactPhase::Enter)
@@ -133,7 +133,7 @@ struct Scene
     }
 };
 
-void FuzzObject::collisionResponse(GameObject*)
+void FuzzObject::collisionResponse(hitbox::GameObject*)
 {
     scene.act(*this, action);
 }

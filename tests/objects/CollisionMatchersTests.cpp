@@ -12,9 +12,9 @@ using ::testing::Not;
 namespace
 {
 
-GameObject square(const char* name, float x, float y, float side = 10.f)
+hitbox::GameObject square(const char* name, float x, float y, float side = 10.f)
 {
-    GameObject object;
+    hitbox::GameObject object;
     object.setName(name);
     object.setSize({side, side});
     object.setPosition({x, y});
@@ -34,9 +34,9 @@ std::string failureText(const Value& value, const MatcherType& matcher)
 
 TEST(CollisionMatchers, CollidesAndNotCollidesFollowTheEdgeRule)
 {
-    const GameObject ball = square("ball", 0.f, 0.f);
-    const GameObject overlapping = square("paddle", 5.f, 5.f);
-    const GameObject touching = square("wall", 10.f, 0.f);
+    const hitbox::GameObject ball = square("ball", 0.f, 0.f);
+    const hitbox::GameObject overlapping = square("paddle", 5.f, 5.f);
+    const hitbox::GameObject touching = square("wall", 10.f, 0.f);
     EXPECT_THAT(ball, Collides(overlapping));
     EXPECT_THAT(ball, NotCollides(touching));
     EXPECT_THAT(ball, Not(Collides(touching)));
@@ -46,8 +46,8 @@ TEST(CollisionMatchers, CollidesAndNotCollidesFollowTheEdgeRule)
 
 TEST(CollisionMatchers, AFailureSaysWhyInExplainsWords)
 {
-    const GameObject ball = square("ball", 0.f, 0.f);
-    const GameObject wall = square("wall", 10.f, 0.f);
+    const hitbox::GameObject ball = square("ball", 0.f, 0.f);
+    const hitbox::GameObject wall = square("wall", 10.f, 0.f);
     const std::string text = failureText(ball, Collides(wall));
     EXPECT_NE(text.find("x: 'ball' [0, 10] and 'wall' [10, 20] only touch"), std::string::npos)
         << text;
@@ -55,8 +55,8 @@ TEST(CollisionMatchers, AFailureSaysWhyInExplainsWords)
 
 TEST(CollisionMatchers, CirclesUseTheBoundingCircles)
 {
-    const GameObject a = square("a", 0.f, 0.f);
-    const GameObject b = square("b", 9.f, 9.f); // boxes overlap by 1, circles are apart
+    const hitbox::GameObject a = square("a", 0.f, 0.f);
+    const hitbox::GameObject b = square("b", 9.f, 9.f); // boxes overlap by 1, circles are apart
     EXPECT_THAT(a, Collides(b));
     EXPECT_THAT(a, NotCollides(b, Shape::Circle, Shape::Circle));
 }
@@ -76,7 +76,7 @@ TEST(CollisionMatchers, HitsAtAndHasNormalReadTheSweep)
 
 TEST(CollisionMatchers, StaysInsideNamesTheEdgeThatLeft)
 {
-    const GameObject player = square("player", 95.f, 10.f);
+    const hitbox::GameObject player = square("player", 95.f, 10.f);
     EXPECT_THAT(player, StaysInside(hitbox::Box(0.f, 0.f, 105.f, 100.f))) << "touching is inside";
     const std::string text = failureText(player, StaysInside(hitbox::Box(0.f, 0.f, 100.f, 100.f)));
     EXPECT_EQ(text, "its right edge 105 is past the area's 100");
@@ -84,12 +84,12 @@ TEST(CollisionMatchers, StaysInsideNamesTheEdgeThatLeft)
 
 TEST(CollisionMatchers, WorkOnALabsOwnObjectClasses)
 {
-    struct Ball : GameObject
+    struct Ball : hitbox::GameObject
     {
         int bounces = 0;
     };
     Ball ball;
     ball.setSize({10.f, 10.f});
-    const GameObject wall = square("wall", 5.f, 0.f);
+    const hitbox::GameObject wall = square("wall", 5.f, 0.f);
     EXPECT_THAT(ball, Collides(wall));
 }

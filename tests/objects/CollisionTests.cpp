@@ -9,9 +9,9 @@
 namespace
 {
 
-GameObject makeSquare(float x, float y, float size)
+hitbox::GameObject makeSquare(float x, float y, float size)
 {
-    GameObject square;
+    hitbox::GameObject square;
     square.setSize({size, size});
     square.setPosition({x, y});
     return square;
@@ -21,8 +21,8 @@ GameObject makeSquare(float x, float y, float size)
 
 TEST(Collision, LectureBouncingBallsCallWorks)
 {
-    GameObject ball1 = makeSquare(0.f, 0.f, 50.f);
-    GameObject ball2 = makeSquare(40.f, 0.f, 50.f);
+    hitbox::GameObject ball1 = makeSquare(0.f, 0.f, 50.f);
+    hitbox::GameObject ball2 = makeSquare(40.f, 0.f, 50.f);
     EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
     ball2.setPosition({50.f, 0.f}); // circles exactly touching
     EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
@@ -33,8 +33,8 @@ TEST(Collision, CircleComesFromTheCentreNotTheCorner)
 {
     // With a centred origin, the lecture's formula put the circle a radius away from the
     // ball. Two balls whose drawn circles overlap must collide.
-    GameObject ball1 = makeSquare(100.f, 100.f, 40.f);
-    GameObject ball2 = makeSquare(135.f, 100.f, 40.f);
+    hitbox::GameObject ball1 = makeSquare(100.f, 100.f, 40.f);
+    hitbox::GameObject ball2 = makeSquare(135.f, 100.f, 40.f);
     ball1.setOrigin({20.f, 20.f});
     ball2.setOrigin({20.f, 20.f});
     EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
@@ -44,8 +44,8 @@ TEST(Collision, CircleComesFromTheCentreNotTheCorner)
 
 TEST(Collision, BoundingBoxTouchingIsNotACollision)
 {
-    GameObject square1 = makeSquare(0.f, 200.f, 50.f);
-    GameObject square2 = makeSquare(50.f, 200.f, 50.f);
+    hitbox::GameObject square1 = makeSquare(0.f, 200.f, 50.f);
+    hitbox::GameObject square2 = makeSquare(50.f, 200.f, 50.f);
     EXPECT_FALSE(Collision::checkBoundingBox(&square1, &square2));
     square2.move({-0.5f, 0.f});
     EXPECT_TRUE(Collision::checkBoundingBox(&square1, &square2));
@@ -53,7 +53,7 @@ TEST(Collision, BoundingBoxTouchingIsNotACollision)
 
 TEST(Collision, PointInBoxWithIntAndFloatPoints)
 {
-    GameObject square = makeSquare(100.f, 100.f, 50.f);
+    hitbox::GameObject square = makeSquare(100.f, 100.f, 50.f);
     EXPECT_TRUE(Collision::checkBoundingBox(&square, sf::Vector2i(120, 120)));
     EXPECT_TRUE(Collision::checkBoundingBox(&square, sf::Vector2f(100.5f, 149.5f)));
     EXPECT_FALSE(Collision::checkBoundingBox(&square, sf::Vector2i(150, 120)));
@@ -61,13 +61,13 @@ TEST(Collision, PointInBoxWithIntAndFloatPoints)
 
 TEST(Collision, NullDeadNonColliderAndSelfNeverCollide)
 {
-    GameObject a = makeSquare(0.f, 0.f, 50.f);
-    GameObject b = makeSquare(10.f, 10.f, 50.f);
+    hitbox::GameObject a = makeSquare(0.f, 0.f, 50.f);
+    hitbox::GameObject b = makeSquare(10.f, 10.f, 50.f);
     EXPECT_FALSE(Collision::checkBoundingBox(nullptr, &b));
     EXPECT_FALSE(Collision::checkBoundingBox(&a, nullptr));
     EXPECT_FALSE(Collision::checkBoundingCircle(nullptr, nullptr));
     EXPECT_FALSE(
-        Collision::checkBoundingBox(static_cast<GameObject*>(nullptr), sf::Vector2i(1, 1)));
+        Collision::checkBoundingBox(static_cast<hitbox::GameObject*>(nullptr), sf::Vector2i(1, 1)));
     EXPECT_FALSE(Collision::checkBoundingBox(&a, &a));
     EXPECT_FALSE(Collision::getBoundingBoxContact(nullptr, &b).hit);
 
@@ -84,8 +84,8 @@ TEST(Collision, NullDeadNonColliderAndSelfNeverCollide)
 
 TEST(Collision, ContactVersionsAgreeWithTheYesNoTests)
 {
-    GameObject a = makeSquare(0.f, 0.f, 50.f);
-    GameObject b = makeSquare(45.f, 10.f, 50.f);
+    hitbox::GameObject a = makeSquare(0.f, 0.f, 50.f);
+    hitbox::GameObject b = makeSquare(45.f, 10.f, 50.f);
     const hitbox::Contact boxes = Collision::getBoundingBoxContact(&a, &b);
     ASSERT_TRUE(boxes.hit);
     EXPECT_EQ(boxes.normal, hitbox::Vec2(-1.f, 0.f)); // push a left, out of b

@@ -21,7 +21,7 @@ namespace
 const hitbox::ShapeKind diamondKind = static_cast<hitbox::ShapeKind>(2);
 
 // Step 2: the shape as plain geometry, from the object.
-hitbox::Polygon diamondOf(const GameObject& object)
+hitbox::Polygon diamondOf(const hitbox::GameObject& object)
 {
     const hitbox::Box box = hitbox::normalised(hitbox::toBox(object.getCollisionBox()));
     const hitbox::Vec2 middle = hitbox::centerOf(box);
@@ -31,24 +31,24 @@ hitbox::Polygon diamondOf(const GameObject& object)
              {box.left, middle.y}}};
 }
 
-hitbox::Box diamondBounds(const GameObject& object)
+hitbox::Box diamondBounds(const hitbox::GameObject& object)
 {
     return hitbox::normalised(hitbox::toBox(object.getCollisionBox()));
 }
 
 // Step 3: a test against every kind already in the table (and itself).
-hitbox::Contact diamondVsDiamond(const GameObject& first, const GameObject& second)
+hitbox::Contact diamondVsDiamond(const hitbox::GameObject& first, const hitbox::GameObject& second)
 {
     return hitbox::polygonVsPolygon(diamondOf(first), diamondOf(second));
 }
 
-hitbox::Contact diamondVsBox(const GameObject& first, const GameObject& second)
+hitbox::Contact diamondVsBox(const hitbox::GameObject& first, const hitbox::GameObject& second)
 {
     return hitbox::polygonVsPolygon(diamondOf(first),
                                     hitbox::toPolygon(hitbox::toBox(second.getCollisionBox())));
 }
 
-hitbox::Contact circleVsDiamond(const GameObject& first, const GameObject& second)
+hitbox::Contact circleVsDiamond(const hitbox::GameObject& first, const hitbox::GameObject& second)
 {
     return hitbox::circleVsPolygon(first.getBoundingCircle(), diamondOf(second));
 }
@@ -64,19 +64,19 @@ hitbox::ShapeTable tableWithDiamonds()
     return table;
 }
 
-GameObject square(float left, float top)
+hitbox::GameObject square(float left, float top)
 {
-    GameObject object;
+    hitbox::GameObject object;
     object.setSize({40.f, 40.f});
     object.setPosition({left, top});
     return object;
 }
 
-class Counter : public GameObject
+class Counter : public hitbox::GameObject
 {
 public:
     int hits = 0;
-    void collisionResponse(GameObject*) override { ++hits; }
+    void collisionResponse(hitbox::GameObject*) override { ++hits; }
 };
 
 } // namespace
@@ -104,8 +104,8 @@ TEST(ShapeTable, TheStandardTableIsBuiltOnceAndACopyCanGrow)
 
 TEST(ShapeTable, OneDirectionServesBothWithTheNormalTurnedRound)
 {
-    GameObject ball = square(0.f, 0.f);
-    GameObject wall = square(30.f, 0.f); // 10 px of overlap, the wall on the right
+    hitbox::GameObject ball = square(0.f, 0.f);
+    hitbox::GameObject wall = square(30.f, 0.f); // 10 px of overlap, the wall on the right
     const hitbox::ShapeTable table = hitbox::ShapeTable::standard();
     const hitbox::Contact circleFirst =
         table.test(ball, hitbox::ShapeKind::Circle, wall, hitbox::ShapeKind::Box);
@@ -134,7 +134,7 @@ TEST(ShapeTable, AKindWithoutATestAgainstEveryOtherIsIncompleteAndWorldRefusesIt
 TEST(ShapeTable, WorldRefusesAKindNotInItsTable)
 {
     hitbox::World world;
-    GameObject object = square(0.f, 0.f);
+    hitbox::GameObject object = square(0.f, 0.f);
     EXPECT_THROW(world.add(object, 1, 1, diamondKind), std::invalid_argument);
     EXPECT_EQ(world.size(), 0u);
 }
@@ -182,8 +182,8 @@ TEST(ShapeTable, WorldTestsTheToyShapeAgainstHitboxsOwnKinds)
 
 TEST(ShapeTable, CollisionGetContactUsesTheToyShape)
 {
-    GameObject a = square(0.f, 0.f);
-    GameObject b = square(30.f, 30.f);
+    hitbox::GameObject a = square(0.f, 0.f);
+    hitbox::GameObject b = square(30.f, 30.f);
     const hitbox::ShapeTable table = tableWithDiamonds();
     EXPECT_TRUE(Collision::getContact(&a, hitbox::ShapeKind::Box, &b, hitbox::ShapeKind::Box).hit);
     EXPECT_FALSE(Collision::getContact(&a, diamondKind, &b, diamondKind, table).hit);
@@ -197,7 +197,7 @@ TEST(ShapeTable, CollisionGetContactUsesTheToyShape)
 
 TEST(ShapeTable, DebugRendererDrawsTheToyShapeFromItsOutline)
 {
-    GameObject a = square(0.f, 0.f);
+    hitbox::GameObject a = square(0.f, 0.f);
     const hitbox::ShapeTable table = tableWithDiamonds();
     hitbox::DebugRenderer asDiamond;
     asDiamond.objectShape(a, diamondKind, hitbox::DebugState::Free, table);

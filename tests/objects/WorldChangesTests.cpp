@@ -27,7 +27,7 @@ const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce, BroadphaseM
                                        BroadphaseMethod::Grid, BroadphaseMethod::Quadtree};
 
 // A square that remembers who it was told it hit, and runs `onHit` (if set) when told.
-class Square : public GameObject
+class Square : public hitbox::GameObject
 {
 public:
     Square(float x, float y, float side = 20.f)
@@ -35,7 +35,7 @@ public:
         setSize({side, side});
         setPosition({x, y});
     }
-    void collisionResponse(GameObject* other) override
+    void collisionResponse(hitbox::GameObject* other) override
     {
         hits.push_back(other);
         // The World only reports pairs whose boxes overlap (nobody here moves). The shapes
@@ -46,9 +46,9 @@ public:
         if (onHit)
             onHit(other);
     }
-    std::vector<GameObject*> hits;
+    std::vector<hitbox::GameObject*> hits;
     int toldAboutAnObjectItDoesNotOverlap = 0;
-    std::function<void(GameObject*)> onHit;
+    std::function<void(hitbox::GameObject*)> onHit;
 };
 
 } // namespace
@@ -61,7 +61,7 @@ TEST(WorldChanges, ACoinThatRemovesItselfDoesNotSendTheNextResponseToTheWrongObj
     {
         World world(method);
         Square player(0.f, 0.f), coin(10.f, 10.f), a(300.f, 300.f), b(310.f, 310.f);
-        coin.onHit = [&](GameObject* other)
+        coin.onHit = [&](hitbox::GameObject* other)
         {
             if (other == &player)
                 world.remove(coin);
@@ -71,10 +71,10 @@ TEST(WorldChanges, ACoinThatRemovesItselfDoesNotSendTheNextResponseToTheWrongObj
         world.add(a);
         world.add(b);
         EXPECT_EQ(world.checkCollisions(), 2u) << "method " << static_cast<int>(method);
-        EXPECT_EQ(player.hits, std::vector<GameObject*>{&coin});
-        EXPECT_EQ(coin.hits, std::vector<GameObject*>{&player});
-        EXPECT_EQ(a.hits, std::vector<GameObject*>{&b}) << "a never touched the player";
-        EXPECT_EQ(b.hits, std::vector<GameObject*>{&a});
+        EXPECT_EQ(player.hits, std::vector<hitbox::GameObject*>{&coin});
+        EXPECT_EQ(coin.hits, std::vector<hitbox::GameObject*>{&player});
+        EXPECT_EQ(a.hits, std::vector<hitbox::GameObject*>{&b}) << "a never touched the player";
+        EXPECT_EQ(b.hits, std::vector<hitbox::GameObject*>{&a});
         EXPECT_EQ(world.size(), 3u);
         EXPECT_EQ(world.checkCollisions(), 1u) << "the coin is out: only a and b";
     }
@@ -88,7 +88,7 @@ TEST(WorldChanges, RemovingAnotherObjectMidPassSkipsItsLaterPairsOnly)
     {
         World world(method);
         Square a(0.f, 0.f), b(5.f, 5.f), c(10.f, 10.f);
-        a.onHit = [&](GameObject* other)
+        a.onHit = [&](hitbox::GameObject* other)
         {
             if (other == &b)
                 world.remove(c);
@@ -97,8 +97,8 @@ TEST(WorldChanges, RemovingAnotherObjectMidPassSkipsItsLaterPairsOnly)
         world.add(b);
         world.add(c);
         EXPECT_EQ(world.checkCollisions(), 1u);
-        EXPECT_EQ(a.hits, std::vector<GameObject*>{&b});
-        EXPECT_EQ(b.hits, std::vector<GameObject*>{&a});
+        EXPECT_EQ(a.hits, std::vector<hitbox::GameObject*>{&b});
+        EXPECT_EQ(b.hits, std::vector<hitbox::GameObject*>{&a});
         EXPECT_TRUE(c.hits.empty());
     }
 }
@@ -111,7 +111,7 @@ TEST(WorldChanges, ObjectsAddedInsideAResponseTakePartFromTheNextPass)
         Square a(0.f, 0.f), b(5.f, 5.f);
         // Enough new objects to make the World's list grow while it is being walked.
         std::vector<std::unique_ptr<Square>> added;
-        a.onHit = [&](GameObject*)
+        a.onHit = [&](hitbox::GameObject*)
         {
             for (int i = 0; i < 200; ++i)
             {
@@ -122,7 +122,8 @@ TEST(WorldChanges, ObjectsAddedInsideAResponseTakePartFromTheNextPass)
         world.add(a);
         world.add(b);
         EXPECT_EQ(world.checkCollisions(), 1u) << "the new objects wait for the next pass";
-        EXPECT_EQ(b.hits, std::vector<GameObject*>{&a}) << "b's half went to the right object";
+        EXPECT_EQ(b.hits, std::vector<hitbox::GameObject*>{&a})
+            << "b's half went to the right object";
         EXPECT_EQ(world.size(), 202u);
         a.onHit = nullptr;
         // 202 overlapping squares: every pair, once.
@@ -137,14 +138,14 @@ TEST(WorldChanges, AnObjectKilledMidPassIsToldNothingMoreAndStillFinishesItsPair
     // and the coin takes part in no later pair.
     World world;
     Square coin(0.f, 0.f), player(5.f, 5.f), other(10.f, 10.f);
-    coin.onHit = [&](GameObject*) { coin.setAlive(false); };
+    coin.onHit = [&](hitbox::GameObject*) { coin.setAlive(false); };
     world.add(coin);
     world.add(player);
     world.add(other);
     EXPECT_EQ(world.checkCollisions(), 2u); // (coin, player), then (player, other)
-    EXPECT_EQ(coin.hits, std::vector<GameObject*>{&player});
-    EXPECT_EQ(player.hits, (std::vector<GameObject*>{&coin, &other}));
-    EXPECT_EQ(other.hits, std::vector<GameObject*>{&player});
+    EXPECT_EQ(coin.hits, std::vector<hitbox::GameObject*>{&player});
+    EXPECT_EQ(player.hits, (std::vector<hitbox::GameObject*>{&coin, &other}));
+    EXPECT_EQ(other.hits, std::vector<hitbox::GameObject*>{&player});
 }
 
 TEST(WorldChanges, AnObjectDestroyedInsideAResponseLeavesTheWorldAtOnce)
@@ -155,10 +156,10 @@ TEST(WorldChanges, AnObjectDestroyedInsideAResponseLeavesTheWorldAtOnce)
         auto bullet = std::make_unique<Square>(0.f, 0.f);
         auto enemy = std::make_unique<Square>(5.f, 5.f);
         Square bystander(10.f, 10.f);
-        GameObject* const enemyAddress = enemy.get();
+        hitbox::GameObject* const enemyAddress = enemy.get();
         // The bullet destroys the enemy it hits: the enemy's own half cannot run (it is
         // gone) and the bystander is never handed a destroyed object.
-        bullet->onHit = [&](GameObject* other)
+        bullet->onHit = [&](hitbox::GameObject* other)
         {
             if (other == enemyAddress)
                 enemy.reset();
@@ -169,7 +170,7 @@ TEST(WorldChanges, AnObjectDestroyedInsideAResponseLeavesTheWorldAtOnce)
         world.checkCollisions();
         EXPECT_EQ(enemy, nullptr);
         EXPECT_EQ(world.size(), 2u);
-        for (GameObject* hit : bystander.hits)
+        for (hitbox::GameObject* hit : bystander.hits)
             EXPECT_NE(hit, enemyAddress) << "handed a destroyed object";
         for (const auto& pair : world.getCollisions())
         {
@@ -225,7 +226,7 @@ TEST(WorldChanges, CheckingCollisionsFromInsideAResponseStopsWithAMessageNamingT
     World world;
     Square a(0.f, 0.f), b(5.f, 5.f);
     a.setName("coin 3");
-    a.onHit = [&](GameObject*) { world.checkCollisions(); };
+    a.onHit = [&](hitbox::GameObject*) { world.checkCollisions(); };
     world.add(a);
     world.add(b);
     try
@@ -255,7 +256,7 @@ TEST(WorldChanges, EveryChangeInsideResponsesKeepsEachPairOnceAndToTheRightObjec
         for (int i = 0; i < 40; ++i)
         {
             Square& self = *squares[static_cast<std::size_t>(i)];
-            self.onHit = [&, i](GameObject*)
+            self.onHit = [&, i](hitbox::GameObject*)
             {
                 const std::size_t victim = static_cast<std::size_t>((i * 7 + 3) % 40);
                 if (!squares[victim])
@@ -300,11 +301,11 @@ TEST(WorldChanges, AMillionObjectsAreAddedAndATenthRemovedInUnderASecond)
 {
     // Issue 25 item 15: add used to scan every entry (10^6 objects: 757 s).
     const std::size_t count = 1000000;
-    std::vector<GameObject> objects(count);
+    std::vector<hitbox::GameObject> objects(count);
     World world;
     // Processor time, not wall time: the test machine may be busy with other builds.
     const std::clock_t start = std::clock();
-    for (GameObject& object : objects)
+    for (hitbox::GameObject& object : objects)
         world.add(object);
     const std::clock_t added = std::clock();
     for (std::size_t i = 0; i < count; i += 10)

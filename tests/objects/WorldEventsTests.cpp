@@ -25,7 +25,7 @@ const BroadphaseMethod allMethods[] = {BroadphaseMethod::BruteForce, BroadphaseM
 struct Heard
 {
     ContactPhase phase;
-    const GameObject* other;
+    const hitbox::GameObject* other;
     int step; // the test's own step counter
     bool operator==(const Heard& x) const
     {
@@ -39,7 +39,7 @@ std::ostream& operator<<(std::ostream& out, const Heard& heard)
 }
 
 // A square that writes down every event it hears, stamped with the test's step.
-class Listener : public GameObject
+class Listener : public hitbox::GameObject
 {
 public:
     explicit Listener(float x, float side = 20.f)
@@ -179,7 +179,7 @@ TEST(WorldEvents, AnObjectRemovedMidPassGetsItsExitAtTheEndOfThePass)
     struct Remover : Listener
     {
         using Listener::Listener;
-        void collisionResponse(GameObject* other) override
+        void collisionResponse(hitbox::GameObject* other) override
         {
             if (other != nullptr)
                 world->remove(*other);
@@ -217,7 +217,7 @@ TEST(WorldEvents, ClearGivesEveryPairItsExit)
 
 TEST(WorldEvents, TriggersReportButAreNeverPushedSolidsAre)
 {
-    GameObject wall, player, sensor;
+    hitbox::GameObject wall, player, sensor;
     wall.setSize({100.f, 100.f});
     player.setSize({20.f, 20.f});
     player.setPosition({90.f, 40.f}); // 10 px into the wall's right side
@@ -243,7 +243,7 @@ TEST(WorldEvents, AHundredThousandObjectsEachEnterOnceAndExitOnce)
     // 50,000 pairs side by side, each pair overlapping: one enter per pair; moved apart: one
     // exit per pair; nothing else.
     const std::size_t pairs = 50000;
-    std::vector<GameObject> objects(2 * pairs);
+    std::vector<hitbox::GameObject> objects(2 * pairs);
     World world;
     for (std::size_t i = 0; i < pairs; ++i)
     {
@@ -276,7 +276,7 @@ TEST(WorldEvents, AHundredThousandObjectsEachEnterOnceAndExitOnce)
 
 TEST(ExplainPair, NamesTheObjectsAndSaysWhyDeadOrNotColliderObjectsNeverCollide)
 {
-    GameObject ball, paddle;
+    hitbox::GameObject ball, paddle;
     ball.setName("ball");
     paddle.setName("paddle");
     ball.setSize({10.f, 10.f});

@@ -33,14 +33,14 @@ float arrivalY(const PongLevel& pong)
 
 // A good player: reads the bounce, gets there, and hits a little off-centre to make an
 // angle the computer has to chase.
-void goodPlayer(const PongLevel& pong, Input& input)
+void goodPlayer(const PongLevel& pong, hitbox::Input& input)
 {
     const float paddleY = pong.getPaddle(Side::Left).getPosition().y;
     pongtest::steerTowards(input, paddleY, arrivalY(pong) - 25.f, 4.f);
 }
 
 // A weak player: follows the ball only when it is already close, and only on some steps.
-void weakPlayer(const PongLevel& pong, Input& input)
+void weakPlayer(const PongLevel& pong, hitbox::Input& input)
 {
     const float paddleY = pong.getPaddle(Side::Left).getPosition().y;
     const bool close = pong.getBall().getPosition().x < pong.getArena().size.x * 0.35f;
@@ -60,7 +60,7 @@ struct DecentPlayer
 {
     float target = 0.f;
 
-    void operator()(const PongLevel& pong, Input& input)
+    void operator()(const PongLevel& pong, hitbox::Input& input)
     {
         const long long stepNumber = pong.getStepCount();
         if (stepNumber % 30 == 0)

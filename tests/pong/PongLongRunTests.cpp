@@ -26,7 +26,7 @@ void playAndCheckEveryStep(float seconds, unsigned seed)
     // than one step at top speed.
     const float oneStep = pong.getBall().getSettings().maxSpeed * hitbox::stepSeconds;
     const float size = pong.getBall().getSettings().size;
-    Input noKeys;
+    hitbox::Input noKeys;
     const long long count = stepsFor(seconds);
     for (long long i = 0; i < count; ++i)
     {
@@ -81,7 +81,7 @@ std::string playScripted(unsigned seed, float seconds)
     settings.seed = seed;
     PongLevel pong(settings);
     pong.startMatch(Mode::OnePlayer);
-    Input input;
+    hitbox::Input input;
     const long long count = stepsFor(seconds);
     for (long long i = 0; i < count; ++i)
     {

@@ -41,9 +41,10 @@ std::string stateBits(const PongLevel& pong)
         exact << std::hexfloat << value << ' ';
         bits += exact.str();
     };
-    for (const GameObject* object : {static_cast<const GameObject*>(&pong.getBall()),
-                                     static_cast<const GameObject*>(&pong.getPaddle(Side::Left)),
-                                     static_cast<const GameObject*>(&pong.getPaddle(Side::Right))})
+    for (const hitbox::GameObject* object :
+         {static_cast<const hitbox::GameObject*>(&pong.getBall()),
+          static_cast<const hitbox::GameObject*>(&pong.getPaddle(Side::Left)),
+          static_cast<const hitbox::GameObject*>(&pong.getPaddle(Side::Right))})
     {
         add(object->getPosition().x);
         add(object->getPosition().y);
@@ -67,7 +68,7 @@ TEST(PongReplay, ARecordedMatchAndItsReplayEndBitForBitTheSame)
     hitbox::Recording header;
     header.program = "Pong";
     hitbox::RecordingLevel recorder(recorded, header);
-    Input input;
+    hitbox::Input input;
     std::mt19937 random(7);
     for (long long i = 0; i < steps; ++i)
     {
@@ -104,8 +105,8 @@ TEST(PongRewind, EveryKeptStepOfAMatchIsShownAsItWasAndTheMatchGoesOnUnchanged)
     rewound.startMatch(Mode::TwoPlayers);
     hitbox::RewindLevel rewind(rewound);
     std::vector<std::string> history{stateBits(reference)};
-    Input referenceInput;
-    Input input;
+    hitbox::Input referenceInput;
+    hitbox::Input input;
     std::mt19937 referenceRandom(3);
     std::mt19937 random(3);
     const long long run = 2000;

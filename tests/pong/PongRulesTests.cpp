@@ -24,7 +24,7 @@ void loseAPoint(PongLevel& pong, Side side)
     pong.placeBall({x, 80.f}, {directionOf(side) * 900.f, 0.f});
     const int pointsBefore =
         pong.getScore().pointsOf(Side::Left) + pong.getScore().pointsOf(Side::Right);
-    Input input;
+    hitbox::Input input;
     for (int i = 0; i < 600; ++i)
     {
         step(pong, input);
@@ -93,7 +93,7 @@ TEST(PongMatch, SpaceOnTheWinScreenStartsARematchFromNilNil)
 {
     PongLevel pong(twoPlayerSettings());
     pong.showWinScreen(11, 4);
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::Space);
     step(pong, input);
     EXPECT_EQ(pong.getScreen(), Screen::Play);
@@ -123,7 +123,7 @@ TEST(PongScreens, NumberKeysOnTheTitleChooseTheMode)
     {
         PongLevel pong;
         ASSERT_EQ(pong.getScreen(), Screen::Title);
-        Input input;
+        hitbox::Input input;
         input.setKeyDown(key);
         step(pong, input);
         EXPECT_EQ(pong.getScreen(), Screen::Play);
@@ -135,7 +135,7 @@ TEST(PongScreens, NumberKeysOnTheTitleChooseTheMode)
 TEST(PongScreens, DOnTheTitleChangesTheDifficultyAndArrowsThePointsToWin)
 {
     PongLevel pong;
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::D);
     step(pong, input);
     EXPECT_EQ(pong.getDifficulty(), Difficulty::Hard); // normal -> hard
@@ -156,7 +156,7 @@ TEST(PongScreens, LeftAloneOnTheTitleTheGamePlaysItselfUntilAKeyIsPressed)
     steps(pong, stepsFor(3.f));
     EXPECT_TRUE(pong.getBall().isMoving());
 
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::F1); // the debug key is not "somebody wants to play"
     step(pong, input);
     EXPECT_TRUE(pong.isAttractMode());
@@ -180,7 +180,7 @@ TEST(PongKeys, WAndSMoveTheLeftPaddleUpAndDownAndArrowsTheRightOne)
     pong.startMatch(Mode::TwoPlayers);
     const float leftStart = pong.getPaddle(Side::Left).getPosition().y;
     const float rightStart = pong.getPaddle(Side::Right).getPosition().y;
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::W);
     input.setKeyDown(sf::Keyboard::Key::Down);
     for (int i = 0; i < 12; ++i)
@@ -193,7 +193,7 @@ TEST(PongKeys, PaddlesStopShortOfTheWallsLeavingRoomForTheBall)
 {
     PongLevel pong(twoPlayerSettings());
     pong.startMatch(Mode::TwoPlayers);
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::W);
     for (int i = 0; i < stepsFor(2.f); ++i)
         step(pong, input);
@@ -205,7 +205,7 @@ TEST(PongKeys, PaddlesStopShortOfTheWallsLeavingRoomForTheBall)
 TEST(PongKeys, MTogglesTheSound)
 {
     PongLevel pong;
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::M);
     step(pong, input);
     EXPECT_TRUE(pong.isMuted());

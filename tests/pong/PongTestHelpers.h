@@ -12,7 +12,7 @@ namespace pongtest
 {
 
 // One fixed step with these keys held, exactly as the window loop runs it.
-inline void step(PongLevel& pong, Input& input)
+inline void step(PongLevel& pong, hitbox::Input& input)
 {
     pong.handleInput(input, hitbox::stepSeconds);
     pong.update(hitbox::stepSeconds);
@@ -21,7 +21,7 @@ inline void step(PongLevel& pong, Input& input)
 
 inline void steps(PongLevel& pong, long long count)
 {
-    Input input;
+    hitbox::Input input;
     for (long long i = 0; i < count; ++i)
         step(pong, input);
 }
@@ -32,7 +32,7 @@ inline long long stepsFor(float seconds)
 }
 
 // Hold `up` or `down` (or neither) so the paddle heads for `targetY`.
-inline void steerTowards(Input& input, float paddleY, float targetY, float deadZone)
+inline void steerTowards(hitbox::Input& input, float paddleY, float targetY, float deadZone)
 {
     input.setKeyUp(sf::Keyboard::Key::W);
     input.setKeyUp(sf::Keyboard::Key::S);
@@ -43,13 +43,13 @@ inline void steerTowards(Input& input, float paddleY, float targetY, float deadZ
 }
 
 // A person playing the left paddle; decides the keys from what is on screen.
-using Player = std::function<void(const PongLevel&, Input&)>;
+using Player = std::function<void(const PongLevel&, hitbox::Input&)>;
 
 // Plays one-player matches until the first is won (or `maxSeconds` pass). Returns the
 // winner, or nothing in `finished` if nobody won in time.
 inline Side playMatch(PongLevel& pong, const Player& player, float maxSeconds, bool& finished)
 {
-    Input input;
+    hitbox::Input input;
     const long long limit = stepsFor(maxSeconds);
     for (long long i = 0; i < limit && pong.getScreen() == Screen::Play; ++i)
     {

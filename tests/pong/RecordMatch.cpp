@@ -55,7 +55,7 @@ int main(int argc, char* argv[])
     header.headless = true;
     header.options = {{"--mode", "2p"}};
     hitbox::RecordingLevel recorder(pong, header);
-    Input input;
+    hitbox::Input input;
     std::mt19937 random(inputSeed);
     for (long long step = 0; step < steps; ++step)
     {

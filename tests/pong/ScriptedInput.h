@@ -11,7 +11,7 @@ namespace pongtesting
 
 // Each of W, S, Up and Down goes down or up at random now and then (1 step in 16 each); the
 // mouse moves by up to 3 pixels on each axis.
-inline void scriptInput(Input& input, std::mt19937& random)
+inline void scriptInput(hitbox::Input& input, std::mt19937& random)
 {
     const sf::Keyboard::Key keys[] = {sf::Keyboard::Key::W, sf::Keyboard::Key::S,
                                       sf::Keyboard::Key::Up, sf::Keyboard::Key::Down};

@@ -14,7 +14,7 @@
 struct HintScope
 {
     void hints();
-    std::vector<GameObject> boxes;
+    std::vector<hitbox::GameObject> boxes;
     std::size_t index, i;
     sf::Vector2f scenePoint, mouse;
     sf::RenderWindow& window;

@@ -32,7 +32,7 @@
 #include <string>
 
 // How a GameObject shows in a failure: its name (or position) and its collision box.
-inline std::ostream& operator<<(std::ostream& out, const GameObject& object)
+inline std::ostream& operator<<(std::ostream& out, const hitbox::GameObject& object)
 {
     const hitbox::Box box = hitbox::normalised(hitbox::toBox(object.getCollisionBox()));
     return out << object.describe() << ", collision box x [" << box.left << ", "
@@ -56,7 +56,7 @@ inline SweepCase sweep(const Box& mover, Vec2 move, const Box& target)
 {
     return {mover, move, target};
 }
-inline SweepCase sweep(const GameObject& mover, Vec2 move, const GameObject& target)
+inline SweepCase sweep(const hitbox::GameObject& mover, Vec2 move, const hitbox::GameObject& target)
 {
     return {toBox(mover.getCollisionBox()), move, toBox(target.getCollisionBox())};
 }
@@ -67,14 +67,14 @@ inline std::ostream& operator<<(std::ostream& out, const SweepCase& sweepCase)
 
 // Collides / NotCollides: the World's exact test for the two shapes (Box: the collision box,
 // Circle: the bounding circle); touching is not colliding.
-class CollidesMatcher : public ::testing::MatcherInterface<const GameObject&>
+class CollidesMatcher : public ::testing::MatcherInterface<const hitbox::GameObject&>
 {
 public:
-    CollidesMatcher(const GameObject& other, bool wanted, Shape shape, Shape otherShape)
+    CollidesMatcher(const hitbox::GameObject& other, bool wanted, Shape shape, Shape otherShape)
         : other(other), wanted(wanted), shape(shape), otherShape(otherShape)
     {
     }
-    bool MatchAndExplain(const GameObject& object,
+    bool MatchAndExplain(const hitbox::GameObject& object,
                          ::testing::MatchResultListener* listener) const override
     {
         const Explanation why = explain(object, other, shape, otherShape);
@@ -91,29 +91,30 @@ public:
     }
 
 private:
-    const GameObject& other;
+    const hitbox::GameObject& other;
     bool wanted;
     Shape shape;
     Shape otherShape;
 };
 
-inline ::testing::Matcher<const GameObject&>
-Collides(const GameObject& other, Shape shape = Shape::Box, Shape otherShape = Shape::Box)
+inline ::testing::Matcher<const hitbox::GameObject&>
+Collides(const hitbox::GameObject& other, Shape shape = Shape::Box, Shape otherShape = Shape::Box)
 {
     return ::testing::MakeMatcher(new CollidesMatcher(other, true, shape, otherShape));
 }
-inline ::testing::Matcher<const GameObject&>
-NotCollides(const GameObject& other, Shape shape = Shape::Box, Shape otherShape = Shape::Box)
+inline ::testing::Matcher<const hitbox::GameObject&> NotCollides(const hitbox::GameObject& other,
+                                                                 Shape shape = Shape::Box,
+                                                                 Shape otherShape = Shape::Box)
 {
     return ::testing::MakeMatcher(new CollidesMatcher(other, false, shape, otherShape));
 }
 
 // Touches: the collision boxes meet along an edge or at a corner and share no area.
-class TouchesMatcher : public ::testing::MatcherInterface<const GameObject&>
+class TouchesMatcher : public ::testing::MatcherInterface<const hitbox::GameObject&>
 {
 public:
-    explicit TouchesMatcher(const GameObject& other) : other(other) {}
-    bool MatchAndExplain(const GameObject& object,
+    explicit TouchesMatcher(const hitbox::GameObject& other) : other(other) {}
+    bool MatchAndExplain(const hitbox::GameObject& object,
                          ::testing::MatchResultListener* listener) const override
     {
         const Box a = normalised(toBox(object.getCollisionBox()));
@@ -130,10 +131,10 @@ public:
     }
 
 private:
-    const GameObject& other;
+    const hitbox::GameObject& other;
 };
 
-inline ::testing::Matcher<const GameObject&> Touches(const GameObject& other)
+inline ::testing::Matcher<const hitbox::GameObject&> Touches(const hitbox::GameObject& other)
 {
     return ::testing::MakeMatcher(new TouchesMatcher(other));
 }
@@ -161,11 +162,11 @@ MATCHER_P(HasNormal, normal,
 }
 
 // StaysInside: the collision box is inside `area`; touching its edges counts as inside.
-class StaysInsideMatcher : public ::testing::MatcherInterface<const GameObject&>
+class StaysInsideMatcher : public ::testing::MatcherInterface<const hitbox::GameObject&>
 {
 public:
     explicit StaysInsideMatcher(const Box& area) : area(normalised(area)) {}
-    bool MatchAndExplain(const GameObject& object,
+    bool MatchAndExplain(const hitbox::GameObject& object,
                          ::testing::MatchResultListener* listener) const override
     {
         const Box box = normalised(toBox(object.getCollisionBox()));
@@ -196,7 +197,7 @@ private:
     Box area;
 };
 
-inline ::testing::Matcher<const GameObject&> StaysInside(const Box& area)
+inline ::testing::Matcher<const hitbox::GameObject&> StaysInside(const Box& area)
 {
     return ::testing::MakeMatcher(new StaysInsideMatcher(area));
 }

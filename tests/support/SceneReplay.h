@@ -54,7 +54,7 @@ public:
     }
 
     // One fixed step, exactly as the loop runs it: input, update, end of the frame.
-    void step(Input& input)
+    void step(hitbox::Input& input)
     {
         recorder.handleInput(input, hitbox::stepSeconds);
         recorder.update(hitbox::stepSeconds);

@@ -9,7 +9,7 @@
 // that only reads state, and tests that need no window.
 #pragma once
 
-#include "hitbox/app/Input.h"
+#include "Framework/Input.h"
 
 #include <SFML/Graphics.hpp>
 #include <SFML/Graphics/Color.hpp>

@@ -14,6 +14,9 @@ bool isKnownKey(int key)
 
 } // namespace
 
+namespace hitbox
+{
+
 void Input::setKeyDown(int key)
 {
     if (!isKnownKey(key))
@@ -85,27 +88,12 @@ sf::Vector2f Input::getMousePosition() const
 
 void Input::press(Button& button, bool down)
 {
-    // A click shorter than a frame (a touchpad tap) is both pressed and released this frame.
-    if (down && button.state == UP)
-    {
-        button.state = PRESSED;
+    // Held buttons may repeat their "down": only the first one is a press.
+    if (down && !button.down)
         button.pressed = true;
-    }
-    if (!down && button.state != UP)
-    {
-        button.state = UP;
+    if (!down && button.down)
         button.released = true;
-    }
-}
-
-void Input::setState(Button& button, MouseState state)
-{
-    // Old lab code reports a release as setLeftMouse(UP): count it as one.
-    if (state == UP && button.state != UP)
-        button.released = true;
-    if (state != UP) // PRESSED says it went down; DOWN says it is held (no press this frame)
-        button.pressed = state == PRESSED;
-    button.state = state;
+    button.down = down;
 }
 
 void Input::setMouseLDown(bool down)
@@ -113,29 +101,14 @@ void Input::setMouseLDown(bool down)
     press(leftButton, down);
 }
 
-bool Input::isMouseLDown() const
-{
-    return leftButton.state != UP;
-}
-
 void Input::setMouseRDown(bool down)
 {
     press(rightButton, down);
 }
 
-bool Input::isMouseRDown() const
-{
-    return rightButton.state != UP;
-}
-
-void Input::setLeftMouse(MouseState state)
-{
-    setState(leftButton, state);
-}
-
 bool Input::isLeftMouseDown() const
 {
-    return leftButton.state != UP;
+    return leftButton.down;
 }
 
 bool Input::isLeftMousePressed() const
@@ -148,14 +121,9 @@ bool Input::isLeftMouseReleased() const
     return leftButton.released;
 }
 
-void Input::setRightMouse(MouseState state)
-{
-    setState(rightButton, state);
-}
-
 bool Input::isRightMouseDown() const
 {
-    return rightButton.state != UP;
+    return rightButton.down;
 }
 
 bool Input::isRightMousePressed() const
@@ -192,10 +160,10 @@ void Input::update()
     keysReleased.fill(false);
     for (Button* button : {&leftButton, &rightButton})
     {
-        if (button->state == PRESSED)
-            button->state = DOWN;
         button->pressed = false;
         button->released = false;
     }
     mouseWheel = 0.f;
 }
+
+} // namespace hitbox

@@ -1,8 +1,10 @@
 // Input.h - what the keyboard and mouse are doing, as plain state a test can set.
 //
 // The window's events feed it (hitbox::App does that for you); a test sets keys and the
-// mouse directly, so every rule can be tested without a window. The API is the course's
-// old Framework/Input.h plus "released this frame" and the mouse wheel.
+// mouse directly, so every rule can be tested without a window. One way to set each button
+// (setMouseLDown) and one family of questions (isLeftMouseDown, ...Pressed, ...Released); the
+// course's other names for them (setLeftMouse(MouseState), isMouseLDown) are its Input, in
+// framework/compat/Framework/Input.h, built on this one.
 //
 // "This frame" means until update() is called: hitbox::App calls it after the first
 // simulation step that saw the press, so a press is seen by exactly one step.
@@ -13,16 +15,12 @@
 
 #include <array>
 
+namespace hitbox
+{
+
 class Input
 {
 public:
-    enum MouseState
-    {
-        UP,
-        DOWN,
-        PRESSED // went down this frame
-    };
-
     // Keys are sf::Keyboard::Key values (sf::Keyboard::Key::W) or their int codes. Codes
     // outside the keyboard's range, such as sf::Keyboard::Key::Unknown (-1), are ignored.
     void setKeyDown(int key);
@@ -56,15 +54,13 @@ public:
     [[nodiscard]] int getMouseY() const;
     [[nodiscard]] sf::Vector2f getMousePosition() const;
 
+    // A button going down (true) or up (false). A press shorter than a frame (a touchpad
+    // tap: down and up before update()) is both pressed and released this frame.
     void setMouseLDown(bool down);
-    [[nodiscard]] bool isMouseLDown() const;
     void setMouseRDown(bool down);
-    [[nodiscard]] bool isMouseRDown() const;
-    void setLeftMouse(MouseState state);
-    [[nodiscard]] bool isLeftMouseDown() const;    // DOWN or PRESSED
-    [[nodiscard]] bool isLeftMousePressed() const; // PRESSED: went down this frame
-    [[nodiscard]] bool isLeftMouseReleased() const;
-    void setRightMouse(MouseState state);
+    [[nodiscard]] bool isLeftMouseDown() const;     // held now
+    [[nodiscard]] bool isLeftMousePressed() const;  // went down this frame
+    [[nodiscard]] bool isLeftMouseReleased() const; // went up this frame
     [[nodiscard]] bool isRightMouseDown() const;
     [[nodiscard]] bool isRightMousePressed() const;
     [[nodiscard]] bool isRightMouseReleased() const;
@@ -83,12 +79,11 @@ public:
 private:
     struct Button
     {
-        MouseState state = UP;
+        bool down = false;
         bool pressed = false;  // went down this frame (stays true if it also went up again)
         bool released = false; // went up this frame
     };
     static void press(Button& button, bool down);
-    static void setState(Button& button, MouseState state);
 
     std::array<bool, sf::Keyboard::KeyCount> keysDown{};
     std::array<bool, sf::Keyboard::KeyCount> keysPressed{};
@@ -98,3 +93,5 @@ private:
     Button rightButton;
     float mouseWheel = 0.f;
 };
+
+} // namespace hitbox

@@ -19,7 +19,6 @@
 #include <string>
 #include <vector>
 
-class Input;
 namespace sf
 {
 class RenderTarget;
@@ -27,6 +26,7 @@ class RenderTarget;
 
 namespace hitbox
 {
+class Input;
 class DebugRenderer;
 
 // The game area of every program whose level does not override getWorldSize(), in world

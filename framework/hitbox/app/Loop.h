@@ -6,10 +6,9 @@
 // "Game Loop": "Play catch up" and "Stuck in the middle").
 #pragma once
 
-class Input;
-
 namespace hitbox
 {
+class Input;
 class Level;
 
 // Simulation steps per second. Every program and every test uses the same step.

@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-class GameObject;
 namespace sf
 {
 class RenderTarget;
@@ -23,6 +22,7 @@ class RenderTarget;
 
 namespace hitbox
 {
+class GameObject;
 
 // What a collision shape is doing this step. Each state has its own colour AND its own line
 // style, so colour is never the only cue (red/green colour blindness affects about 1 man in

@@ -15,7 +15,10 @@
 
 #include <SFML/System/Vector2.hpp>
 
+namespace hitbox
+{
 class GameObject;
+}
 
 class Collision
 {
@@ -25,28 +28,31 @@ public:
 
     // Bounding circles (no square root). The circles come from each object's
     // getBoundingCircle(): by default the circle inside its collision box.
-    [[nodiscard]] static bool checkBoundingCircle(GameObject* first, GameObject* second);
+    [[nodiscard]] static bool checkBoundingCircle(hitbox::GameObject* first,
+                                                  hitbox::GameObject* second);
     // Axis-aligned collision boxes.
-    [[nodiscard]] static bool checkBoundingBox(GameObject* first, GameObject* second);
+    [[nodiscard]] static bool checkBoundingBox(hitbox::GameObject* first,
+                                               hitbox::GameObject* second);
     // Is a point inside the object's collision box? The point is in world coordinates:
     // Hitbox's Input gives the mouse in world coordinates, so this is right after a resize.
-    [[nodiscard]] static bool checkBoundingBox(GameObject* object, sf::Vector2f point);
-    [[nodiscard]] static bool checkBoundingBox(GameObject* object, sf::Vector2i point);
+    [[nodiscard]] static bool checkBoundingBox(hitbox::GameObject* object, sf::Vector2f point);
+    [[nodiscard]] static bool checkBoundingBox(hitbox::GameObject* object, sf::Vector2i point);
     // The first object's bounding circle against the second object's collision box.
-    [[nodiscard]] static bool checkCircleBox(GameObject* circleObject, GameObject* boxObject);
+    [[nodiscard]] static bool checkCircleBox(hitbox::GameObject* circleObject,
+                                             hitbox::GameObject* boxObject);
 
     // The same tests, telling how they collide: the normal points out of `second` towards
     // `first`; moving `first` by normal * depth separates them.
-    [[nodiscard]] static hitbox::Contact getBoundingCircleContact(GameObject* first,
-                                                                  GameObject* second);
-    [[nodiscard]] static hitbox::Contact getBoundingBoxContact(GameObject* first,
-                                                               GameObject* second);
-    [[nodiscard]] static hitbox::Contact getCircleBoxContact(GameObject* circleObject,
-                                                             GameObject* boxObject);
+    [[nodiscard]] static hitbox::Contact getBoundingCircleContact(hitbox::GameObject* first,
+                                                                  hitbox::GameObject* second);
+    [[nodiscard]] static hitbox::Contact getBoundingBoxContact(hitbox::GameObject* first,
+                                                               hitbox::GameObject* second);
+    [[nodiscard]] static hitbox::Contact getCircleBoxContact(hitbox::GameObject* circleObject,
+                                                             hitbox::GameObject* boxObject);
     // Any two shape kinds of `shapes` (ShapeTable.h; Hitbox's Box and Circle by default): the
     // three tests above are this one with the kinds filled in.
     [[nodiscard]] static hitbox::Contact
-    getContact(GameObject* first, hitbox::ShapeKind firstKind, GameObject* second,
+    getContact(hitbox::GameObject* first, hitbox::ShapeKind firstKind, hitbox::GameObject* second,
                hitbox::ShapeKind secondKind,
                const hitbox::ShapeTable& shapes = hitbox::ShapeTable::standard());
 };

@@ -13,10 +13,9 @@
 
 #include <cstdint>
 
-class GameObject;
-
 namespace hitbox
 {
+class GameObject;
 
 enum class ContactPhase
 {

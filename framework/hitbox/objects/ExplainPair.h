@@ -10,10 +10,9 @@
 #include "hitbox/geometry/Explain.h"
 #include "hitbox/objects/World.h"
 
-class GameObject;
-
 namespace hitbox
 {
+class GameObject;
 
 // The objects' names are used when set (GameObject::setName), else "A" and "B". A dead
 // object, one that is not a collider, or an object against itself never collides, and the

@@ -6,18 +6,14 @@
 #include <sstream>
 #include <utility>
 
-hitbox::OptionalBox& hitbox::OptionalBox::operator=(const sf::FloatRect& box)
+namespace hitbox
 {
-    sf::FloatRect::operator=(box);
-    isSet = true;
-    return *this;
-}
 
 GameObject::GameObject() = default;
 
 GameObject::~GameObject()
 {
-    for (hitbox::World* world : worlds.worlds())
+    for (World* world : worlds.worlds())
         world->forgetDestroyed(*this);
 }
 
@@ -27,11 +23,11 @@ void GameObject::update(float) {}
 
 void GameObject::collisionResponse(GameObject*) {}
 
-void GameObject::onCollisionEnter(const hitbox::CollisionEvent&) {}
+void GameObject::onCollisionEnter(const CollisionEvent&) {}
 
-void GameObject::onCollisionStay(const hitbox::CollisionEvent&) {}
+void GameObject::onCollisionStay(const CollisionEvent&) {}
 
-void GameObject::onCollisionExit(const hitbox::CollisionEvent&) {}
+void GameObject::onCollisionExit(const CollisionEvent&) {}
 
 void GameObject::setName(std::string newName)
 {
@@ -89,23 +85,32 @@ void GameObject::setCollider(bool isColliderNow)
 
 void GameObject::setCollisionBox(float left, float top, float width, float height)
 {
-    collisionBox = sf::FloatRect({left, top}, {width, height});
+    localBox = {left, top, width, height};
+    hasBox = true;
 }
 
 void GameObject::setCollisionBox(const sf::FloatRect& box)
 {
-    collisionBox = box;
+    localBox = toBox(box);
+    hasBox = true;
 }
 
 void GameObject::clearCollisionBox()
 {
-    collisionBox = hitbox::OptionalBox();
+    hasBox = false;
+}
+
+std::optional<Box> GameObject::givenCollisionBox() const
+{
+    if (hasBox)
+        return localBox;
+    return std::nullopt;
 }
 
 sf::FloatRect GameObject::getLocalCollisionBox() const
 {
-    if (collisionBox.isSet)
-        return collisionBox;
+    if (const std::optional<Box> given = givenCollisionBox())
+        return toSfml(*given);
     const sf::Vector2f origin = getOrigin();
     return sf::FloatRect({-origin.x, -origin.y}, getSize());
 }
@@ -115,26 +120,26 @@ sf::FloatRect GameObject::getCollisionBox() const
 {
     // The box is measured from the origin point; the shape's own coordinates start at its
     // top-left corner, so shift by the origin before applying the object's transform.
-    hitbox::Box box = hitbox::normalised(hitbox::toBox(getLocalCollisionBox()));
+    Box box = normalised(toBox(getLocalCollisionBox()));
     box.left += getOrigin().x;
     box.top += getOrigin().y;
-    return getTransform().transformRect(hitbox::toSfml(box));
+    return getTransform().transformRect(toSfml(box));
 }
 // [/slide]
 
 // [slide:bounding-circle-radius]
-hitbox::Circle GameObject::getBoundingCircle() const
+Circle GameObject::getBoundingCircle() const
 {
     const sf::Vector2f scale(std::fabs(getScale().x), std::fabs(getScale().y));
     if (hasOwnCircle) // a circle stretched one way is an ellipse: keep the one inside it
-        return {hitbox::toVec2(getTransform().transformPoint(circleCenter + getOrigin())),
+        return {toVec2(getTransform().transformPoint(circleCenter + getOrigin())),
                 circleRadius * std::fmin(scale.x, scale.y)};
     // The circle inscribed in the (scaled) collision box: the fix for the old framework,
     // which took the radius from the shape's width and the centre from its top-left corner.
-    const hitbox::Box box = hitbox::normalised(hitbox::toBox(getLocalCollisionBox()));
+    const Box box = normalised(toBox(getLocalCollisionBox()));
     const float radius = std::fmin(box.width * scale.x, box.height * scale.y) / 2.f;
-    const sf::Vector2f center = hitbox::toSfml(hitbox::centerOf(box)) + getOrigin();
-    return {hitbox::toVec2(getTransform().transformPoint(center)), radius};
+    const sf::Vector2f center = toSfml(centerOf(box)) + getOrigin();
+    return {toVec2(getTransform().transformPoint(center)), radius};
 }
 // [/slide]
 
@@ -150,12 +155,4 @@ void GameObject::clearBoundingCircle()
     hasOwnCircle = false;
 }
 
-void GameObject::setInput(Input* newInput)
-{
-    input = newInput;
-}
-
-void GameObject::setWindow(sf::RenderWindow* newWindow)
-{
-    window = newWindow;
-}
+} // namespace hitbox

@@ -1,8 +1,8 @@
 // GameObject.h - a rectangle shape that moves and collides.
 //
-// The base class of every object in the labs and in Pong, and the same API as the course's
-// old Framework/GameObject.h (so old lab code builds unchanged). What changed from the old
-// framework is listed in docs/course-labs.md ("Differences from the course's framework").
+// The base class of every object in the labs and in Pong. The course's own GameObjects (its
+// input and window pointers, the `collisionBox` member old lab code assigns) are built on this
+// one in framework/compat/ (docs/course-labs.md); this class knows nothing of them.
 //
 // The collision box is measured from the object's position, i.e. from its origin point:
 //     setOrigin({16, 16});
@@ -16,27 +16,12 @@
 
 #include <SFML/Graphics/RectangleShape.hpp>
 
+#include <optional>
 #include <string>
-
-namespace sf
-{
-class RenderWindow;
-}
-class Input;
 
 namespace hitbox
 {
 class World;
-// A collision box relative to the origin point, and whether one was given. Old lab code
-// assigns the box directly (`collisionBox = sf::FloatRect(...)`): that counts as given too.
-// Until then it reads as {0, 0, 0, 0}, as in the course's old framework.
-struct OptionalBox : sf::FloatRect
-{
-    bool isSet = false;
-
-    OptionalBox& operator=(const sf::FloatRect& box);
-};
-} // namespace hitbox
 
 class GameObject : public sf::RectangleShape
 {
@@ -63,9 +48,9 @@ public:
     // with another, Stay every further step, Exit the first step they no longer do (or the
     // other left the World, died, was destroyed, stopped being a collider). Each is called
     // after both collisionResponse calls of the step. They do nothing by default.
-    virtual void onCollisionEnter(const hitbox::CollisionEvent& event);
-    virtual void onCollisionStay(const hitbox::CollisionEvent& event);
-    virtual void onCollisionExit(const hitbox::CollisionEvent& event);
+    virtual void onCollisionEnter(const CollisionEvent& event);
+    virtual void onCollisionStay(const CollisionEvent& event);
+    virtual void onCollisionExit(const CollisionEvent& event);
 
     // A name for messages and the debugger ("coin 3"); empty by default, when messages say
     // where the object is instead.
@@ -100,30 +85,31 @@ public:
     // The bounding circle in world coordinates. Default: the circle inscribed in the
     // collision box (centre of the box, radius half its shorter side, after scaling; a
     // circle set with setBoundingCircle scales by the smaller of the two scales).
-    [[nodiscard]] hitbox::Circle getBoundingCircle() const;
+    [[nodiscard]] Circle getBoundingCircle() const;
     // A circle measured from the object's position (its origin point), like the box.
     void setBoundingCircle(sf::Vector2f centerFromOrigin, float radius);
     // Go back to the default circle (inscribed in the collision box).
     void clearBoundingCircle();
 
-    // The course framework hands every object the input and the window it may use.
-    void setInput(Input* newInput);
-    void setWindow(sf::RenderWindow* newWindow);
-
 protected:
     sf::Vector2f velocity;
     bool alive = true;
-    // Relative to the origin point. Not set (isSet false): the whole shape is used.
-    hitbox::OptionalBox collisionBox;
     bool collider = true;
-    Input* input = nullptr;
-    sf::RenderWindow* window = nullptr;
+
+    // The box every query reads, relative to the origin point: the one setCollisionBox gave,
+    // or none (the whole shape). Virtual so that a class keeping a box of its own can answer
+    // with it: the course's GameObjects (framework/compat/) read the member old lab code assigns.
+    [[nodiscard]] virtual std::optional<Box> givenCollisionBox() const;
 
 private:
-    friend class hitbox::World;        // keeps `worlds` up to date
-    mutable hitbox::WorldLinks worlds; // the Worlds this object is in (empty in a copy)
+    friend class World;        // keeps `worlds` up to date
+    mutable WorldLinks worlds; // the Worlds this object is in (empty in a copy)
+    Box localBox;              // relative to the origin point; read only while hasBox
+    bool hasBox = false;
     std::string name;
     bool hasOwnCircle = false; // false: the circle inscribed in the collision box
     sf::Vector2f circleCenter; // relative to the origin point
     float circleRadius = 0.f;
 };
+
+} // namespace hitbox

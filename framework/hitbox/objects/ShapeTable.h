@@ -17,10 +17,9 @@
 #include <cstddef>
 #include <cstdint>
 
-class GameObject;
-
 namespace hitbox
 {
+class GameObject;
 
 // The kinds Hitbox knows. A kind is a small number (an index into the table): a table may
 // hold more kinds than these, up to maxShapeKinds (a test adds a toy one as kind 2).

@@ -42,10 +42,9 @@
 #include <utility>
 #include <vector>
 
-class GameObject;
-
 namespace hitbox
 {
+class GameObject;
 
 class World
 {
@@ -146,7 +145,7 @@ public:
     [[nodiscard]] BroadphaseLayout getBroadphaseLayout() const;
 
 private:
-    friend class ::GameObject; // its destructor calls forgetDestroyed
+    friend class GameObject; // its destructor calls forgetDestroyed
 
     struct Entry
     {

@@ -28,11 +28,11 @@ constexpr int randomCases = 2000;
 
 // SFML 2 and SFML 3 spell rotations and rectangles differently: the framework's helpers
 // (hitbox/sfml/) read both.
-void turn(GameObject& object, float degrees)
+void turn(hitbox::GameObject& object, float degrees)
 {
     hitbox::setRotationDegrees(object, degrees);
 }
-float degreesOf(const GameObject& object)
+float degreesOf(const hitbox::GameObject& object)
 {
     return hitbox::getRotationDegrees(object);
 }
@@ -58,7 +58,7 @@ std::string text(const Sides& sides)
 }
 
 // An object as a student set it up: only what differs from a plain box is printed.
-std::string describe(const GameObject* object)
+std::string describe(const hitbox::GameObject* object)
 {
     if (object == nullptr)
         return "nullptr";
@@ -92,16 +92,16 @@ sf::Vector2f at(const Variant& variant, float x, float y)
 
 // A plain box (origin at its top-left corner, no scale, no rotation): the tests of tasks
 // 2, 3 and 5 use only these, so a mistake in task 1's worldBox costs task 1 alone.
-GameObject box(const Variant& variant, float left, float top, float width, float height)
+hitbox::GameObject box(const Variant& variant, float left, float top, float width, float height)
 {
-    GameObject object;
+    hitbox::GameObject object;
     object.setPosition(at(variant, left, top));
     object.setSize(sf::Vector2f(width, height) * variant.unit);
     return object;
 }
 
 // A plain ball: a square whose inscribed circle has this centre and radius.
-GameObject ball(const Variant& variant, float centerX, float centerY, float radius)
+hitbox::GameObject ball(const Variant& variant, float centerX, float centerY, float radius)
 {
     return box(variant, centerX - radius, centerY - radius, 2.f * radius, 2.f * radius);
 }
@@ -119,7 +119,7 @@ bool near(const Sides& actual, const Sides& expected)
            near(actual.right, expected.right) && near(actual.bottom, expected.bottom);
 }
 
-void expectWorldBox(const char* rule, const GameObject& object, const Sides& expected)
+void expectWorldBox(const char* rule, const hitbox::GameObject& object, const Sides& expected)
 {
     const Sides actual = MyCollision::worldBox(object);
     EXPECT_TRUE(near(actual, expected))
@@ -155,7 +155,7 @@ bool same(const WorldCircle& a, const hitbox::Circle& b)
 }
 
 // The framework's world collision box: the answer to task 1.
-Sides referenceBox(const GameObject& object)
+Sides referenceBox(const hitbox::GameObject& object)
 {
     return sidesOf(object.getCollisionBox());
 }
@@ -167,7 +167,7 @@ std::string yourShapesNote(const std::string& shapes)
            shapes + ")";
 }
 
-Judged judgeBoxes(bool stated, GameObject& first, GameObject& second)
+Judged judgeBoxes(bool stated, hitbox::GameObject& first, hitbox::GameObject& second)
 {
     if (!MyCollision::canCollide(&first, &second))
         return {stated, ""};
@@ -180,7 +180,7 @@ Judged judgeBoxes(bool stated, GameObject& first, GameObject& second)
             yourShapesNote("worldBox A = " + text(a) + ", B = " + text(b))};
 }
 
-Judged judgePoint(bool stated, GameObject& object, sf::Vector2f point)
+Judged judgePoint(bool stated, hitbox::GameObject& object, sf::Vector2f point)
 {
     if (!MyCollision::canCollide(&object))
         return {stated, ""};
@@ -192,7 +192,7 @@ Judged judgePoint(bool stated, GameObject& object, sf::Vector2f point)
             yourShapesNote("worldBox = " + text(box))};
 }
 
-Judged judgeCircleBox(bool stated, GameObject& circleObject, GameObject& boxObject)
+Judged judgeCircleBox(bool stated, hitbox::GameObject& circleObject, hitbox::GameObject& boxObject)
 {
     if (!MyCollision::canCollide(&circleObject, &boxObject))
         return {stated, ""};
@@ -209,7 +209,8 @@ Judged judgeCircleBox(bool stated, GameObject& circleObject, GameObject& boxObje
 }
 
 // `rule` names the case, e.g. "boxes touching on the left edge". Both argument orders.
-void expectBoxes(bool collide, const std::string& rule, GameObject first, GameObject second)
+void expectBoxes(bool collide, const std::string& rule, hitbox::GameObject first,
+                 hitbox::GameObject second)
 {
     const Judged judged = judgeBoxes(collide, first, second);
     const bool answer = MyCollision::checkBoundingBox(&first, &second);
@@ -223,7 +224,8 @@ void expectBoxes(bool collide, const std::string& rule, GameObject first, GameOb
         << ", B = " << describe(&first) << judged.note;
 }
 
-void expectPoint(bool inside, const std::string& rule, GameObject object, sf::Vector2f point)
+void expectPoint(bool inside, const std::string& rule, hitbox::GameObject object,
+                 sf::Vector2f point)
 {
     const Judged judged = judgePoint(inside, object, point);
     const bool answer = MyCollision::checkBoundingBox(&object, point);
@@ -232,7 +234,8 @@ void expectPoint(bool inside, const std::string& rule, GameObject object, sf::Ve
         << ": point = " << text(point) << ", box = " << describe(&object) << judged.note;
 }
 
-void expectCircles(bool collide, const std::string& rule, GameObject first, GameObject second)
+void expectCircles(bool collide, const std::string& rule, hitbox::GameObject first,
+                   hitbox::GameObject second)
 {
     const bool answer = MyCollision::checkBoundingCircle(&first, &second);
     EXPECT_EQ(answer, collide) << rule << " were reported as "
@@ -244,7 +247,8 @@ void expectCircles(bool collide, const std::string& rule, GameObject first, Game
                                 << ": A = " << describe(&second) << ", B = " << describe(&first);
 }
 
-void expectCircleBox(bool collide, const std::string& rule, GameObject circle, GameObject boxObject)
+void expectCircleBox(bool collide, const std::string& rule, hitbox::GameObject circle,
+                     hitbox::GameObject boxObject)
 {
     const Judged judged = judgeCircleBox(collide, circle, boxObject);
     const bool answer = MyCollision::checkCircleBox(&circle, &boxObject);
@@ -260,7 +264,7 @@ float wholeBetween(std::mt19937& random, int low, int high)
     return static_cast<float>(std::uniform_int_distribution<int>(low, high)(random));
 }
 
-GameObject randomPlainBox(const Variant& variant, std::mt19937& random)
+hitbox::GameObject randomPlainBox(const Variant& variant, std::mt19937& random)
 {
     return box(variant, wholeBetween(random, 0, 20), wholeBetween(random, 0, 20),
                wholeBetween(random, 0, 10), wholeBetween(random, 0, 10));
@@ -278,44 +282,44 @@ void checkWorldBox(const Variant& variant)
     const float u = variant.unit;
     const sf::Vector2f p = at(variant, 100.f, 100.f);
 
-    GameObject plain = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject plain = box(variant, 100.f, 100.f, 40.f, 20.f);
     expectWorldBox("a plain box", plain, {p.x, p.y, p.x + 40.f * u, p.y + 20.f * u});
 
-    GameObject smaller = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject smaller = box(variant, 100.f, 100.f, 40.f, 20.f);
     smaller.setCollisionBox(5.f * u, 2.f * u, 10.f * u, 8.f * u);
     expectWorldBox("a collision box smaller than the picture", smaller,
                    {p.x + 5.f * u, p.y + 2.f * u, p.x + 15.f * u, p.y + 10.f * u});
 
-    GameObject centred = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject centred = box(variant, 100.f, 100.f, 40.f, 20.f);
     centred.setOrigin(sf::Vector2f(20.f, 10.f) * u);
     expectWorldBox("a box whose origin is its centre", centred,
                    {p.x - 20.f * u, p.y - 10.f * u, p.x + 20.f * u, p.y + 10.f * u});
 
-    GameObject centredSmaller = centred;
+    hitbox::GameObject centredSmaller = centred;
     centredSmaller.setCollisionBox(-4.f * u, -6.f * u, 8.f * u, 12.f * u);
     expectWorldBox("a collision box measured from a moved origin", centredSmaller,
                    {p.x - 4.f * u, p.y - 6.f * u, p.x + 4.f * u, p.y + 6.f * u});
 
-    GameObject scaled = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject scaled = box(variant, 100.f, 100.f, 40.f, 20.f);
     scaled.setScale({2.f, 3.f});
     expectWorldBox("a scaled box", scaled, {p.x, p.y, p.x + 80.f * u, p.y + 60.f * u});
 
-    GameObject scaledCentred = centred;
+    hitbox::GameObject scaledCentred = centred;
     scaledCentred.setScale({2.f, 3.f});
     expectWorldBox("a box scaled about its centre", scaledCentred,
                    {p.x - 40.f * u, p.y - 30.f * u, p.x + 40.f * u, p.y + 30.f * u});
 
-    GameObject mirrored = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject mirrored = box(variant, 100.f, 100.f, 40.f, 20.f);
     mirrored.setScale({-1.f, 1.f});
     expectWorldBox("a box mirrored by a negative scale", mirrored,
                    {p.x - 40.f * u, p.y, p.x, p.y + 20.f * u});
 
-    GameObject quarterTurn = centred;
+    hitbox::GameObject quarterTurn = centred;
     turn(quarterTurn, 90.f);
     expectWorldBox("a box turned by 90 degrees about its centre", quarterTurn,
                    {p.x - 10.f * u, p.y - 20.f * u, p.x + 10.f * u, p.y + 20.f * u});
 
-    GameObject eighthTurn = box(variant, 100.f, 100.f, 20.f, 20.f);
+    hitbox::GameObject eighthTurn = box(variant, 100.f, 100.f, 20.f, 20.f);
     eighthTurn.setOrigin(sf::Vector2f(10.f, 10.f) * u);
     turn(eighthTurn, 45.f);
     const float halfDiagonal = 10.f * u * std::sqrt(2.f);
@@ -323,15 +327,15 @@ void checkWorldBox(const Variant& variant)
         "a square turned by 45 degrees (the box around it)", eighthTurn,
         {p.x - halfDiagonal, p.y - halfDiagonal, p.x + halfDiagonal, p.y + halfDiagonal});
 
-    GameObject backwards = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject backwards = box(variant, 100.f, 100.f, 40.f, 20.f);
     backwards.setCollisionBox(10.f * u, 0.f, -20.f * u, 10.f * u);
     expectWorldBox("a collision box with a negative width (it spans backwards)", backwards,
                    {p.x - 10.f * u, p.y, p.x + 10.f * u, p.y + 10.f * u});
 
-    GameObject point = box(variant, 100.f, 100.f, 0.f, 0.f);
+    hitbox::GameObject point = box(variant, 100.f, 100.f, 0.f, 0.f);
     expectWorldBox("a box of size zero", point, {p.x, p.y, p.x, p.y});
 
-    GameObject lost = box(variant, 100.f, 100.f, 40.f, 20.f);
+    hitbox::GameObject lost = box(variant, 100.f, 100.f, 40.f, 20.f);
     lost.setPosition({notANumber, notANumber});
     expectWorldBox("a box at a NaN position", lost,
                    {notANumber, notANumber, notANumber, notANumber});
@@ -340,7 +344,7 @@ void checkWorldBox(const Variant& variant)
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
     {
-        GameObject object =
+        hitbox::GameObject object =
             box(variant, wholeBetween(random, -50, 50), wholeBetween(random, -50, 50),
                 wholeBetween(random, 0, 40), wholeBetween(random, 0, 40));
         object.setOrigin(
@@ -367,7 +371,7 @@ void checkWorldBox(const Variant& variant)
 void checkBoxAgainstBox(const Variant& variant)
 {
     // B is 20 x 20 at (100, 100); A is 10 x 10 around it.
-    const GameObject b = box(variant, 100.f, 100.f, 20.f, 20.f);
+    const hitbox::GameObject b = box(variant, 100.f, 100.f, 20.f, 20.f);
     expectBoxes(true, "overlapping boxes", box(variant, 95.f, 95.f, 10.f, 10.f), b);
     const float touching[4][2] = {{90.f, 105.f}, {120.f, 105.f}, {105.f, 90.f}, {105.f, 120.f}};
     const float hair[4][2] = {{90.5f, 105.f}, {119.5f, 105.f}, {105.f, 90.5f}, {105.f, 119.5f}};
@@ -397,28 +401,28 @@ void checkBoxAgainstBox(const Variant& variant)
     expectBoxes(false, "a zero-size box on an edge", box(variant, 100.f, 110.f, 0.f, 0.f), b);
     expectBoxes(true, "a box of zero width crossing a box", box(variant, 110.f, 90.f, 0.f, 40.f),
                 b);
-    GameObject lost = box(variant, 105.f, 105.f, 10.f, 10.f);
+    hitbox::GameObject lost = box(variant, 105.f, 105.f, 10.f, 10.f);
     lost.setPosition({notANumber, notANumber});
     expectBoxes(false, "a box at a NaN position and a box", lost, b);
-    GameObject lostX = box(variant, 105.f, 105.f, 10.f, 10.f);
+    hitbox::GameObject lostX = box(variant, 105.f, 105.f, 10.f, 10.f);
     lostX.setPosition({notANumber, 105.f * variant.unit + variant.offset.y});
     expectBoxes(false, "a box whose x is NaN and a box", lostX, b);
 
-    GameObject alone = box(variant, 100.f, 100.f, 20.f, 20.f);
+    hitbox::GameObject alone = box(variant, 100.f, 100.f, 20.f, 20.f);
     EXPECT_FALSE(MyCollision::checkBoundingBox(&alone, &alone))
         << "an object tested against itself was reported as colliding: A = B = "
         << describe(&alone);
     EXPECT_FALSE(MyCollision::checkBoundingBox(&alone, nullptr))
         << "a box and a nullptr were reported as colliding: A = " << describe(&alone);
-    GameObject dead = box(variant, 105.f, 105.f, 10.f, 10.f);
+    hitbox::GameObject dead = box(variant, 105.f, 105.f, 10.f, 10.f);
     dead.setAlive(false);
     expectBoxes(false, "a dead box and a box", dead, b);
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
     {
-        GameObject first = randomPlainBox(variant, random);
-        GameObject second = randomPlainBox(variant, random);
+        hitbox::GameObject first = randomPlainBox(variant, random);
+        hitbox::GameObject second = randomPlainBox(variant, random);
         const Judged judged =
             judgeBoxes(Collision::checkBoundingBox(&first, &second), first, second);
         const bool expected = judged.expected;
@@ -436,7 +440,7 @@ void checkBoxAgainstBox(const Variant& variant)
 
 void checkPointInBox(const Variant& variant)
 {
-    const GameObject b = box(variant, 100.f, 100.f, 20.f, 20.f);
+    const hitbox::GameObject b = box(variant, 100.f, 100.f, 20.f, 20.f);
     expectPoint(true, "a point inside the box", b, at(variant, 110.f, 105.f));
     const float onEdge[4][2] = {{100.f, 110.f}, {120.f, 110.f}, {110.f, 100.f}, {110.f, 120.f}};
     const float justIn[4][2] = {{100.5f, 110.f}, {119.5f, 110.f}, {110.f, 100.5f}, {110.f, 119.5f}};
@@ -455,14 +459,14 @@ void checkPointInBox(const Variant& variant)
     expectPoint(false, "a NaN point", b, {notANumber, notANumber});
     expectPoint(false, "a point in the place of a zero-size box",
                 box(variant, 100.f, 100.f, 0.f, 0.f), at(variant, 100.f, 100.f));
-    GameObject dead = b;
+    hitbox::GameObject dead = b;
     dead.setAlive(false);
     expectPoint(false, "a point inside a dead box", dead, at(variant, 110.f, 110.f));
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
     {
-        GameObject object = randomPlainBox(variant, random);
+        hitbox::GameObject object = randomPlainBox(variant, random);
         const sf::Vector2f point =
             at(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30));
         const Judged judged =
@@ -484,7 +488,7 @@ void checkBoundingCircle(const Variant& variant)
     const float u = variant.unit;
     const sf::Vector2f p = at(variant, 100.f, 100.f);
     auto expectCircle =
-        [](const char* rule, const GameObject& object, sf::Vector2f center, float radius)
+        [](const char* rule, const hitbox::GameObject& object, sf::Vector2f center, float radius)
     {
         const WorldCircle circle = MyCollision::worldCircle(object);
         EXPECT_TRUE(near(circle.center.x, center.x) && near(circle.center.y, center.y) &&
@@ -501,36 +505,36 @@ void checkBoundingCircle(const Variant& variant)
     expectCircle("a box taller than it is wide (half the shorter side)",
                  box(variant, 100.f, 100.f, 40.f, 80.f), p + sf::Vector2f(20.f, 40.f) * u,
                  20.f * u);
-    GameObject smaller = box(variant, 100.f, 100.f, 40.f, 40.f);
+    hitbox::GameObject smaller = box(variant, 100.f, 100.f, 40.f, 40.f);
     smaller.setCollisionBox(10.f * u, 10.f * u, 10.f * u, 10.f * u);
     expectCircle("a collision box smaller than the picture", smaller,
                  p + sf::Vector2f(15.f, 15.f) * u, 5.f * u);
-    GameObject centred = box(variant, 100.f, 100.f, 40.f, 40.f);
+    hitbox::GameObject centred = box(variant, 100.f, 100.f, 40.f, 40.f);
     centred.setOrigin(sf::Vector2f(20.f, 20.f) * u);
     expectCircle("a square whose origin is its centre", centred, p, 20.f * u);
-    GameObject doubled = centred;
+    hitbox::GameObject doubled = centred;
     doubled.setScale({2.f, 2.f});
     expectCircle("a square scaled by 2", doubled, p, 40.f * u);
-    GameObject stretched = centred;
+    hitbox::GameObject stretched = centred;
     stretched.setScale({3.f, 1.f});
     expectCircle("a square stretched 3 times on x (the shorter side after scaling)", stretched, p,
                  20.f * u);
-    GameObject mirrored = box(variant, 100.f, 100.f, 40.f, 40.f);
+    hitbox::GameObject mirrored = box(variant, 100.f, 100.f, 40.f, 40.f);
     mirrored.setScale({-1.f, 1.f});
     expectCircle("a square mirrored by a negative scale", mirrored,
                  p + sf::Vector2f(-20.f, 20.f) * u, 20.f * u);
-    GameObject flipped = box(variant, 100.f, 100.f, 40.f, 40.f);
+    hitbox::GameObject flipped = box(variant, 100.f, 100.f, 40.f, 40.f);
     flipped.setScale({1.f, -1.f});
     expectCircle("a square flipped upside down by a negative scale", flipped,
                  p + sf::Vector2f(20.f, -20.f) * u, 20.f * u);
-    GameObject turned = box(variant, 100.f, 100.f, 80.f, 40.f);
+    hitbox::GameObject turned = box(variant, 100.f, 100.f, 80.f, 40.f);
     turned.setOrigin(sf::Vector2f(20.f, 20.f) * u);
     turn(turned, 90.f);
     expectCircle("a box turned by 90 degrees about a point that is not its centre", turned,
                  p + sf::Vector2f(0.f, 20.f) * u, 20.f * u);
 
     // Pairs: ball(x, y, r) is a plain square around that circle.
-    const GameObject b = ball(variant, 100.f, 100.f, 20.f);
+    const hitbox::GameObject b = ball(variant, 100.f, 100.f, 20.f);
     expectCircles(true, "overlapping circles", ball(variant, 120.f, 100.f, 10.f), b);
     expectCircles(false, "circles touching along x", ball(variant, 130.f, 100.f, 10.f), b);
     expectCircles(false, "circles touching along y", ball(variant, 100.f, 70.f, 10.f), b);
@@ -543,31 +547,31 @@ void checkBoundingCircle(const Variant& variant)
                   ball(variant, 118.f, 118.f, 5.f), b);
     expectCircles(true, "a circle inside a bigger circle", ball(variant, 105.f, 100.f, 5.f), b);
     expectCircles(true, "equal circles on the same centre", ball(variant, 100.f, 100.f, 20.f), b);
-    GameObject lost = ball(variant, 110.f, 100.f, 10.f);
+    hitbox::GameObject lost = ball(variant, 110.f, 100.f, 10.f);
     lost.setPosition({notANumber, notANumber});
     expectCircles(false, "a circle at a NaN position and a circle", lost, b);
-    GameObject scaledBall = ball(variant, 100.f, 100.f, 10.f);
+    hitbox::GameObject scaledBall = ball(variant, 100.f, 100.f, 10.f);
     scaledBall.setOrigin(sf::Vector2f(10.f, 10.f) * u);
     scaledBall.setPosition(at(variant, 145.f, 100.f));
     scaledBall.setScale({2.f, 2.f});
     expectCircles(false, "a circle scaled to radius 20 that touches another", scaledBall,
                   ball(variant, 100.f, 100.f, 25.f));
     // Objects that cannot collide (canCollide), even where their circles overlap.
-    GameObject alone = ball(variant, 100.f, 100.f, 20.f);
+    hitbox::GameObject alone = ball(variant, 100.f, 100.f, 20.f);
     EXPECT_FALSE(MyCollision::checkBoundingCircle(&alone, &alone))
         << "an object tested against itself was reported as colliding: A = B = "
         << describe(&alone);
     EXPECT_FALSE(MyCollision::checkBoundingCircle(&alone, nullptr))
         << "a circle and a nullptr were reported as colliding: A = " << describe(&alone);
-    GameObject dead = ball(variant, 110.f, 100.f, 10.f);
+    hitbox::GameObject dead = ball(variant, 110.f, 100.f, 10.f);
     dead.setAlive(false);
     expectCircles(false, "a dead circle and a circle it overlaps", dead, b);
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
     {
-        GameObject objects[2];
-        for (GameObject& object : objects)
+        hitbox::GameObject objects[2];
+        for (hitbox::GameObject& object : objects)
         {
             object = box(variant, wholeBetween(random, 0, 40), wholeBetween(random, 0, 40),
                          wholeBetween(random, 0, 20), wholeBetween(random, 0, 20));
@@ -594,7 +598,7 @@ void checkBoundingCircle(const Variant& variant)
 void checkCircleAgainstBox(const Variant& variant)
 {
     // The box is 20 x 20 at (100, 100); circles of radius 5 around it.
-    const GameObject b = box(variant, 100.f, 100.f, 20.f, 20.f);
+    const hitbox::GameObject b = box(variant, 100.f, 100.f, 20.f, 20.f);
     expectCircleBox(true, "a circle overlapping a box", ball(variant, 98.f, 110.f, 5.f), b);
     const float touching[4][2] = {{95.f, 110.f}, {125.f, 110.f}, {110.f, 95.f}, {110.f, 125.f}};
     const float hair[4][2] = {{95.5f, 110.f}, {124.5f, 110.f}, {110.f, 95.5f}, {110.f, 124.5f}};
@@ -626,40 +630,40 @@ void checkCircleAgainstBox(const Variant& variant)
     expectCircleBox(true,
                     "a small circle in the corner of a big box (the circle is the first argument)",
                     ball(variant, 6.f, 6.f, 5.f), box(variant, 0.f, 0.f, 100.f, 100.f));
-    GameObject lostCircle = ball(variant, 110.f, 110.f, 5.f);
+    hitbox::GameObject lostCircle = ball(variant, 110.f, 110.f, 5.f);
     lostCircle.setPosition({notANumber, notANumber});
     expectCircleBox(false, "a circle at a NaN position", lostCircle, b);
-    GameObject lostBox = b;
+    hitbox::GameObject lostBox = b;
     lostBox.setPosition({notANumber, notANumber});
     expectCircleBox(false, "a circle against a box at a NaN position",
                     ball(variant, 110.f, 110.f, 5.f), lostBox);
     // Only x is NaN: the circle is level with the box on y, which alone must not be enough.
-    GameObject lostBoxX = b;
+    hitbox::GameObject lostBoxX = b;
     lostBoxX.setPosition({notANumber, 100.f * variant.unit + variant.offset.y});
     expectCircleBox(false, "a circle against a box whose x is NaN (level with it on y)",
                     ball(variant, 110.f, 110.f, 5.f), lostBoxX);
-    GameObject lostBoxY = b;
+    hitbox::GameObject lostBoxY = b;
     lostBoxY.setPosition({100.f * variant.unit + variant.offset.x, notANumber});
     expectCircleBox(false, "a circle against a box whose y is NaN (level with it on x)",
                     ball(variant, 110.f, 110.f, 5.f), lostBoxY);
     // Objects that cannot collide (canCollide), even where the circle reaches into the box.
-    GameObject alone = ball(variant, 110.f, 110.f, 5.f);
+    hitbox::GameObject alone = ball(variant, 110.f, 110.f, 5.f);
     EXPECT_FALSE(MyCollision::checkCircleBox(&alone, &alone))
         << "an object tested against itself was reported as colliding: " << describe(&alone);
     EXPECT_FALSE(MyCollision::checkCircleBox(&alone, nullptr))
         << "a circle and a nullptr were reported as colliding: " << describe(&alone);
     EXPECT_FALSE(MyCollision::checkCircleBox(nullptr, &alone))
         << "a nullptr and a box were reported as colliding: " << describe(&alone);
-    GameObject deadCircle = ball(variant, 110.f, 110.f, 5.f);
+    hitbox::GameObject deadCircle = ball(variant, 110.f, 110.f, 5.f);
     deadCircle.setAlive(false);
     expectCircleBox(false, "a dead circle inside a box", deadCircle, b);
 
     std::mt19937 random(variant.seed);
     for (int index = 0; index < randomCases; ++index)
     {
-        GameObject circle = ball(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30),
-                                 wholeBetween(random, 0, 8));
-        GameObject boxObject = randomPlainBox(variant, random);
+        hitbox::GameObject circle = ball(variant, wholeBetween(random, 0, 30),
+                                         wholeBetween(random, 0, 30), wholeBetween(random, 0, 8));
+        hitbox::GameObject boxObject = randomPlainBox(variant, random);
         const Judged judged =
             judgeCircleBox(Collision::checkCircleBox(&circle, &boxObject), circle, boxObject);
         const bool expected = judged.expected;

@@ -40,7 +40,7 @@ int boxAt(const PointInBoxLevel& level, sf::Vector2f point)
 struct Player
 {
     PointInBoxLevel level;
-    Input input;
+    hitbox::Input input;
     sf::Vector2f mouse;
 
     void step()

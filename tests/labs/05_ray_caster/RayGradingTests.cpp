@@ -16,7 +16,7 @@ namespace
 // Run `steps` fixed steps with the mouse at `mouse` and nothing else pressed.
 void runWithMouse(RayLevel& level, hitbox::Vec2 mouse, int steps)
 {
-    Input input;
+    hitbox::Input input;
     input.setMousePosition(hitbox::toSfml(mouse));
     for (int step = 0; step < steps; ++step)
     {
@@ -114,7 +114,7 @@ TEST(Task2MoveAndSlide, SlidesAlongAWallItIsPushedInto)
 TEST(Task2MoveAndSlide, TheLabFieldIsNeverEntered)
 {
     RayLevel level;
-    Input input;
+    hitbox::Input input;
     const std::vector<sf::Keyboard::Key> keys = {sf::Keyboard::Key::Right, sf::Keyboard::Key::Up,
                                                  sf::Keyboard::Key::Left, sf::Keyboard::Key::Down};
     for (int step = 0; step < 120 * 12; ++step)

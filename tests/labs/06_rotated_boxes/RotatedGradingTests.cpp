@@ -72,7 +72,7 @@ RotatedLevel labLevelWithFrameworkSat()
     return level;
 }
 
-void stepWith(RotatedLevel& level, Input& input)
+void stepWith(RotatedLevel& level, hitbox::Input& input)
 {
     level.handleInput(input, hitbox::stepSeconds);
     level.update(hitbox::stepSeconds);
@@ -204,7 +204,7 @@ TEST(Task3WheelTurns, EachNotchTurnsTheHeldShape)
 {
     RotatedLevel level = labLevelWithFrameworkSat();
     const float before = level.getShapes()[0].body.angleDegrees;
-    Input input;
+    hitbox::Input input;
     input.addMouseWheel(2.f);
     stepWith(level, input);
     EXPECT_NEAR(level.getShapes()[0].body.angleDegrees,
@@ -224,7 +224,7 @@ TEST(Task3WheelTurns, TurningCanMakeShapesOverlap)
     RotatedLevel level = levelWithFrameworkSat({{{{100.f, 100.f}, {60.f, 5.f}, 0.f}, false},
                                                 {{{100.f, 130.f}, {20.f, 20.f}, 0.f}, false}});
     ASSERT_FALSE(level.isOverlapping(0));
-    Input input;
+    hitbox::Input input;
     input.addMouseWheel(6.f); // 90 degrees: the box now reaches down into the square
     stepWith(level, input);
     EXPECT_TRUE(level.isOverlapping(0));
@@ -239,7 +239,7 @@ TEST(Task4PushOut, SpaceMovesTheHeldShapeOutAlongTheMtv)
     ASSERT_TRUE(nearest->overlapping);
     const hitbox::Vec2 expectedMove = nearest->axis * -nearest->gap;
 
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
     const hitbox::Vec2 moved = level.getShapes()[0].body.center - before;
@@ -253,7 +253,7 @@ TEST(Task4PushOut, OutOfTheCapsuleToo)
     RotatedLevel level = levelWithFrameworkSat({{{{200.f, 200.f}, {40.f, 40.f}, 30.f}, false},
                                                 {{{250.f, 250.f}, {60.f, 25.f}, -20.f}, true}});
     ASSERT_TRUE(level.isOverlapping(0));
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
     EXPECT_FALSE(level.isOverlapping(0));
@@ -263,7 +263,7 @@ TEST(Task4PushOut, ADraggedShapeIsPushedOutOfWhatItWasDroppedOn)
 {
     RotatedLevel level = levelWithFrameworkSat({{{{100.f, 100.f}, {30.f, 30.f}, 0.f}, false},
                                                 {{{400.f, 100.f}, {30.f, 30.f}, 20.f}, false}});
-    Input input;
+    hitbox::Input input;
     // Grab shape 1 at its centre, drag it onto shape 0, then press Space.
     input.setMousePosition({400.f, 100.f});
     input.setMouseLDown(true);
@@ -296,7 +296,7 @@ TEST(Task4PushOut, EachPushIntoAnotherShapeGoesRoundAgain)
          axisAligned(8.9f, -100.f, 100.f, -10.05f), axisAligned(-100.f, 9.8f, -10.5f, 100.f),
          axisAligned(9.f, -100.f, 100.f, 100.f)});
     ASSERT_TRUE(level.isOverlapping(0));
-    Input input;
+    hitbox::Input input;
     input.setKeyDown(sf::Keyboard::Key::Space);
     stepWith(level, input);
     expectPushedOut(level);

@@ -49,7 +49,7 @@ TEST(Rewind, ARewoundCrowdIsTheCrowdAsItWasWithEveryMethod)
         ManyObjectsLevel level(crowd(600, method));
         hitbox::RewindLevel rewind(level, 120, 30);
         std::vector<std::string> history{ballBits(reference)};
-        Input input;
+        hitbox::Input input;
         for (int i = 0; i < 200; ++i)
         {
             reference.update(hitbox::stepSeconds);
@@ -71,7 +71,7 @@ TEST(Rewind, TenSecondsAtTenThousandBallsCostWhatTheSnapshotsHold)
 {
     ManyObjectsLevel level(crowd(10000, hitbox::BroadphaseMethod::Grid));
     hitbox::RewindLevel rewind(level); // the window's: 10 s kept, a snapshot every 30 steps
-    Input input;
+    hitbox::Input input;
     const long long steps = hitbox::rewindSteps + 2 * hitbox::rewindSnapshotSteps;
     for (long long i = 0; i < steps; ++i)
     {

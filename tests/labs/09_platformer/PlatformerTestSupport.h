@@ -113,6 +113,6 @@ struct Game
     float feet() const { return position().y + Player::height; }
 
     PlatformerLevel level;
-    Input input;
+    hitbox::Input input;
 };
 } // namespace platformertest

@@ -156,7 +156,7 @@ TEST(Task4LineOfSight, AnEnemyBehindAWallDoesNotChase)
     level.addWall({500.f, 200.f, 40.f, 200.f});
     level.placePlayer({600.f, 300.f});
     level.addEnemy({420.f, 300.f});
-    Input input;
+    hitbox::Input input;
     level.handleInput(input, hitbox::stepSeconds);
     level.update(hitbox::stepSeconds);
     EXPECT_EQ(level.getEnemies().at(0).state, EnemyState::Idle);

@@ -40,7 +40,7 @@ struct Game
     const Actor& player() const { return level.getPlayer(); }
 
     TopDownLevel level;
-    Input input;
+    hitbox::Input input;
 };
 
 // Where `actor` ends up after `seconds` of walking right at `speed` px/s, moved by the level's

@@ -30,7 +30,7 @@ constexpr float dt = hitbox::stepSeconds;
 const float courtMiddleY = (court.top + court.bottom) / 2.f;
 const float courtMiddleX = (court.left + court.right) / 2.f;
 
-hitbox::Box boxOf(const GameObject& object)
+hitbox::Box boxOf(const hitbox::GameObject& object)
 {
     return hitbox::toBox(object.getCollisionBox());
 }
@@ -50,13 +50,13 @@ float speedOf(sf::Vector2f velocity)
 class RecordingBall : public Ball
 {
 public:
-    void collisionResponse(GameObject* other) override
+    void collisionResponse(hitbox::GameObject* other) override
     {
         hits.push_back(other);
         const float away = getPosition().x < other->getPosition().x ? -1.f : 1.f;
         velocity = {away * std::abs(velocity.x), velocity.y};
     }
-    std::vector<GameObject*> hits;
+    std::vector<hitbox::GameObject*> hits;
 };
 
 // The two paddles where the level puts them.
@@ -527,7 +527,7 @@ namespace
 class BallThatKeepsComing : public Ball
 {
 public:
-    void collisionResponse(GameObject*) override { ++hits; }
+    void collisionResponse(hitbox::GameObject*) override { ++hits; }
     int hits = 0;
 };
 } // namespace

@@ -107,7 +107,7 @@ TEST(Level, EveryBroadphaseMethodFindsTheSameCollisions)
         WorldLevel level(7);
         for (int press = 0; press < method; ++press)
         {
-            Input input;
+            hitbox::Input input;
             input.setKeyDown(sf::Keyboard::Key::M);
             level.handleInput(input, hitbox::stepSeconds);
         }
@@ -134,7 +134,7 @@ class CoinThatRemovesItself : public Coin
 {
 public:
     CoinThatRemovesItself(sf::Vector2f center, hitbox::World& world) : Coin(center), world(world) {}
-    void collisionResponse(GameObject* other) override
+    void collisionResponse(hitbox::GameObject* other) override
     {
         if (other != nullptr && kindOf(*other) == Kind::Player)
             world.remove(*this);
@@ -195,7 +195,7 @@ TEST(Task1LayersAndMasks, APileOfCoinsAndEnemiesCostsOnlyTheEnemyTests)
     // only the 3 enemy-enemy pairs may ever meet, so only they get an exact test. Each object
     // is added with its layersFor, as WorldLevel adds it; no game rule is set.
     hitbox::World world;
-    const auto add = [&world](GameObject& object, Kind kind, hitbox::World::Shape shape)
+    const auto add = [&world](hitbox::GameObject& object, Kind kind, hitbox::World::Shape shape)
     {
         const Layers layers = layersFor(kind);
         world.add(object, layers.layer, layers.mask, shape);
@@ -268,7 +268,7 @@ TEST(Task2CollectCoins, InTheProgramsSceneEveryCoinThatLeavesScoresOnce)
                                         sf::Keyboard::Key::Up, sf::Keyboard::Key::Down};
     std::mt19937 random(11);
     std::uniform_int_distribution<int> pick(0, 4); // 4: let go (the autopilot stays off)
-    Input input;
+    hitbox::Input input;
     for (int i = 0; i < 120 * 40; ++i)
     {
         if (i % 30 == 0)

@@ -61,9 +61,9 @@ const sf::Vector2f onThePlate{130.f, 100.f};
 const sf::Vector2f offThePlate{400.f, 100.f};
 
 // A GameObject with `box` as its collision box, for the matchers and explain.
-GameObject objectAt(const hitbox::Box& box, const std::string& name)
+hitbox::GameObject objectAt(const hitbox::Box& box, const std::string& name)
 {
-    GameObject object;
+    hitbox::GameObject object;
     object.setSize({box.width, box.height});
     object.setPosition({box.left, box.top});
     object.setName(name);
@@ -163,7 +163,7 @@ TEST(Task1PlateUsesEnterAndExit, ACrateOnlyTouchingThePlateDoesNotPressIt)
 TEST(Task2TouchingIsNotInTheGateway, TouchingOnEachSideIsNotIn)
 {
     const hitbox::Box gateway{640.f, 420.f, 20.f, 80.f};
-    const GameObject door = objectAt(gateway, "gateway");
+    const hitbox::GameObject door = objectAt(gateway, "gateway");
     const hitbox::Box sides[] = {{600.f, 440.f, 40.f, 40.f},  // left of it
                                  {660.f, 440.f, 40.f, 40.f},  // right
                                  {630.f, 380.f, 40.f, 40.f},  // on top (the gatekeeper)
@@ -171,7 +171,7 @@ TEST(Task2TouchingIsNotInTheGateway, TouchingOnEachSideIsNotIn)
                                  {600.f, 380.f, 40.f, 40.f}}; // corner to corner
     for (const hitbox::Box& side : sides)
     {
-        const GameObject thing = objectAt(side, "thing");
+        const hitbox::GameObject thing = objectAt(side, "thing");
         ASSERT_THAT(thing, Touches(door));
         EXPECT_FALSE(inGateway(gateway, side)) << "it only touches the gateway; explain says:\n"
                                                << hitbox::toText(hitbox::explain(thing, door));
@@ -181,7 +181,7 @@ TEST(Task2TouchingIsNotInTheGateway, TouchingOnEachSideIsNotIn)
 TEST(Task2TouchingIsNotInTheGateway, OverlappingOnEachSideIsIn)
 {
     const hitbox::Box gateway{640.f, 420.f, 20.f, 80.f};
-    const GameObject door = objectAt(gateway, "gateway");
+    const hitbox::GameObject door = objectAt(gateway, "gateway");
     const hitbox::Box sides[] = {{601.f, 440.f, 40.f, 40.f},   // 1 pixel in from the left
                                  {659.5f, 440.f, 40.f, 40.f},  // half a pixel from the right
                                  {630.f, 381.f, 40.f, 40.f},   // from the top
@@ -191,7 +191,7 @@ TEST(Task2TouchingIsNotInTheGateway, OverlappingOnEachSideIsIn)
                                  {645.f, 430.f, 0.f, 0.f}};    // a point inside
     for (const hitbox::Box& side : sides)
     {
-        const GameObject thing = objectAt(side, "thing");
+        const hitbox::GameObject thing = objectAt(side, "thing");
         EXPECT_TRUE(inGateway(gateway, side)) << "it shares area with the gateway; explain says:\n"
                                               << hitbox::toText(hitbox::explain(thing, door));
     }
@@ -321,7 +321,7 @@ TEST(Task3RemoveEveryDeliveredCrate, InTheProgramsRunNoDeliveredCrateOutlivesIts
 {
     DepotLevel level;
     scenereplay::RecordedScene scene(level, {programTitle, 1});
-    Input input;
+    hitbox::Input input;
     for (int i = 0; i < 120 * 20; ++i)
     {
         scene.step(input);

@@ -6,11 +6,10 @@
 namespace
 {
 
-// Hitbox's box (one negative-size rule: normalised) and its inscribed circle: the same
-// shapes the older labs' GameObject gives.
+// Hitbox's world collision box (its negative sizes already normalised).
 hitbox::Box boxOf(const GameObject& object)
 {
-    return hitbox::normalised(hitbox::toBox(object.getCollisionBox()));
+    return hitbox::toBox(object.getCollisionBox());
 }
 
 } // namespace
@@ -27,6 +26,6 @@ bool Collision::checkBoundingBox(const GameObject& object, const sf::Vector2i& p
 
 bool Collision::checkBoundingCircle(const GameObject& first, const GameObject& second)
 {
-    return &first != &second && hitbox::circleVsCircle(hitbox::inscribedCircle(boxOf(first)),
-                                                       hitbox::inscribedCircle(boxOf(second)));
+    return &first != &second &&
+           hitbox::circleVsCircle(first.getBoundingCircle(), second.getBoundingCircle());
 }

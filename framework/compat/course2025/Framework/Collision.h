@@ -4,8 +4,8 @@
 //
 // The course's bounding circle (radius getSize().x / 2, measured from the position) is
 // wrong once the origin moves, the shape is not square or the object is scaled. Here, as
-// for the older labs, it is the circle inscribed in the world collision box: its centre,
-// half its shorter side.
+// for the older labs, it is Hitbox's (GameObject::getBoundingCircle): the circle inscribed
+// in the collision box, scaled and moved with the object.
 //
 // As in the course's framework, the tests look only at the shapes: isCollider() and
 // isAlive() are for the lab's own loops. An object tested against itself never collides.

@@ -2,61 +2,32 @@
 
 #include "hitbox/sfml/Conversions.h"
 
-void GameObject::handleInput(float) {}
+GameObject::GameObject()
+{
+    setCollider(false);
+}
 
-void GameObject::update(float) {}
+GameObject::GameObject(const GameObject& other)
+    : hitbox::GameObject(other), m_collisionBox(other.m_collisionBox), m_input(other.m_input),
+      m_window(other.m_window)
+{
+}
+
+GameObject& GameObject::operator=(const GameObject& other)
+{
+    hitbox::GameObject::operator=(other); // the state m_velocity, m_alive, m_collider name
+    m_collisionBox = other.m_collisionBox;
+    m_input = other.m_input;
+    m_window = other.m_window;
+    return *this;
+}
 
 void GameObject::collisionResponse(GameObject&) {}
 
-void GameObject::setVelocity(sf::Vector2f velocity)
+void GameObject::collisionResponse(hitbox::GameObject* other)
 {
-    m_velocity = velocity;
-}
-
-void GameObject::setVelocity(float x, float y)
-{
-    m_velocity = {x, y};
-}
-
-sf::Vector2f GameObject::getVelocity() const
-{
-    return m_velocity;
-}
-
-bool GameObject::isAlive() const
-{
-    return m_alive;
-}
-
-void GameObject::setAlive(bool alive)
-{
-    m_alive = alive;
-}
-
-bool GameObject::isCollider() const
-{
-    return m_collider;
-}
-
-void GameObject::setCollider(bool collider)
-{
-    m_collider = collider;
-}
-
-sf::FloatRect GameObject::getCollisionBox() const
-{
-    // The local box is measured from the origin point; the shape's own coordinates are
-    // measured from its top-left corner, where the origin point sits at getOrigin().
-    // A negative size spans backwards, as Hitbox's boxes do (hitbox::normalised).
-    const bool boxSet = m_collisionBox.size.x != 0.f || m_collisionBox.size.y != 0.f;
-    hitbox::Box local = hitbox::toBox(getLocalBounds());
-    if (boxSet)
-    {
-        local = hitbox::normalised(hitbox::toBox(m_collisionBox));
-        local.left += getOrigin().x;
-        local.top += getOrigin().y;
-    }
-    return getTransform().transformRect(hitbox::toSfml(local));
+    if (auto* courseObject = dynamic_cast<GameObject*>(other))
+        collisionResponse(*courseObject);
 }
 
 void GameObject::setCollisionBox(float x, float y, float width, float height)
@@ -67,6 +38,13 @@ void GameObject::setCollisionBox(float x, float y, float width, float height)
 void GameObject::setCollisionBox(sf::FloatRect box)
 {
     m_collisionBox = box;
+}
+
+std::optional<hitbox::Box> GameObject::givenCollisionBox() const
+{
+    if (m_collisionBox.size.x == 0.f && m_collisionBox.size.y == 0.f)
+        return std::nullopt;
+    return hitbox::toBox(m_collisionBox);
 }
 
 void GameObject::setInput(Input* input)

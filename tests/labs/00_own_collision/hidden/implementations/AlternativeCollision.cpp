@@ -41,22 +41,22 @@ float outside(float x, float low, float high)
 }
 } // namespace
 
-bool MyCollision::canCollide(const GameObject* object)
+bool MyCollision::canCollide(const hitbox::GameObject* object)
 {
     return object && object->isAlive() && object->isCollider();
 }
 
-bool MyCollision::canCollide(const GameObject* first, const GameObject* second)
+bool MyCollision::canCollide(const hitbox::GameObject* first, const hitbox::GameObject* second)
 {
     return first != second && canCollide(first) && canCollide(second);
 }
 
-Sides MyCollision::localCollisionBox(const GameObject& object)
+Sides MyCollision::localCollisionBox(const hitbox::GameObject& object)
 {
     return sidesOf(object.getLocalCollisionBox());
 }
 
-Sides MyCollision::worldBox(const GameObject& object)
+Sides MyCollision::worldBox(const hitbox::GameObject& object)
 {
     const Sides local = localCollisionBox(object);
     const sf::Vector2f shift = object.getOrigin();
@@ -65,7 +65,7 @@ Sides MyCollision::worldBox(const GameObject& object)
     return sidesOf(object.getTransform().transformRect(inShape));
 }
 
-bool MyCollision::checkBoundingBox(GameObject* first, GameObject* second)
+bool MyCollision::checkBoundingBox(hitbox::GameObject* first, hitbox::GameObject* second)
 {
     if (!canCollide(first, second))
         return false;
@@ -78,7 +78,7 @@ bool MyCollision::checkBoundingBox(GameObject* first, GameObject* second)
     return !apartOnX && !apartOnY;
 }
 
-bool MyCollision::checkBoundingBox(GameObject* object, sf::Vector2f point)
+bool MyCollision::checkBoundingBox(hitbox::GameObject* object, sf::Vector2f point)
 {
     if (!canCollide(object))
         return false;
@@ -88,7 +88,7 @@ bool MyCollision::checkBoundingBox(GameObject* object, sf::Vector2f point)
     return !onOrOutside;
 }
 
-WorldCircle MyCollision::worldCircle(const GameObject& object)
+WorldCircle MyCollision::worldCircle(const hitbox::GameObject& object)
 {
     const Sides local = localCollisionBox(object);
     const sf::Transform& toWorld = object.getTransform();
@@ -108,7 +108,7 @@ WorldCircle MyCollision::worldCircle(const GameObject& object)
     return {center, (across < down ? across : down) * 0.5f};
 }
 
-bool MyCollision::checkBoundingCircle(GameObject* first, GameObject* second)
+bool MyCollision::checkBoundingCircle(hitbox::GameObject* first, hitbox::GameObject* second)
 {
     if (!canCollide(first, second))
         return false;
@@ -120,7 +120,7 @@ bool MyCollision::checkBoundingCircle(GameObject* first, GameObject* second)
     return dx * dx + dy * dy < reach * reach;
 }
 
-bool MyCollision::checkCircleBox(GameObject* circleObject, GameObject* boxObject)
+bool MyCollision::checkCircleBox(hitbox::GameObject* circleObject, hitbox::GameObject* boxObject)
 {
     if (!canCollide(circleObject, boxObject))
         return false;

@@ -21,48 +21,48 @@ Sides sidesOf(const sf::FloatRect& box)
 }
 } // namespace
 
-bool MyCollision::canCollide(const GameObject* object)
+bool MyCollision::canCollide(const hitbox::GameObject* object)
 {
     return object != nullptr && object->isAlive() && object->isCollider();
 }
 
-bool MyCollision::canCollide(const GameObject* first, const GameObject* second)
+bool MyCollision::canCollide(const hitbox::GameObject* first, const hitbox::GameObject* second)
 {
     return first != second && canCollide(first) && canCollide(second);
 }
 
-Sides MyCollision::localCollisionBox(const GameObject& object)
+Sides MyCollision::localCollisionBox(const hitbox::GameObject& object)
 {
     return sidesOf(object.getLocalCollisionBox());
 }
 
-Sides MyCollision::worldBox(const GameObject& object)
+Sides MyCollision::worldBox(const hitbox::GameObject& object)
 {
     return sidesOf(object.getCollisionBox());
 }
 
-bool MyCollision::checkBoundingBox(GameObject* first, GameObject* second)
+bool MyCollision::checkBoundingBox(hitbox::GameObject* first, hitbox::GameObject* second)
 {
     return Collision::checkBoundingBox(first, second);
 }
 
-bool MyCollision::checkBoundingBox(GameObject* object, sf::Vector2f point)
+bool MyCollision::checkBoundingBox(hitbox::GameObject* object, sf::Vector2f point)
 {
     return Collision::checkBoundingBox(object, point);
 }
 
-WorldCircle MyCollision::worldCircle(const GameObject& object)
+WorldCircle MyCollision::worldCircle(const hitbox::GameObject& object)
 {
     const hitbox::Circle circle = object.getBoundingCircle();
     return {hitbox::toSfml(circle.center), circle.radius};
 }
 
-bool MyCollision::checkBoundingCircle(GameObject* first, GameObject* second)
+bool MyCollision::checkBoundingCircle(hitbox::GameObject* first, hitbox::GameObject* second)
 {
     return Collision::checkBoundingCircle(first, second);
 }
 
-bool MyCollision::checkCircleBox(GameObject* circleObject, GameObject* boxObject)
+bool MyCollision::checkCircleBox(hitbox::GameObject* circleObject, hitbox::GameObject* boxObject)
 {
     return Collision::checkCircleBox(circleObject, boxObject);
 }
