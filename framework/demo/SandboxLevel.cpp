@@ -82,17 +82,17 @@ hitbox::Contact SandboxLevel::testCursorAgainst(Obstacle& obstacle)
 {
     hitbox::GameObject* target = &obstacle.shape;
     if (cursorIsCircle && obstacle.isCircle)
-        return Collision::getBoundingCircleContact(&cursor, target);
+        return hitbox::Collision::getBoundingCircleContact(&cursor, target);
     if (cursorIsCircle)
-        return Collision::getCircleBoxContact(&cursor, target);
+        return hitbox::Collision::getCircleBoxContact(&cursor, target);
     if (obstacle.isCircle)
     {
         // Box against circle: test it the other way round and flip the normal.
-        hitbox::Contact contact = Collision::getCircleBoxContact(target, &cursor);
+        hitbox::Contact contact = hitbox::Collision::getCircleBoxContact(target, &cursor);
         contact.normal = -contact.normal;
         return contact;
     }
-    return Collision::getBoundingBoxContact(&cursor, target);
+    return hitbox::Collision::getBoundingBoxContact(&cursor, target);
 }
 
 void SandboxLevel::update(float)

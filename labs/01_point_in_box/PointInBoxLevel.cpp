@@ -105,7 +105,7 @@ int PointInBoxLevel::findBoxUnder(sf::Vector2f scenePoint)
     // Boxes drawn later cover earlier ones, so the top box is the last one that matches.
     for (int index = getBoxCount() - 1; index >= 0; --index)
     {
-        if (Collision::checkBoundingBox(&boxes[index], scenePoint))
+        if (hitbox::Collision::checkBoundingBox(&boxes[index], scenePoint))
             return index;
     }
     return noBox;

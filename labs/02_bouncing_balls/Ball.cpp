@@ -64,7 +64,7 @@ void Ball::collisionResponse(hitbox::GameObject*)
 void bounceApart(Ball& first, Ball& second)
 {
     // BEGIN TASK 3: bounce apart like billiard balls
-    const hitbox::Contact contact = Collision::getBoundingCircleContact(&first, &second);
+    const hitbox::Contact contact = hitbox::Collision::getBoundingCircleContact(&first, &second);
     if (!contact.hit)
         return;
     // The maths is on hitbox::Vec2; a ball's position and velocity are SFML's sf::Vector2f:

@@ -85,7 +85,7 @@ void BallsLevel::update(float dt)
             // Circles overlap when the distance between the centres is less than the sum
             // of the radii; Collision::checkBoundingCircle compares the squares of the two,
             // which needs no square root.
-            if (Collision::checkBoundingCircle(&balls[i], &balls[j]))
+            if (hitbox::Collision::checkBoundingCircle(&balls[i], &balls[j]))
             {
                 balls[i].collisionResponse(&balls[j]);
                 balls[j].collisionResponse(&balls[i]);

@@ -88,13 +88,13 @@ float Square::getFlash() const
 void bounceApart(Square& first, Square& second)
 {
     // BEGIN TASK 3: bounce squares off each other, box against box
-    if (!Collision::checkBoundingBox(&first, &second))
+    if (!hitbox::Collision::checkBoundingBox(&first, &second))
         return;
     first.collisionResponse(&second);
     second.collisionResponse(&first);
     // For boxes the normal is an axis, (+-1, 0) or (0, +-1): the way out that is
     // shortest. Each square moves half the overlap, so afterwards they just touch.
-    const hitbox::Contact contact = Collision::getBoundingBoxContact(&first, &second);
+    const hitbox::Contact contact = hitbox::Collision::getBoundingBoxContact(&first, &second);
     const hitbox::Vec2 normal = contact.normal;
     first.move(hitbox::toSfml(normal * (contact.depth / 2.f)));
     second.move(hitbox::toSfml(-normal * (contact.depth / 2.f)));

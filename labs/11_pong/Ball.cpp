@@ -113,7 +113,7 @@ void moveBall(Ball& ball, Paddle& left, Paddle& right, float dt)
     // // A discrete step: move, then "overlapping now?". A fast ball jumps a paddle.
     // ball.move(ball.getVelocity() * dt);
     // for (Paddle* paddle : {&left, &right})
-    //     if (Collision::checkBoundingBox(&ball, paddle))
+    //     if (hitbox::Collision::checkBoundingBox(&ball, paddle))
     //         ball.collisionResponse(paddle);
     // END TASK 5
 }

@@ -177,8 +177,8 @@ void BoxBox_CollisionStandardTable(benchmark::State& state)
     runTests(state, addressesOf(objects),
              [](const std::vector<hitbox::GameObject*>& all, std::size_t i, std::size_t j)
              {
-                 return Collision::getContact(all[i], hitbox::ShapeKind::Box, all[j],
-                                              hitbox::ShapeKind::Box)
+                 return hitbox::Collision::getContact(all[i], hitbox::ShapeKind::Box, all[j],
+                                                      hitbox::ShapeKind::Box)
                      .hit;
              });
 }
@@ -189,8 +189,8 @@ void BoxBox_CollisionGivenTable(benchmark::State& state)
     runTests(state, addressesOf(objects),
              [&table](const std::vector<hitbox::GameObject*>& all, std::size_t i, std::size_t j)
              {
-                 return Collision::getContact(all[i], hitbox::ShapeKind::Box, all[j],
-                                              hitbox::ShapeKind::Box, table)
+                 return hitbox::Collision::getContact(all[i], hitbox::ShapeKind::Box, all[j],
+                                                      hitbox::ShapeKind::Box, table)
                      .hit;
              });
 }

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+using hitbox::Animation;
+
 namespace
 {
 

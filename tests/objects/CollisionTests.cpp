@@ -23,9 +23,9 @@ TEST(Collision, LectureBouncingBallsCallWorks)
 {
     hitbox::GameObject ball1 = makeSquare(0.f, 0.f, 50.f);
     hitbox::GameObject ball2 = makeSquare(40.f, 0.f, 50.f);
-    EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
+    EXPECT_TRUE(hitbox::Collision::checkBoundingCircle(&ball1, &ball2));
     ball2.setPosition({50.f, 0.f}); // circles exactly touching
-    EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingCircle(&ball1, &ball2));
     ball1.collisionResponse(NULL); // the lecture's call: the default response does nothing
 }
 
@@ -37,62 +37,62 @@ TEST(Collision, CircleComesFromTheCentreNotTheCorner)
     hitbox::GameObject ball2 = makeSquare(135.f, 100.f, 40.f);
     ball1.setOrigin({20.f, 20.f});
     ball2.setOrigin({20.f, 20.f});
-    EXPECT_TRUE(Collision::checkBoundingCircle(&ball1, &ball2));
+    EXPECT_TRUE(hitbox::Collision::checkBoundingCircle(&ball1, &ball2));
     ball2.setPosition({141.f, 100.f});
-    EXPECT_FALSE(Collision::checkBoundingCircle(&ball1, &ball2));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingCircle(&ball1, &ball2));
 }
 
 TEST(Collision, BoundingBoxTouchingIsNotACollision)
 {
     hitbox::GameObject square1 = makeSquare(0.f, 200.f, 50.f);
     hitbox::GameObject square2 = makeSquare(50.f, 200.f, 50.f);
-    EXPECT_FALSE(Collision::checkBoundingBox(&square1, &square2));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(&square1, &square2));
     square2.move({-0.5f, 0.f});
-    EXPECT_TRUE(Collision::checkBoundingBox(&square1, &square2));
+    EXPECT_TRUE(hitbox::Collision::checkBoundingBox(&square1, &square2));
 }
 
 TEST(Collision, PointInBoxWithIntAndFloatPoints)
 {
     hitbox::GameObject square = makeSquare(100.f, 100.f, 50.f);
-    EXPECT_TRUE(Collision::checkBoundingBox(&square, sf::Vector2i(120, 120)));
-    EXPECT_TRUE(Collision::checkBoundingBox(&square, sf::Vector2f(100.5f, 149.5f)));
-    EXPECT_FALSE(Collision::checkBoundingBox(&square, sf::Vector2i(150, 120)));
+    EXPECT_TRUE(hitbox::Collision::checkBoundingBox(&square, sf::Vector2i(120, 120)));
+    EXPECT_TRUE(hitbox::Collision::checkBoundingBox(&square, sf::Vector2f(100.5f, 149.5f)));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(&square, sf::Vector2i(150, 120)));
 }
 
 TEST(Collision, NullDeadNonColliderAndSelfNeverCollide)
 {
     hitbox::GameObject a = makeSquare(0.f, 0.f, 50.f);
     hitbox::GameObject b = makeSquare(10.f, 10.f, 50.f);
-    EXPECT_FALSE(Collision::checkBoundingBox(nullptr, &b));
-    EXPECT_FALSE(Collision::checkBoundingBox(&a, nullptr));
-    EXPECT_FALSE(Collision::checkBoundingCircle(nullptr, nullptr));
-    EXPECT_FALSE(
-        Collision::checkBoundingBox(static_cast<hitbox::GameObject*>(nullptr), sf::Vector2i(1, 1)));
-    EXPECT_FALSE(Collision::checkBoundingBox(&a, &a));
-    EXPECT_FALSE(Collision::getBoundingBoxContact(nullptr, &b).hit);
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(nullptr, &b));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(&a, nullptr));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingCircle(nullptr, nullptr));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(static_cast<hitbox::GameObject*>(nullptr),
+                                                     sf::Vector2i(1, 1)));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(&a, &a));
+    EXPECT_FALSE(hitbox::Collision::getBoundingBoxContact(nullptr, &b).hit);
 
     b.setCollider(false);
-    EXPECT_FALSE(Collision::checkBoundingBox(&a, &b));
-    EXPECT_FALSE(Collision::checkCircleBox(&a, &b));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(&a, &b));
+    EXPECT_FALSE(hitbox::Collision::checkCircleBox(&a, &b));
     b.setCollider(true);
     b.setAlive(false);
-    EXPECT_FALSE(Collision::checkBoundingCircle(&a, &b));
-    EXPECT_FALSE(Collision::checkBoundingBox(&b, sf::Vector2f(20.f, 20.f)));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingCircle(&a, &b));
+    EXPECT_FALSE(hitbox::Collision::checkBoundingBox(&b, sf::Vector2f(20.f, 20.f)));
     b.setAlive(true);
-    EXPECT_TRUE(Collision::checkBoundingBox(&a, &b));
+    EXPECT_TRUE(hitbox::Collision::checkBoundingBox(&a, &b));
 }
 
 TEST(Collision, ContactVersionsAgreeWithTheYesNoTests)
 {
     hitbox::GameObject a = makeSquare(0.f, 0.f, 50.f);
     hitbox::GameObject b = makeSquare(45.f, 10.f, 50.f);
-    const hitbox::Contact boxes = Collision::getBoundingBoxContact(&a, &b);
+    const hitbox::Contact boxes = hitbox::Collision::getBoundingBoxContact(&a, &b);
     ASSERT_TRUE(boxes.hit);
     EXPECT_EQ(boxes.normal, hitbox::Vec2(-1.f, 0.f)); // push a left, out of b
     EXPECT_FLOAT_EQ(boxes.depth, 5.f);
 
-    const hitbox::Contact circles = Collision::getBoundingCircleContact(&a, &b);
-    EXPECT_EQ(circles.hit, Collision::checkBoundingCircle(&a, &b));
-    const hitbox::Contact circleBox = Collision::getCircleBoxContact(&a, &b);
-    EXPECT_EQ(circleBox.hit, Collision::checkCircleBox(&a, &b));
+    const hitbox::Contact circles = hitbox::Collision::getBoundingCircleContact(&a, &b);
+    EXPECT_EQ(circles.hit, hitbox::Collision::checkBoundingCircle(&a, &b));
+    const hitbox::Contact circleBox = hitbox::Collision::getCircleBoxContact(&a, &b);
+    EXPECT_EQ(circleBox.hit, hitbox::Collision::checkCircleBox(&a, &b));
 }

@@ -185,14 +185,16 @@ TEST(ShapeTable, CollisionGetContactUsesTheToyShape)
     hitbox::GameObject a = square(0.f, 0.f);
     hitbox::GameObject b = square(30.f, 30.f);
     const hitbox::ShapeTable table = tableWithDiamonds();
-    EXPECT_TRUE(Collision::getContact(&a, hitbox::ShapeKind::Box, &b, hitbox::ShapeKind::Box).hit);
-    EXPECT_FALSE(Collision::getContact(&a, diamondKind, &b, diamondKind, table).hit);
+    EXPECT_TRUE(
+        hitbox::Collision::getContact(&a, hitbox::ShapeKind::Box, &b, hitbox::ShapeKind::Box).hit);
+    EXPECT_FALSE(hitbox::Collision::getContact(&a, diamondKind, &b, diamondKind, table).hit);
     b.setPosition({30.f, 0.f});
-    const hitbox::Contact contact = Collision::getContact(&a, diamondKind, &b, diamondKind, table);
+    const hitbox::Contact contact =
+        hitbox::Collision::getContact(&a, diamondKind, &b, diamondKind, table);
     EXPECT_TRUE(contact.hit);
     EXPECT_LT(contact.normal.x, 0.f); // out of b (on the right) towards a
     // Collision's own rules still come first: an object against itself never collides.
-    EXPECT_FALSE(Collision::getContact(&a, diamondKind, &a, diamondKind, table).hit);
+    EXPECT_FALSE(hitbox::Collision::getContact(&a, diamondKind, &a, diamondKind, table).hit);
 }
 
 TEST(ShapeTable, DebugRendererDrawsTheToyShapeFromItsOutline)

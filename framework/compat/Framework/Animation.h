@@ -5,3 +5,6 @@
 
 #include <SFML/Graphics.hpp>
 #include <vector>
+
+// The course's code names the class without Hitbox's namespace.
+using Animation = hitbox::Animation;

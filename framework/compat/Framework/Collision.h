@@ -5,3 +5,6 @@
 #include "hitbox/objects/Collision.h"
 
 #include <SFML/Graphics.hpp>
+
+// The course's code names the class without Hitbox's namespace.
+using Collision = hitbox::Collision;

@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+namespace hitbox
+{
+
 void Animation::addFrame(sf::IntRect frame)
 {
     frames.push_back(frame);
@@ -125,3 +128,5 @@ void Animation::pause()
 {
     playing = false;
 }
+
+} // namespace hitbox

@@ -14,6 +14,9 @@
 
 #include <vector>
 
+namespace hitbox
+{
+
 class Animation
 {
 public:
@@ -60,3 +63,5 @@ private:
     bool looping = true;
     bool playing = true;
 };
+
+} // namespace hitbox

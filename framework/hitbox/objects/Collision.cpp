@@ -3,6 +3,9 @@
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/objects/GameObject.h"
 
+namespace hitbox
+{
+
 namespace
 {
 
@@ -76,3 +79,5 @@ hitbox::Contact Collision::getContact(hitbox::GameObject* first, hitbox::ShapeKi
         return {};
     return shapes.test(*first, firstKind, *second, secondKind);
 }
+
+} // namespace hitbox

@@ -18,7 +18,6 @@
 namespace hitbox
 {
 class GameObject;
-}
 
 class Collision
 {
@@ -56,3 +55,5 @@ public:
                hitbox::ShapeKind secondKind,
                const hitbox::ShapeTable& shapes = hitbox::ShapeTable::standard());
 };
+
+} // namespace hitbox

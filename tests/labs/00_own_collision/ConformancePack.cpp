@@ -424,7 +424,7 @@ void checkBoxAgainstBox(const Variant& variant)
         hitbox::GameObject first = randomPlainBox(variant, random);
         hitbox::GameObject second = randomPlainBox(variant, random);
         const Judged judged =
-            judgeBoxes(Collision::checkBoundingBox(&first, &second), first, second);
+            judgeBoxes(hitbox::Collision::checkBoundingBox(&first, &second), first, second);
         const bool expected = judged.expected;
         if (MyCollision::checkBoundingBox(&first, &second) != expected)
         {
@@ -470,7 +470,7 @@ void checkPointInBox(const Variant& variant)
         const sf::Vector2f point =
             at(variant, wholeBetween(random, 0, 30), wholeBetween(random, 0, 30));
         const Judged judged =
-            judgePoint(Collision::checkBoundingBox(&object, point), object, point);
+            judgePoint(hitbox::Collision::checkBoundingBox(&object, point), object, point);
         const bool expected = judged.expected;
         if (MyCollision::checkBoundingBox(&object, point) != expected)
         {
@@ -583,7 +583,7 @@ void checkBoundingCircle(const Variant& variant)
                     wholeBetween(random, -5, 5) * u, wholeBetween(random, -5, 5) * u,
                     wholeBetween(random, 0, 10) * u, wholeBetween(random, 0, 10) * u);
         }
-        const bool expected = Collision::checkBoundingCircle(&objects[0], &objects[1]);
+        const bool expected = hitbox::Collision::checkBoundingCircle(&objects[0], &objects[1]);
         if (MyCollision::checkBoundingCircle(&objects[0], &objects[1]) != expected)
         {
             ADD_FAILURE() << "random case " << index << " (seed " << variant.seed << "): circles "
@@ -664,8 +664,8 @@ void checkCircleAgainstBox(const Variant& variant)
         hitbox::GameObject circle = ball(variant, wholeBetween(random, 0, 30),
                                          wholeBetween(random, 0, 30), wholeBetween(random, 0, 8));
         hitbox::GameObject boxObject = randomPlainBox(variant, random);
-        const Judged judged =
-            judgeCircleBox(Collision::checkCircleBox(&circle, &boxObject), circle, boxObject);
+        const Judged judged = judgeCircleBox(hitbox::Collision::checkCircleBox(&circle, &boxObject),
+                                             circle, boxObject);
         const bool expected = judged.expected;
         if (MyCollision::checkCircleBox(&circle, &boxObject) != expected)
         {

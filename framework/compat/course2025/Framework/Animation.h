@@ -4,3 +4,6 @@
 #pragma once
 
 #include "hitbox/objects/Animation.h"
+
+// The course's code names the class without Hitbox's namespace.
+using Animation = hitbox::Animation;

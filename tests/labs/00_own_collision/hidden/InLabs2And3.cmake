@@ -1,12 +1,12 @@
 # The switch the lab 2 and lab 3 sheets offer ("Using your own Collision class from lab 0")
-# proved: each lab built with its one word changed, `Collision::` to `MyCollision::` in
+# proved: each lab built with its one call changed, `hitbox::Collision::` to `MyCollision::` in
 # the pair test, passes its own grading tests with lab 0's solution plugged in. One ctest
 # test a lab: lab00_own_collision.in_<lab>.PassesItsGradingTests. Never in the handout
 # (there the lab files are the student's own).
 #
 # lab_with_own_collision(<lab> <folder> <file> <call> <tests>...): <file> of labs/<folder>
 # is copied
-# (configure time) with `Collision::<call>` made `MyCollision::<call>`; the build stops if
+# (configure time) with `hitbox::Collision::<call>` made `MyCollision::<call>`; the build stops if
 # the call is no longer there, so the check can never silently test the unchanged lab. The
 # <tests> are tests/labs/<folder>'s sources (and the hidden variants are added).
 function(lab_with_own_collision lab folder file call)
@@ -17,12 +17,12 @@ function(lab_with_own_collision lab folder file call)
     set(lab_dir "${PROJECT_SOURCE_DIR}/labs/${folder}")
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${lab_dir}/${file}")
     file(READ "${lab_dir}/${file}" text)
-    string(FIND "${text}" "Collision::${call}(" where)
+    string(FIND "${text}" "hitbox::Collision::${call}(" where)
     if(where EQUAL -1)
         message(FATAL_ERROR "lab_with_own_collision: ${lab_dir}/${file} no longer calls "
-                            "Collision::${call}; update its sheet and this check")
+                            "hitbox::Collision::${call}; update its sheet and this check")
     endif()
-    string(REGEX REPLACE "([^A-Za-z_])Collision::${call}\\(" "\\1MyCollision::${call}("
+    string(REGEX REPLACE "([^A-Za-z_:])hitbox::Collision::${call}\\(" "\\1MyCollision::${call}("
            switched "${text}")
     set(switched_file "${CMAKE_CURRENT_BINARY_DIR}/in_${lab}/${file}")
     file(CONFIGURE OUTPUT "${switched_file}" CONTENT "${switched}" @ONLY)

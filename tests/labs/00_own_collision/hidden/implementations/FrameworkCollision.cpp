@@ -43,12 +43,12 @@ Sides MyCollision::worldBox(const hitbox::GameObject& object)
 
 bool MyCollision::checkBoundingBox(hitbox::GameObject* first, hitbox::GameObject* second)
 {
-    return Collision::checkBoundingBox(first, second);
+    return hitbox::Collision::checkBoundingBox(first, second);
 }
 
 bool MyCollision::checkBoundingBox(hitbox::GameObject* object, sf::Vector2f point)
 {
-    return Collision::checkBoundingBox(object, point);
+    return hitbox::Collision::checkBoundingBox(object, point);
 }
 
 WorldCircle MyCollision::worldCircle(const hitbox::GameObject& object)
@@ -59,10 +59,10 @@ WorldCircle MyCollision::worldCircle(const hitbox::GameObject& object)
 
 bool MyCollision::checkBoundingCircle(hitbox::GameObject* first, hitbox::GameObject* second)
 {
-    return Collision::checkBoundingCircle(first, second);
+    return hitbox::Collision::checkBoundingCircle(first, second);
 }
 
 bool MyCollision::checkCircleBox(hitbox::GameObject* circleObject, hitbox::GameObject* boxObject)
 {
-    return Collision::checkCircleBox(circleObject, boxObject);
+    return hitbox::Collision::checkCircleBox(circleObject, boxObject);
 }
