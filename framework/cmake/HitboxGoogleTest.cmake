@@ -12,13 +12,8 @@ endif()
 
 set(HITBOX_GOOGLETEST_VERSION 1.15.2)
 include(FetchContent)
-set(fetch_options "")
-if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.28)
-    list(APPEND fetch_options EXCLUDE_FROM_ALL)
-endif()
-if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.25)
-    list(APPEND fetch_options SYSTEM) # its headers never warn in our tests
-endif()
+include(HitboxFetchOptions)
+hitbox_fetch_options(fetch_options)
 FetchContent_Declare(googletest
     GIT_REPOSITORY https://github.com/google/googletest.git
     GIT_TAG v${HITBOX_GOOGLETEST_VERSION}

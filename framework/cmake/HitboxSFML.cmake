@@ -33,15 +33,9 @@ else()
     endif()
     set(how "downloaded")
     include(FetchContent)
-    # As the template does: SYSTEM (CMake 3.25) so SFML's headers never warn in our code;
-    # EXCLUDE_FROM_ALL (3.28) so only the SFML libraries Hitbox links are built.
-    set(fetch_options "")
-    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.28)
-        list(APPEND fetch_options EXCLUDE_FROM_ALL)
-    endif()
-    if(CMAKE_VERSION VERSION_GREATER_EQUAL 3.25)
-        list(APPEND fetch_options SYSTEM)
-    endif()
+    # As SFML's CMake template does: SYSTEM and EXCLUDE_FROM_ALL where this CMake has them.
+    include(HitboxFetchOptions)
+    hitbox_fetch_options(fetch_options)
     FetchContent_Declare(SFML
         GIT_REPOSITORY https://github.com/SFML/SFML.git
         GIT_TAG ${SFML_VERSION}
