@@ -69,7 +69,7 @@ BallStep moveBall(Ball& ball, Paddle& left, Paddle& right, const Arena& arena, f
         if (hitObstacle == nullptr)
         {
             ball.move(hitbox::toSfml(ballMove)); // a clear path: the whole rest of the step
-            break;
+            return step;
         }
         ball.move(
             hitbox::toSfml(ballMove * hit.time)); // up to the contact: touching, not overlapping
