@@ -27,7 +27,7 @@ VARIANTS = [
     ("11_pong", [("Court.h", "constexpr float ballSpeed =", "6000.f;")]),
     ("11_pong", [("Court.h", "constexpr float ballSpeed =", "200.f;"),
                  ("Court.h", "constexpr float paddleHeight =", "130.f;"),
-                 ("Court.h", "constexpr Court court", "{0.f, 60.f, 1200.f, 600.f};")]),
+                 ("Court.h", "inline const Court court", "{0.f, 60.f, 1200.f, 600.f};")]),
     ("02_bouncing_balls", [("Ball.h", "constexpr float ballRadius =", "18.f;"),
                            ("Ball.h", "constexpr float ballSpeed =", "700.f;")]),
 ]
