@@ -31,7 +31,8 @@ KEEP = (
     ("tests/labs/*/hidden/*", False),  # hidden grading variants and the packs' own checks
     ("tests/course/*/*", False),  # course lab folders (scripts/check-course-labs.sh)
     ("framework/*", True), ("assets/*", True), ("tests/support/*", True), ("tests/geometry/*", True),
-    ("tests/labs/*", True), ("tests/objects/*", True), ("tests/app/*", True), ("tests/debug/*", True),
+    ("tests/labs/*", True), ("tests/sfml/*", True), ("tests/objects/*", True), ("tests/app/*", True),
+    ("tests/debug/*", True),
     ("tests/course/*.cpp", True),
     ("CMakeLists.txt", True), ("CMakePresets.json", True), (".clang-format", True), (".gitignore", True),
     ("tests/CMakeLists.txt", True),
