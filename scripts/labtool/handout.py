@@ -30,6 +30,7 @@ TEMPLATES = Path(__file__).resolve().parent / "handout"
 KEEP = (
     ("tests/labs/*/hidden/*", False),  # hidden grading variants and the packs' own checks
     ("tests/course/*/*", False),  # course lab folders (scripts/check-course-labs.sh)
+    ("tests/support/vcxproj/*", False),  # the course-lab build's .vcxproj reader's fixture
     ("framework/*", True), ("assets/*", True), ("tests/support/*", True), ("tests/geometry/*", True),
     ("tests/labs/*", True), ("tests/sfml/*", True), ("tests/objects/*", True), ("tests/app/*", True),
     ("tests/debug/*", True),
