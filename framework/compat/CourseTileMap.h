@@ -19,7 +19,8 @@
 // `mapSize`: columns and rows.
 template <typename Tile>
 std::vector<Tile> placeTiles(const std::vector<Tile>& tileSet, const std::vector<int>& tileMap,
-                             sf::Vector2u mapSize, sf::Vector2f position, const sf::Texture* texture)
+                             sf::Vector2u mapSize, sf::Vector2f position,
+                             const sf::Texture* texture)
 {
     std::vector<Tile> placed;
     if (tileSet.empty())
@@ -34,7 +35,8 @@ std::vector<Tile> placeTiles(const std::vector<Tile>& tileSet, const std::vector
         const float column = static_cast<float>(cell % mapSize.x);
         const float row = static_cast<float>(cell / mapSize.x);
         placed.push_back(tileSet[static_cast<std::size_t>(tileIndex)]);
-        placed.back().setPosition({position.x + column * tileSize.x, position.y + row * tileSize.y});
+        placed.back().setPosition(
+            {position.x + column * tileSize.x, position.y + row * tileSize.y});
         placed.back().setTexture(texture);
     }
     return placed;
