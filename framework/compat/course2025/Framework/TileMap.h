@@ -10,9 +10,9 @@
 //     ...
 //     for (GameObject& tile : m_tileMap.getLevel())   // collision against the placed tiles
 //
-// The data and buildLevel's placing rule are CourseTileMap's (../../CourseTileMap.h), shared
-// with the older framework, so the protected members carry its names (tileSet, level, ...);
-// this class adds the 2025-26 signatures.
+// buildLevel's placing rule is placeTiles (../../CourseTileMap.h), shared with the older
+// framework; the protected members keep this generation's m_ names, which lab code that
+// derives from TileMap uses.
 #pragma once
 
 #include "../../CourseTileMap.h"
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-class TileMap : public CourseTileMap<GameObject>
+class TileMap
 {
 public:
     // A file that does not load leaves the tiles untextured (SFML prints one line).
@@ -30,9 +30,19 @@ public:
     void setTileSet(const std::vector<GameObject>& tiles);
     // mapDimensions: columns and rows.
     void setTileMap(const std::vector<int>& tileIndices, sf::Vector2u mapDimensions);
+    // Places the tiles; call it again after changing the set, the map or the position.
+    void buildLevel();
 
     void render(sf::RenderWindow& window);
     // The placed tiles, to test for collisions (and change, e.g. collect a coin).
     std::vector<GameObject>& getLevel();
     void setPosition(sf::Vector2f topLeft);
+
+protected:
+    std::vector<GameObject> m_tileSet;
+    std::vector<int> m_tileMap;      // tile indices, row by row
+    std::vector<GameObject> m_level; // the placed tiles
+    sf::Texture m_texture;
+    sf::Vector2u m_mapSize; // columns and rows
+    sf::Vector2f m_position;
 };
