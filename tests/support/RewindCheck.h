@@ -30,7 +30,7 @@ namespace rewindcheck
 struct Program
 {
     hitbox::LevelMaker make; // builds the level as the program does (seed, options)
-    std::function<std::string(const hitbox::Level&)> state; // every value a step changes
+    std::function<std::string(const hitbox::Level&)> state;        // every value a step changes
     std::function<void(hitbox::Input&, long long step)> keys = {}; // the input before `step`
 };
 
@@ -87,9 +87,9 @@ inline Seen checkRewind(const Program& program, long long steps,
         for (hitbox::Input* each : {&referenceInput, &input})
             if (program.keys)
                 program.keys(*each, step - 1);
-        for (auto [level, in] : {std::pair<hitbox::Level*, hitbox::Input*>{reference.get(),
-                                                                           &referenceInput},
-                                 {&rewind, &input}})
+        for (auto [level, in] :
+             {std::pair<hitbox::Level*, hitbox::Input*>{reference.get(), &referenceInput},
+              {&rewind, &input}})
         {
             level->handleInput(*in, hitbox::stepSeconds);
             level->update(hitbox::stepSeconds);
@@ -97,7 +97,8 @@ inline Seen checkRewind(const Program& program, long long steps,
         }
         states.push_back(program.state(*reference));
         events.push_back(eventsText(step, reference->getContactEvents()));
-        EXPECT_EQ(program.state(rewind.shownLevel()), states.back()) << "live state at step " << step;
+        EXPECT_EQ(program.state(rewind.shownLevel()), states.back())
+            << "live state at step " << step;
         EXPECT_EQ(eventsText(step, rewind.getContactEvents()), events.back())
             << "live contact events of step " << step;
         if (std::find(pauses.begin(), pauses.end(), step) == pauses.end())
