@@ -3,7 +3,8 @@
 // rewinds, both fed the same scripted input. Paused after each step in `pauses`, every kept
 // step is shown going back to the oldest, then going forward again, then a few jumps; each
 // shown step must equal the same step of the run that never rewound, bit for bit: its state
-// (`state`: every value a step changes, as exact text) and the contact events of that step
+// (`state`: every value a step changes, as exact text; and the help and state lines the window
+// shows) and the contact events of that step
 // (as --timeline writes them: a pair in contact where the re-simulation begins must go on with
 // Stay and its Exit, never a second Enter). Then the live run goes on and must stay equal to
 // the other one, step by step, to the end.
@@ -52,6 +53,15 @@ inline std::string eventsText(long long step, const std::vector<hitbox::PairEven
     return hitbox::timelineCsv(timeline.getEvents());
 }
 
+// The state, and what the window writes of it: the help line and the state line, asked of
+// `drawn` (the RewindLevel: they must come from the step shown, not the live one).
+inline std::string shownText(const Program& program, const hitbox::Level& level,
+                             const hitbox::Level& drawn)
+{
+    return program.state(level) + "\nhelp: " + drawn.getHelpText() +
+           "\nstate: " + drawn.describeState();
+}
+
 inline Seen checkRewind(const Program& program, long long steps,
                         const std::vector<long long>& pauses, long long kept)
 {
@@ -60,7 +70,7 @@ inline Seen checkRewind(const Program& program, long long steps,
     std::unique_ptr<hitbox::Level> live = program.make();
     hitbox::RewindLevel rewind(*live, program.make, kept);
     seen.rebuilt = rewind.rebuilds();
-    std::vector<std::string> states{program.state(*reference)};
+    std::vector<std::string> states{shownText(program, *reference, *reference)};
     std::vector<std::string> events{eventsText(0, {})};
     hitbox::Input referenceInput;
     hitbox::Input input;
@@ -68,7 +78,8 @@ inline Seen checkRewind(const Program& program, long long steps,
     {
         EXPECT_EQ(rewind.show(at), at);
         const auto index = static_cast<std::size_t>(at);
-        EXPECT_EQ(program.state(rewind.shownLevel()), states[index]) << "state at step " << at;
+        EXPECT_EQ(shownText(program, rewind.shownLevel(), rewind), states[index])
+            << "state at step " << at;
         hitbox::Timeline shown;
         shown.addStep(at, rewind.getContactEvents());
         EXPECT_EQ(hitbox::timelineCsv(shown.getEvents()), events[index])
@@ -95,9 +106,9 @@ inline Seen checkRewind(const Program& program, long long steps,
             level->update(hitbox::stepSeconds);
             in->update();
         }
-        states.push_back(program.state(*reference));
+        states.push_back(shownText(program, *reference, *reference));
         events.push_back(eventsText(step, reference->getContactEvents()));
-        EXPECT_EQ(program.state(rewind.shownLevel()), states.back())
+        EXPECT_EQ(shownText(program, rewind.shownLevel(), rewind), states.back())
             << "live state at step " << step;
         EXPECT_EQ(eventsText(step, rewind.getContactEvents()), events.back())
             << "live contact events of step " << step;

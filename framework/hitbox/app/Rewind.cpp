@@ -122,6 +122,11 @@ void RewindLevel::renderDebug(DebugRenderer& debug) const
     shownLevel().renderDebug(debug);
 }
 
+std::string RewindLevel::getHelpText() const
+{
+    return shownLevel().getHelpText();
+}
+
 std::string RewindLevel::describeState() const
 {
     return shownLevel().describeState();

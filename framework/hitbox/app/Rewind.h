@@ -53,6 +53,7 @@ public:
     void render(sf::RenderTarget& target) const override;
     void renderBlended(sf::RenderTarget& target, float leftover) const override;
     void renderDebug(DebugRenderer& debug) const override;
+    std::string getHelpText() const override; // many levels show their state in it
     std::string describeState() const override;
     std::vector<PairEvent> getContactEvents() const override;
 
