@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <utility>
@@ -125,6 +126,14 @@ inline Seen checkRewind(const Program& program, long long steps,
             if (!check(at))
                 return seen;
     }
+    // What it held (Rewind.h's bytesUsed) and, saved, one snapshot of this scene.
+    const std::unique_ptr<hitbox::LevelState> one = live->saveState();
+    std::cout << "rewind: " << seen.stepsShown << " steps shown ("
+              << (seen.rebuilt ? "rebuilt" : "restored") << "), " << seen.enters << " enters, "
+              << seen.stays << " stays, " << seen.exits << " exits; " << rewind.bytesUsed()
+              << " bytes held for " << kept << " steps"
+              << (one ? ", " + std::to_string(one->bytes()) + " bytes a snapshot" : std::string())
+              << std::endl;
     return seen;
 }
 

@@ -45,8 +45,7 @@ void keys(hitbox::Input& input, long long step)
 
 TEST(Rewind, EveryKeptStepOfTheRayCasterIsShownAsItWas)
 {
-    const rewindcheck::Program program{[] { return std::make_unique<RayLevel>(); }, rayState,
-                                       keys};
+    const rewindcheck::Program program{[] { return std::make_unique<RayLevel>(); }, rayState, keys};
     const rewindcheck::Seen seen = rewindcheck::checkRewind(program, 220, {200}, 120);
     EXPECT_FALSE(seen.rebuilt) << "lab 5 saves its state: the rewind restores it";
     EXPECT_GT(seen.stepsShown, 0);

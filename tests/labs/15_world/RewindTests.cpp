@@ -12,7 +12,6 @@
 
 #include <gtest/gtest.h>
 
-#include <iostream>
 #include <memory>
 #include <string>
 
@@ -77,6 +76,4 @@ TEST(Rewind, EveryKeptStepOfTheWorldIsShownAsItWasContactsAndAll)
     EXPECT_GT(seen.enters, 0);
     EXPECT_GT(seen.stays, 0);
     EXPECT_GT(seen.exits, 0);
-    std::cout << "shown " << seen.stepsShown << " steps: " << seen.enters << " enters, "
-              << seen.stays << " stays, " << seen.exits << " exits" << std::endl;
 }
