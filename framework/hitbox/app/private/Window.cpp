@@ -120,7 +120,10 @@ public:
             // --pause-at-step N: run up to step N exactly, then pause there.
             steps = static_cast<int>(std::min<long long>(steps, pauseAtStep - stepsRun));
             if (stepsRun + steps == pauseAtStep)
+            {
                 pausedByKey = settings.paused = true;
+                pauseAtStep = -1; // once: P then resumes (it had paused again at once)
+            }
         }
         stepsRun += steps;
         return steps;
