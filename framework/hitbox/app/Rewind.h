@@ -53,9 +53,10 @@ public:
     void render(sf::RenderTarget& target) const override;
     void renderBlended(sf::RenderTarget& target, float leftover) const override;
     void renderDebug(DebugRenderer& debug) const override;
-    std::string getHelpText() const override; // many levels show their state in it
-    std::string describeState() const override;
-    std::vector<PairEvent> getContactEvents() const override;
+    // (the help line too: many levels show their state in it)
+    [[nodiscard]] std::string getHelpText() const override;
+    [[nodiscard]] std::string describeState() const override;
+    [[nodiscard]] std::vector<PairEvent> getContactEvents() const override;
 
     // False when the level can neither be saved (Level::saveState gave nullptr) nor rebuilt
     // (no LevelMaker): nothing to go to.
