@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <memory>
 #include <utility>
 
 namespace
@@ -340,4 +342,32 @@ std::string RayLevel::describeState() const
     return "player at (" + std::to_string(std::lround(position.x)) + ", " +
            std::to_string(std::lround(position.y)) + "), time order " + (timeOrder ? "on" : "off") +
            ", ray " + (ray.hit ? "hits box " + std::to_string(ray.boxIndex) : "hits nothing");
+}
+
+namespace
+{
+
+struct RaySnapshot : hitbox::LevelState
+{
+    RaySnapshot(const RayLevel& level, std::size_t held) : level(level), held(held) {}
+    std::size_t bytes() const override { return held; }
+
+    RayLevel level;
+    std::size_t held;
+};
+
+} // namespace
+
+std::unique_ptr<hitbox::LevelState> RayLevel::saveState() const
+{
+    const std::size_t held = sizeof(RaySnapshot) + solids.size() * sizeof(hitbox::Box) +
+                             pillars.size() * sizeof(hitbox::Circle) +
+                             lastHits.size() * sizeof(hitbox::Hit) +
+                             trail.size() * sizeof(sf::Vector2f);
+    return std::make_unique<RaySnapshot>(*this, held);
+}
+
+void RayLevel::restoreState(const hitbox::LevelState& state)
+{
+    *this = static_cast<const RaySnapshot&>(state).level;
 }

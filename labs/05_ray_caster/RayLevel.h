@@ -15,6 +15,7 @@
 #include "hitbox/objects/GameObject.h"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 // The answer of castRay: the ray runs from `start` to `end`, and `end` is the hit point
@@ -48,6 +49,11 @@ public:
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
+    // The window's rewind (hitbox::RewindLevel): a copy of the whole level, which is all
+    // values, so a field added to it is rewound too. Without it the rewind re-simulates from
+    // the start, and a step of this lab is slow enough for that to show.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
 
     // Task 1: the nearest solid the segment from `from` to `to` hits.
     RayHit castRay(hitbox::Vec2 from, hitbox::Vec2 to) const;

@@ -15,6 +15,8 @@
 #include <SFML/Graphics/Text.hpp>
 
 #include <cmath>
+#include <cstddef>
+#include <memory>
 #include <utility>
 
 namespace
@@ -466,4 +468,30 @@ std::string RotatedLevel::describeState() const
            " shapes overlap; held shape " + std::to_string(held) + " at " +
            std::to_string(std::lround(shapes[held].body.angleDegrees)) + " degrees" +
            (frameworkSat ? " (framework's SAT)" : "");
+}
+
+namespace
+{
+
+struct RotatedSnapshot : hitbox::LevelState
+{
+    RotatedSnapshot(const RotatedLevel& level, std::size_t held) : level(level), held(held) {}
+    std::size_t bytes() const override { return held; }
+
+    RotatedLevel level;
+    std::size_t held;
+};
+
+} // namespace
+
+std::unique_ptr<hitbox::LevelState> RotatedLevel::saveState() const
+{
+    const std::size_t held = sizeof(RotatedSnapshot) + shapes.size() * sizeof(Shape) +
+                             pairs.size() * sizeof(PairView) + overlapping.size() / 8;
+    return std::make_unique<RotatedSnapshot>(*this, held);
+}
+
+void RotatedLevel::restoreState(const hitbox::LevelState& state)
+{
+    *this = static_cast<const RotatedSnapshot&>(state).level;
 }

@@ -13,6 +13,7 @@
 #include "hitbox/app/Level.h"
 #include "hitbox/geometry/Capsule.h"
 
+#include <memory>
 #include <vector>
 
 // A box turned about its centre, or a capsule: then body.halfSize.x is half the length of its
@@ -55,6 +56,11 @@ public:
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
+    // The window's rewind (hitbox::RewindLevel): a copy of the whole level, which is all
+    // values, so a field added to it is rewound too. Without it the rewind re-simulates from
+    // the start, and a step of this lab is slow enough for that to show.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
 
     // The mouse wheel turns the held shape by this many degrees a notch (task 3).
     static constexpr float degreesPerNotch = 15.f;

@@ -16,7 +16,9 @@
 #include <SFML/Graphics/Text.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <memory>
 #include <utility>
 
 namespace
@@ -405,4 +407,31 @@ std::string PoolLevel::describeState() const
     return std::string(swept ? "swept" : "discrete") + ": " + std::to_string(onTable) + " of " +
            std::to_string(balls.size()) + " balls on the table, " + std::to_string(moving) +
            " moving";
+}
+
+namespace
+{
+
+struct PoolSnapshot : hitbox::LevelState
+{
+    PoolSnapshot(const PoolLevel& level, std::size_t held) : level(level), held(held) {}
+    std::size_t bytes() const override { return held; }
+
+    PoolLevel level;
+    std::size_t held;
+};
+
+} // namespace
+
+std::unique_ptr<hitbox::LevelState> PoolLevel::saveState() const
+{
+    const std::size_t held =
+        sizeof(PoolSnapshot) + balls.size() * sizeof(Ball) + cushions.size() * sizeof(hitbox::Box) +
+        cueTrail.size() * sizeof(hitbox::Vec2) + impacts.size() * sizeof(Impact);
+    return std::make_unique<PoolSnapshot>(*this, held);
+}
+
+void PoolLevel::restoreState(const hitbox::LevelState& state)
+{
+    *this = static_cast<const PoolSnapshot&>(state).level;
 }

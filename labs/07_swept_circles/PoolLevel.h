@@ -15,6 +15,7 @@
 #include "hitbox/geometry/Sweep.h"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 // The first collision of the rest of a step.
@@ -49,6 +50,11 @@ public:
     void render(sf::RenderTarget& target) const override;
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
+    // The window's rewind (hitbox::RewindLevel): a copy of the whole level, which is all
+    // values, so a field added to it is rewound too. Without it the rewind re-simulates from
+    // the start, and a step of this lab is slow enough for that to show.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
     std::string describeState() const override;
 
     // Task 1 (and task 3): the earliest collision if every ball moves by velocity * seconds.

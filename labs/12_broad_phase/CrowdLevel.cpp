@@ -7,7 +7,9 @@
 #include <SFML/Graphics/RenderTarget.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <memory>
 
 namespace
 {
@@ -132,4 +134,31 @@ std::string CrowdLevel::describeState() const
 const PairSearch& CrowdLevel::getLastSearch() const
 {
     return lastSearch;
+}
+
+namespace
+{
+
+struct CrowdSnapshot : hitbox::LevelState
+{
+    CrowdSnapshot(const CrowdLevel& level, std::size_t held) : level(level), held(held) {}
+    std::size_t bytes() const override { return held; }
+
+    CrowdLevel level;
+    std::size_t held;
+};
+
+} // namespace
+
+std::unique_ptr<hitbox::LevelState> CrowdLevel::saveState() const
+{
+    const std::size_t held = sizeof(CrowdSnapshot) + boxes.size() * sizeof(Box) +
+                             (speedX.size() + speedY.size()) * sizeof(float) +
+                             lastSearch.pairs.size() * sizeof(Pair) + overlapping.size() / 8;
+    return std::make_unique<CrowdSnapshot>(*this, held);
+}
+
+void CrowdLevel::restoreState(const hitbox::LevelState& state)
+{
+    *this = static_cast<const CrowdSnapshot&>(state).level;
 }

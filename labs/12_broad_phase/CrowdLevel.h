@@ -9,6 +9,7 @@
 
 #include "hitbox/app/Level.h"
 
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -36,6 +37,11 @@ public:
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
+    // The window's rewind (hitbox::RewindLevel): a copy of the whole level, which is all
+    // values, so a field added to it is rewound too. Without it the rewind re-simulates from
+    // the start, and a step of this lab is slow enough for that to show.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
 
     const PairSearch& getLastSearch() const;
 

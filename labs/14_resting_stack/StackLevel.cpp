@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdio>
+#include <memory>
 
 namespace
 {
@@ -193,4 +194,30 @@ const std::vector<Crate>& StackLevel::getCrates(int stack) const
 int StackLevel::getPasses(int stack) const
 {
     return passes[stack];
+}
+
+namespace
+{
+
+struct StackSnapshot : hitbox::LevelState
+{
+    StackSnapshot(const StackLevel& level, std::size_t held) : level(level), held(held) {}
+    std::size_t bytes() const override { return held; }
+
+    StackLevel level;
+    std::size_t held;
+};
+
+} // namespace
+
+std::unique_ptr<hitbox::LevelState> StackLevel::saveState() const
+{
+    const std::size_t held =
+        sizeof(StackSnapshot) + (stacks[0].size() + stacks[1].size()) * sizeof(Crate);
+    return std::make_unique<StackSnapshot>(*this, held);
+}
+
+void StackLevel::restoreState(const hitbox::LevelState& state)
+{
+    *this = static_cast<const StackSnapshot&>(state).level;
 }

@@ -13,6 +13,7 @@
 #include "hitbox/app/Loop.h"
 #include "hitbox/debug/DebugRenderer.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,11 @@ public:
     void renderDebug(hitbox::DebugRenderer& debug) const override;
     std::string getHelpText() const override;
     std::string describeState() const override;
+    // The window's rewind (hitbox::RewindLevel): a copy of the whole level, which is all
+    // values, so a field added to it is rewound too. Without it the rewind re-simulates from
+    // the start, and a step of this lab is slow enough for that to show.
+    std::unique_ptr<hitbox::LevelState> saveState() const override;
+    void restoreState(const hitbox::LevelState& state) override;
 
     // For the grading tests and experiments: the largest one-step move of a crate of stack
     // `stack` (0 left, 1 right) over the last full readout window.

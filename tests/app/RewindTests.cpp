@@ -1,5 +1,5 @@
-// Rewind (Rewind.h): any of the last kept steps can be shown again exactly, from snapshots and
-// the written-down input; rewinding never changes the run that follows; memory stays bounded.
+// Rewind (Rewind.h): any of the last kept steps can be shown again exactly, from snapshots (or a
+// level built again) and the written-down input; rewinding never changes the run that follows.
 #include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Rewind.h"
@@ -87,6 +87,18 @@ void scriptKeys(hitbox::Input& input, std::mt19937& random)
         input.setKeyUp(sf::Keyboard::Key::Left);
 }
 
+// The same level with no saveState: the rewind has to build it again (RewindReplay.h).
+class UnsavedPushLevel : public PushLevel
+{
+public:
+    std::unique_ptr<hitbox::LevelState> saveState() const override { return nullptr; }
+};
+
+std::string shownBits(const hitbox::RewindLevel& rewind)
+{
+    return static_cast<const PushLevel&>(rewind.shownLevel()).bits();
+}
+
 void liveStep(hitbox::Level& level, hitbox::Input& input)
 {
     level.handleInput(input, hitbox::stepSeconds);
@@ -158,7 +170,7 @@ TEST(Rewind, MemoryStaysBoundedHoweverLongTheRun)
     EXPECT_GE(most, 4 * snapshotBytes);
 }
 
-TEST(Rewind, ALevelThatCannotBeSavedIsNeverRewound)
+TEST(Rewind, ALevelThatCanNeitherBeSavedNorBuiltAgainIsNeverRewound)
 {
     class Plain : public hitbox::Level
     {
@@ -173,4 +185,74 @@ TEST(Rewind, ALevelThatCannotBeSavedIsNeverRewound)
     EXPECT_EQ(rewind.show(3), 10);
     EXPECT_EQ(plain.steps, 10);
     EXPECT_EQ(rewind.bytesUsed(), 0u);
+}
+
+TEST(Rewind, ALevelThatCannotBeSavedIsBuiltAgainAndShownExactly)
+{
+    const long long kept = 200;
+    PushLevel reference;
+    UnsavedPushLevel live;
+    hitbox::RewindLevel rewind(
+        live, [] { return std::make_unique<UnsavedPushLevel>(); }, kept);
+    ASSERT_TRUE(rewind.canRewind());
+    ASSERT_TRUE(rewind.rebuilds());
+    std::vector<std::string> history{reference.bits()};
+    hitbox::Input referenceInput;
+    hitbox::Input input;
+    std::mt19937 referenceRandom(8);
+    std::mt19937 random(8);
+    for (int i = 0; i < 600; ++i)
+    {
+        scriptKeys(referenceInput, referenceRandom);
+        liveStep(reference, referenceInput);
+        history.push_back(reference.bits());
+        scriptKeys(input, random);
+        liveStep(rewind, input);
+        ASSERT_EQ(shownBits(rewind), history.back()) << "live step " << i + 1;
+        if (i != 250 && i != 550)
+            continue;
+        EXPECT_EQ(rewind.oldestStep(), rewind.newestStep() - kept);
+        for (long long at = rewind.newestStep(); at >= rewind.oldestStep(); --at)
+        {
+            ASSERT_EQ(rewind.show(at), at);
+            ASSERT_EQ(shownBits(rewind), history[static_cast<std::size_t>(at)]) << "step " << at;
+            // Looking back never touches the running level.
+            ASSERT_EQ(live.bits(), history.back());
+        }
+        for (long long at = rewind.oldestStep(); at <= rewind.newestStep(); ++at)
+        {
+            rewind.show(at);
+            ASSERT_EQ(shownBits(rewind), history[static_cast<std::size_t>(at)]) << "step " << at;
+        }
+        // What a key press costs: one step forward is one step; one step back from step t is
+        // t - 1 steps from the start.
+        const long long t = rewind.newestStep() - 50;
+        rewind.show(t);
+        long long before = rewind.stepsReplayed();
+        rewind.show(t + 1);
+        EXPECT_EQ(rewind.stepsReplayed() - before, 1);
+        before = rewind.stepsReplayed();
+        rewind.show(t);
+        EXPECT_EQ(rewind.stepsReplayed() - before, t);
+    }
+    EXPECT_EQ(live.bits(), reference.bits());
+    EXPECT_NE(history[100], history[600]) << "the scene should have moved";
+}
+
+TEST(Rewind, ARebuiltLevelKeepsOnlyTheInputRowsThatChanged)
+{
+    UnsavedPushLevel live;
+    hitbox::RewindLevel rewind(live, [] { return std::make_unique<UnsavedPushLevel>(); });
+    hitbox::Input input;
+    input.setKeyDown(sf::Keyboard::Key::Right);
+    for (int i = 0; i < 5000; ++i)
+        liveStep(rewind, input);
+    const std::size_t steady = rewind.bytesUsed();
+    EXPECT_LE(steady, 1024u) << "5,000 steps of one held key: two input rows";
+    for (int i = 0; i < 100; ++i)
+    {
+        input.setMousePosition({static_cast<float>(i), 0.f}); // a new row every step
+        liveStep(rewind, input);
+    }
+    EXPECT_GE(rewind.bytesUsed(), steady + 100 * sizeof(hitbox::InputSnapshot));
 }

@@ -5,6 +5,7 @@
 #include "hitbox/app/Input.h"
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/ReplayLevel.h"
+#include "hitbox/app/Rewind.h"
 #include "hitbox/app/SavePath.h"
 #include "hitbox/app/WholeFile.h"
 #include "hitbox/app/private/LongRun.h"
@@ -130,9 +131,13 @@ int runRecordable(Options options, const ProgramInfo& info, const LevelFactory& 
     }
     std::unique_ptr<Level> made = makeLevel(levelOptions);
     // In the window, the rewind sits right around the level (Rewind.h: looking back never
-    // changes what the replay, the recording or the timeline see).
+    // changes what the replay, the recording or the timeline see). A level that cannot save
+    // its state is built again from the same options to show an earlier step.
     const bool window = !options.headless && options.screenshotPath.empty();
-    std::unique_ptr<RewindLevel> rewind = window ? std::make_unique<RewindLevel>(*made) : nullptr;
+    std::unique_ptr<RewindLevel> rewind =
+        window ? std::make_unique<RewindLevel>(*made, [&makeLevel, levelOptions]
+                                               { return makeLevel(levelOptions); })
+               : nullptr;
     Level* level = rewind ? rewind.get() : made.get();
     std::unique_ptr<ReplayingLevel> replaying;
     std::unique_ptr<RecordingLevel> recorder;

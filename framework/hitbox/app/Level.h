@@ -71,9 +71,10 @@ public:
     // The contact events (enter, stay, exit) of the last step, for --timeline and the rewind
     // strip (Timeline.h). A level with a World returns world.getEvents(); by default none.
     [[nodiscard]] virtual std::vector<PairEvent> getContactEvents() const;
-    // Rewinding (Rewind.h): a copy of the state, or nullptr when this level cannot be rewound
-    // (the default). restoreState gets back exactly a state saveState gave: afterwards the same
-    // input must give the same steps, bit for bit.
+    // Rewinding (Rewind.h): a copy of the state, or nullptr (the default): then the window
+    // rewinds by building the level again and re-simulating from step 0 (RewindReplay.h),
+    // which costs more the longer the run. restoreState gets back exactly a state saveState
+    // gave: afterwards the same input must give the same steps, bit for bit.
     [[nodiscard]] virtual std::unique_ptr<LevelState> saveState() const;
     virtual void restoreState(const LevelState& state);
     // Escape was pressed. Return true if the level used it (e.g. back to a menu);

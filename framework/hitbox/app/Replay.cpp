@@ -268,10 +268,17 @@ InputSnapshot captureInput(const Input& input)
 
 Input restoreInput(const InputSnapshot& snapshot)
 {
+    // Only the keys the snapshot names: a key in none of its lists is up, as in a new Input
+    // (and trying all hundred keys made re-simulating a rewound level slow, RewindReplay.h).
+    std::vector<int> named = snapshot.keysDown;
+    named.insert(named.end(), snapshot.keysPressed.begin(), snapshot.keysPressed.end());
+    named.insert(named.end(), snapshot.keysReleased.begin(), snapshot.keysReleased.end());
+    std::sort(named.begin(), named.end());
+    named.erase(std::unique(named.begin(), named.end()), named.end());
     Input input;
     for (int phase = 0; phase < 4; ++phase)
     {
-        for (int key = 0; key < keyCount; ++key)
+        for (int key : named)
             replayPhases(input, phase, contains(snapshot.keysDown, key),
                          contains(snapshot.keysPressed, key), contains(snapshot.keysReleased, key),
                          setKey, key);

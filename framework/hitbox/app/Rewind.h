@@ -1,25 +1,33 @@
 // Rewind.h - step back and forward through the last seconds of a run while paused.
 //
-// A RewindLevel wraps the level the loop runs. Every step it writes down the input, and every
-// snapshotSteps steps a copy of the level's state (Level::saveState). Showing an earlier step
-// restores the snapshot at or before it and simulates the written-down input up to it: the
-// run is deterministic, so that is the step as it was, bit for bit. Rewinding only looks back:
-// the next live step first returns to the newest step, so the run goes on exactly as it
-// would have (and --record and --timeline see one unbroken run).
+// A RewindLevel wraps the level the loop runs and writes down every step's input. Showing an
+// earlier step then works one of two ways, and both give the step as it was, bit for bit (the
+// run is deterministic):
+//   - a level that can save its state (Level::saveState): every snapshotSteps steps a copy of
+//     it; showing step t restores the copy at or before t and simulates the written-down input
+//     up to t (at most snapshotSteps - 1 steps a key press);
+//   - any other level, given a LevelMaker: the level is built again and fed the input from
+//     step 0 (RewindReplay.h), so every program can be rewound with no code of its own.
+// Rewinding only looks back: the next live step first returns to the newest step, so the run
+// goes on exactly as it would have (and --record and --timeline see one unbroken run).
 //
-// Memory is bounded: snapshots older than the kept seconds are dropped, so at most
-// keptSteps / snapshotSteps + 2 snapshots and keptSteps + snapshotSteps inputs are held;
-// bytesUsed() says what they cost.
+// Memory is bounded for snapshots: those older than the kept seconds are dropped, so at most
+// keptSteps / snapshotSteps + 2 snapshots and keptSteps + snapshotSteps inputs are held. A
+// level rebuilt instead keeps one input row per step whose input changed (as --record does).
+// bytesUsed() says what either costs.
 #pragma once
 
 #include "hitbox/app/Loop.h"
 #include "hitbox/app/Replay.h"
 #include "hitbox/app/ReplayLevel.h"
+#include "hitbox/app/RewindReplay.h"
 
 #include <cstddef>
 #include <deque>
 #include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace hitbox
 {
@@ -34,12 +42,27 @@ class RewindLevel : public WrappedLevel
 public:
     RewindLevel(Level& inner, long long keptSteps = rewindSteps,
                 long long snapshotSteps = rewindSnapshotSteps);
+    // As above; when `inner` cannot save its state, `remake` builds it again for showing an
+    // earlier step (RewindReplay.h). It must build the level exactly as `inner` was built.
+    RewindLevel(Level& inner, LevelMaker remake, long long keptSteps = rewindSteps,
+                long long snapshotSteps = rewindSnapshotSteps);
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
+    // Drawn and described: the step shown (a rebuilt level's, while looking back).
+    void render(sf::RenderTarget& target) const override;
+    void renderBlended(sf::RenderTarget& target, float leftover) const override;
+    void renderDebug(DebugRenderer& debug) const override;
+    // (the help line too: many levels show their state in it)
+    [[nodiscard]] std::string getHelpText() const override;
+    [[nodiscard]] std::string describeState() const override;
+    [[nodiscard]] std::vector<PairEvent> getContactEvents() const override;
 
-    // False when the level cannot be saved (Level::saveState gave nullptr): nothing to go to.
-    [[nodiscard]] bool canRewind() const { return !snapshots.empty(); }
+    // False when the level can neither be saved (Level::saveState gave nullptr) nor rebuilt
+    // (no LevelMaker): nothing to go to.
+    [[nodiscard]] bool canRewind() const { return !snapshots.empty() || replayed != nullptr; }
+    // True when an earlier step is shown by a rebuilt level (RewindReplay.h).
+    [[nodiscard]] bool rebuilds() const { return replayed != nullptr; }
     // The earliest step that can be shown, the newest (the live one) and the one shown now.
     [[nodiscard]] long long oldestStep() const;
     [[nodiscard]] long long newestStep() const { return step; }
@@ -48,6 +71,11 @@ public:
     long long show(long long wanted);
     // The bytes the snapshots and the inputs hold now.
     [[nodiscard]] std::size_t bytesUsed() const;
+    // Steps re-simulated to show earlier steps so far (what looking back has cost).
+    [[nodiscard]] long long stepsReplayed() const;
+
+    // The level the shown step is in: the wrapped one, or a rebuilt one while looking back.
+    [[nodiscard]] const Level& shownLevel() const;
 
 private:
     void snapshot();
@@ -58,6 +86,9 @@ private:
     std::deque<InputSnapshot> inputs; // inputs[i] is the input of step firstInput + i
     long long firstInput = 0;
     long long shown = 0;
+    long long resimulated = 0;
+    std::unique_ptr<ReplayedRun> replayed; // set when the level is rebuilt, not restored
+    const Level* rebuilt = nullptr;        // the rebuilt level shown, while looking back
 };
 
 } // namespace hitbox

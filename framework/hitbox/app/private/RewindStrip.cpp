@@ -29,21 +29,21 @@ void drawRewindStrip(sf::RenderTarget& target, sf::Vector2f world, const RewindT
                       {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, marks);
 }
 
-void rewindByKey(RewindLevel& rewind, sf::Keyboard::Key key)
+long long stepForKey(long long from, sf::Keyboard::Key key)
 {
     if (key == sf::Keyboard::Key::Left)
-        rewind.show(rewind.shownStep() - 1);
-    else if (key == sf::Keyboard::Key::Right)
-        rewind.show(rewind.shownStep() + 1);
+        return from - 1;
+    if (key == sf::Keyboard::Key::Right)
+        return from + 1;
+    return from;
 }
 
-void rewindByClick(RewindLevel& rewind, sf::Vector2f world, sf::Vector2f at)
+long long stepForClick(const RewindLevel& rewind, sf::Vector2f world, sf::Vector2f at)
 {
     const Box area = stripArea(world);
     if (at.y < area.top || at.y > area.top + area.height)
-        return;
-    rewind.show(
-        stripStepAt(area, {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, at.x));
+        return -1;
+    return stripStepAt(area, {rewind.oldestStep(), rewind.newestStep(), rewind.shownStep()}, at.x);
 }
 
 } // namespace hitbox

@@ -26,9 +26,12 @@ struct RewindTools
 [[nodiscard]] bool canRewind(const RewindTools& tools, bool paused);
 // The kept steps, the enters and exits among them (Stay events are left out), the step shown.
 void drawRewindStrip(sf::RenderTarget& target, sf::Vector2f world, const RewindTools& tools);
-// Left and Right step back and forward through the kept steps; other keys do nothing.
-void rewindByKey(RewindLevel& rewind, sf::Keyboard::Key key);
-// A click at world point `at` on the strip shows the step under it; off the strip, nothing.
-void rewindByClick(RewindLevel& rewind, sf::Vector2f world, sf::Vector2f at);
+// The step Left (one back) and Right (one forward) ask for from step `from`; other keys: `from`.
+// The window shows what a frame's presses asked for once, after them (a level rebuilt to show
+// a step, RewindReplay.h, is then re-simulated once a frame, not once a key repeat).
+[[nodiscard]] long long stepForKey(long long from, sf::Keyboard::Key key);
+// The step under world point `at` on the strip; -1 when `at` is off the strip.
+[[nodiscard]] long long stepForClick(const RewindLevel& rewind, sf::Vector2f world,
+                                     sf::Vector2f at);
 
 } // namespace hitbox

@@ -97,6 +97,9 @@ public:
                 rewindByClick(mousePixel); // where the last move left the pointer
         }
         settings.paused = pausedByKey || pausedByFocus;
+        if (wantedStep >= 0 && canRewind(settings.rewind, settings.paused))
+            settings.rewind.rewind->show(wantedStep);
+        wantedStep = -1;
         // Recomputed every frame, so the mouse is right after a resize or a view change.
         input.setMousePosition(
             window.mapPixelToCoords(mousePixel, worldView(level, window.getSize())));
@@ -117,7 +120,10 @@ public:
             // --pause-at-step N: run up to step N exactly, then pause there.
             steps = static_cast<int>(std::min<long long>(steps, pauseAtStep - stepsRun));
             if (stepsRun + steps == pauseAtStep)
+            {
                 pausedByKey = settings.paused = true;
+                pauseAtStep = -1; // once: P then resumes (it had paused again at once)
+            }
         }
         stepsRun += steps;
         return steps;
@@ -133,19 +139,26 @@ public:
     }
 
 private:
-    // Paused: Left/Right and a click on the strip choose the step shown (RewindStrip.h).
+    // Paused: Left/Right and a click on the strip choose the step shown (RewindStrip.h); it
+    // is shown once, after the frame's events.
     void rewindByKey(sf::Keyboard::Key key)
     {
-        if (canRewind(settings.rewind, settings.paused))
-            hitbox::rewindByKey(*settings.rewind.rewind, key);
+        if (!canRewind(settings.rewind, settings.paused))
+            return;
+        const RewindLevel& rewind = *settings.rewind.rewind;
+        const long long from = wantedStep >= 0 ? wantedStep : rewind.shownStep();
+        wantedStep = std::clamp(stepForKey(from, key), rewind.oldestStep(), rewind.newestStep());
     }
 
     void rewindByClick(sf::Vector2i pixel)
     {
-        if (canRewind(settings.rewind, settings.paused))
-            hitbox::rewindByClick(
-                *settings.rewind.rewind, level.getWorldSize(),
-                window.mapPixelToCoords(pixel, worldView(level, window.getSize())));
+        if (!canRewind(settings.rewind, settings.paused))
+            return;
+        const long long at =
+            stepForClick(*settings.rewind.rewind, level.getWorldSize(),
+                         window.mapPixelToCoords(pixel, worldView(level, window.getSize())));
+        if (at >= 0)
+            wantedStep = at;
     }
 
     void actOnSharedKey(const SharedKey* shared)
@@ -181,6 +194,7 @@ private:
     bool pausedByFocus = false;
     bool stepOnce = false;
     sf::Vector2i mousePixel;
+    long long wantedStep = -1; // the step this frame's rewind keys and clicks ask for
     sf::Clock frameClock;
     FrameRate frameRate;
     long long stepsLeft;
