@@ -256,3 +256,30 @@ TEST(Rewind, ARebuiltLevelKeepsOnlyTheInputRowsThatChanged)
     }
     EXPECT_GE(rewind.bytesUsed(), steady + 100 * sizeof(hitbox::InputSnapshot));
 }
+
+TEST(Rewind, ARebuiltLevelStopsRewindingAtItsMemoryBound)
+{
+    UnsavedPushLevel live;
+    const long long bound = 600;
+    hitbox::RewindLevel rewind(
+        live, [] { return std::make_unique<UnsavedPushLevel>(); }, hitbox::rewindSteps,
+        hitbox::rewindSnapshotSteps, bound);
+    hitbox::Input input;
+    for (long long i = 0; i < bound; ++i)
+    {
+        input.setMousePosition({static_cast<float>(i), 0.f}); // a new row every step
+        liveStep(rewind, input);
+    }
+    ASSERT_TRUE(rewind.canRewind()) << "within the bound, the rebuilt level rewinds";
+    EXPECT_EQ(rewind.show(bound - 10), bound - 10);
+    const std::size_t atBound = rewind.bytesUsed();
+    for (long long i = 0; i < 2 * bound; ++i)
+    {
+        input.setMousePosition({static_cast<float>(i), 1.f});
+        liveStep(rewind, input);
+    }
+    EXPECT_FALSE(rewind.canRewind()) << "past the bound, the input rows are let go";
+    EXPECT_LT(rewind.bytesUsed(), atBound);
+    EXPECT_EQ(rewind.show(10), rewind.newestStep()) << "nothing earlier is shown";
+    EXPECT_EQ(shownBits(rewind), live.bits());
+}

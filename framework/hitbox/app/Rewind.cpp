@@ -16,9 +16,10 @@ RewindLevel::RewindLevel(Level& inner, long long keptSteps, long long snapshotSt
 }
 
 RewindLevel::RewindLevel(Level& inner, LevelMaker remake, long long keptSteps,
-                         long long snapshotSteps)
+                         long long snapshotSteps, long long rebuildSteps)
     : RewindLevel(inner, keptSteps, snapshotSteps)
 {
+    this->rebuildSteps = rebuildSteps;
     if (snapshots.empty() && remake)
         replayed = std::make_unique<ReplayedRun>(std::move(remake));
 }
@@ -33,6 +34,11 @@ void RewindLevel::snapshot()
 void RewindLevel::handleInput(const Input& input, float dt)
 {
     show(step); // a live step starts from the newest state, never from a rewound one
+    if (replayed && step >= rebuildSteps)
+    {
+        replayed.reset(); // the memory bound (rewindRebuildSteps): no rewind from here on
+        rebuilt = nullptr;
+    }
     if (replayed)
         replayed->addStep(captureInput(input));
     else if (canRewind())

@@ -11,9 +11,10 @@
 // Rewinding only looks back: the next live step first returns to the newest step, so the run
 // goes on exactly as it would have (and --record and --timeline see one unbroken run).
 //
-// Memory is bounded for snapshots: those older than the kept seconds are dropped, so at most
+// Memory is bounded: snapshots older than the kept seconds are dropped, so at most
 // keptSteps / snapshotSteps + 2 snapshots and keptSteps + snapshotSteps inputs are held. A
-// level rebuilt instead keeps one input row per step whose input changed (as --record does).
+// level rebuilt instead keeps one input row per step whose input changed (as --record does),
+// for the first rebuildSteps steps only; after those, it can no longer be rewound.
 // bytesUsed() says what either costs.
 #pragma once
 
@@ -36,6 +37,11 @@ namespace hitbox
 constexpr long long rewindSteps = 10 * static_cast<long long>(stepsPerSecond);
 // A snapshot every quarter second: going back one step re-simulates at most 29 steps.
 constexpr long long rewindSnapshotSteps = 30;
+// A level rebuilt to be shown (RewindReplay.h) is re-simulated from step 0 and needs every
+// input row since then, so its rewind stops after the first 10 simulated minutes: at most
+// 72,000 rows (about 7 MiB with the mouse moving every step) and about a second of CPU a key
+// press in a debug build (docs/debugging.md has the figures).
+constexpr long long rewindRebuildSteps = 10 * 60 * static_cast<long long>(stepsPerSecond);
 
 class RewindLevel : public WrappedLevel
 {
@@ -45,7 +51,8 @@ public:
     // As above; when `inner` cannot save its state, `remake` builds it again for showing an
     // earlier step (RewindReplay.h). It must build the level exactly as `inner` was built.
     RewindLevel(Level& inner, LevelMaker remake, long long keptSteps = rewindSteps,
-                long long snapshotSteps = rewindSnapshotSteps);
+                long long snapshotSteps = rewindSnapshotSteps,
+                long long rebuildSteps = rewindRebuildSteps);
 
     void handleInput(const Input& input, float dt) override;
     void update(float dt) override;
@@ -59,7 +66,7 @@ public:
     [[nodiscard]] std::vector<PairEvent> getContactEvents() const override;
 
     // False when the level can neither be saved (Level::saveState gave nullptr) nor rebuilt
-    // (no LevelMaker): nothing to go to.
+    // (no LevelMaker, or the run is past rebuildSteps): nothing to go to.
     [[nodiscard]] bool canRewind() const { return !snapshots.empty() || replayed != nullptr; }
     // True when an earlier step is shown by a rebuilt level (RewindReplay.h).
     [[nodiscard]] bool rebuilds() const { return replayed != nullptr; }
@@ -82,6 +89,7 @@ private:
 
     long long keptSteps;
     long long snapshotSteps;
+    long long rebuildSteps = rewindRebuildSteps;
     std::deque<std::pair<long long, std::unique_ptr<LevelState>>> snapshots; // (step, state)
     std::deque<InputSnapshot> inputs; // inputs[i] is the input of step firstInput + i
     long long firstInput = 0;
