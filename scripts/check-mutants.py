@@ -37,6 +37,7 @@ import argparse
 import csv
 import io
 import json
+import math
 import os
 import random
 import re
@@ -210,8 +211,12 @@ class LabRig:
         return results
 
 
-def run(command, timeout, cwd=None):
-    """Runs a command in its own process group; on a timeout the whole group is killed."""
+def run(command, timeout, cwd=None, cpu_seconds=0):
+    """Runs a command in its own process group; on a timeout the whole group is killed.
+    With cpu_seconds, the process is also stopped after that much CPU time (SIGXCPU, set by
+    prlimit: mutants are graded from threads, where a preexec_fn is not safe)."""
+    if cpu_seconds:
+        command = ["prlimit", f"--cpu={cpu_seconds}:{cpu_seconds + 1}", "--", *command]
     with subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           start_new_session=True, text=True, errors="replace") as process:
         try:
@@ -227,9 +232,16 @@ def run(command, timeout, cwd=None):
 
 
 def run_one_test(program, name, timeout):
+    # CPU time decides, as in grading (scripts/labtool/limits.py): CI's other stages running
+    # beside this one must not turn a correct test of another task into a "timeout" (which
+    # would read as collateral). The wall-clock guard only catches a test that waits.
+    cpu = max(1, math.ceil(timeout))
     try:
-        result = run([str(program), f"--gtest_filter={name}", "--gtest_color=no"], timeout)
+        result = run([str(program), f"--gtest_filter={name}", "--gtest_color=no"], 3 * timeout,
+                     cpu_seconds=cpu)
     except subprocess.TimeoutExpired:
+        return "timeout"
+    if result.returncode in (-signal.SIGXCPU, -signal.SIGKILL):
         return "timeout"
     if result.returncode == 0 and "[  PASSED  ] 1 test" in result.stdout:
         return "pass"

@@ -68,7 +68,7 @@ def run_test(program, test, work, slot=None, threaded=False):
     else:
         command = [str(program), *arguments]
     try:
-        outcome = procs.run_limited(command, output, limits.TEST_SECONDS + (2 if slot is not None else 0),
+        outcome = procs.run_limited(command, output, limits.TEST_WALL_SECONDS + (2 if slot is not None else 0),
                                     cwd=report_dir, env=test_environment(), memory=limits.TEST_MEMORY,
                                     file_bytes=limits.OUTPUT_BYTES, cpu_seconds=limits.TEST_SECONDS,
                                     set_limits_here=slot is None and not threaded)
@@ -86,7 +86,8 @@ def run_test(program, test, work, slot=None, threaded=False):
 def judge(test, outcome, report):
     """The verdict on one finished test process (and all it started: already gone)."""
     result = TestResult(test, False, "", seconds=outcome.seconds)
-    stopped = procs.why_stopped(outcome, limits.TEST_SECONDS, limits.OUTPUT_BYTES)
+    stopped = procs.why_stopped(outcome, limits.TEST_SECONDS, limits.OUTPUT_BYTES,
+                                wall_seconds=limits.TEST_WALL_SECONDS)
     if stopped:
         result.reason, result.message = stopped, tail(outcome.output)
         return result

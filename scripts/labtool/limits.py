@@ -4,9 +4,13 @@ The self-check (lab.py grade) and class grading (lab.py grade-class, Gradescope,
 Classroom) use the same ones, so "passed" means the same everywhere.
 """
 
-# One test process: wall-clock and CPU seconds. Every grading test is bounded by step counts
-# and takes well under a second on the solution and on the starter; this is the last resort.
+# One test process: CPU seconds. Every grading test is bounded by step counts and takes well
+# under a second on the solution and on the starter; this is the last resort.
 TEST_SECONDS = 5
+# ...and its wall-clock guard. As for a compile, CPU time decides, so a machine busy grading
+# a class (or CI's other stages) cannot turn a slow-but-correct test into "took too long" on
+# one run and "passed" on the next; the guard only catches a test that waits (sleep, a read).
+TEST_WALL_SECONDS = 3 * TEST_SECONDS
 # One test process's address space (bytes): a test needs a few MB.
 TEST_MEMORY = 1024 * 1024 * 1024
 # Bytes one test process may print (stdout and stderr together) or write to any one file.

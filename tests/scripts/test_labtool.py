@@ -33,6 +33,22 @@ class TimeLimitReason(unittest.TestCase):
         early = procs.Outcome(status=-9, seconds=0.4, timed_out=False, output="", output_bytes=0)
         self.assertEqual(procs.why_stopped(early, 5, 1_000_000), "crashed: SIGKILL")
 
+    def test_a_test_is_judged_by_its_cpu_time_not_by_how_busy_the_machine_is(self):
+        from labtool import limits, procs
+        cpu, wall = limits.TEST_SECONDS, limits.TEST_WALL_SECONDS
+        self.assertGreater(wall, cpu)
+        # 6 s of wall-clock time on a busy machine, not stopped: nothing to report.
+        slow = procs.Outcome(status=0, seconds=cpu + 1, timed_out=False, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(slow, cpu, 1_000_000, wall_seconds=wall), "")
+        # Killed by the CPU limit: says so, however long it took on the clock.
+        cpu_killed = procs.Outcome(status=-9, seconds=cpu + 3, timed_out=False, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(cpu_killed, cpu, 1_000_000, wall_seconds=wall),
+                         f"the test used more than {cpu:g} s of CPU time")
+        # A test that waits is caught by the guard.
+        waited = procs.Outcome(status=-9, seconds=wall, timed_out=True, output="", output_bytes=0)
+        self.assertEqual(procs.why_stopped(waited, cpu, 1_000_000, wall_seconds=wall),
+                         f"the test took longer than {wall:g} s (an endless loop?)")
+
     def test_a_compile_is_judged_by_its_cpu_time_not_by_how_busy_the_machine_is(self):
         from labtool import limits, procs
         cpu, wall = limits.COMPILE_SECONDS, limits.COMPILE_WALL_SECONDS
