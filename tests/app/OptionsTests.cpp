@@ -164,3 +164,13 @@ TEST(OptionsPrintable, ControlBytesAreEscapedAndLongTextIsCut)
               "a\\r\\0\\xEF\\xBB\\xBF\\\\");
     EXPECT_EQ(hitbox::printable(std::string(100, 'x'), 5), "xxxxx...");
 }
+
+// A --screenshot picture is drawn for a document and compared run against run (the slides'
+// figures): it must leave out timings. A window run (F12 saves it) and a headless run do not.
+TEST(OptionsRepeatablePicture, OnlyAScreenshotRunAsksForOne)
+{
+    EXPECT_TRUE(
+        parseCommandLine({"--screenshot", "shot.png", "--frames", "60"}, {}).repeatablePicture());
+    EXPECT_FALSE(parseCommandLine({"--frames", "60"}, {}).repeatablePicture());
+    EXPECT_FALSE(parseCommandLine({"--headless", "--frames", "60"}, {}).repeatablePicture());
+}
