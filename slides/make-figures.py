@@ -41,8 +41,17 @@ FONT_FILE = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 SLIDE_W, SLIDE_H = 1168, 520
 LABEL_PX = 28  # the smallest label size on the slide
 ZOOMS = (1, 2)  # an animation still's frames: drawn as they are, or each pixel doubled (check-stills.sh)
-STEPS_PER_SECOND = 120  # a fixed step is 1/120 s (the frame labels show the time)
+LOOP_H = os.path.join(HERE, "..", "framework", "hitbox", "app", "Loop.h")
 FFMPEG = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
+
+
+def steps_per_second():
+    """The fixed step rate (the frame labels show the time), read from its one home, Loop.h."""
+    with open(LOOP_H, encoding="utf-8") as header:
+        found = re.search(r"constexpr float stepsPerSecond = ([0-9.]+)f;", header.read())
+    if not found:
+        sys.exit(f"make-figures: {LOOP_H} has no line 'constexpr float stepsPerSecond = N.f;'")
+    return float(found.group(1))
 
 
 def run_logged(command, log):
@@ -142,7 +151,7 @@ def strip(folder, still, log, steps):
     for i, pick in enumerate(picks):
         label = os.path.join(folder, f"label-{i}.txt")
         with open(label, "w", encoding="utf-8") as text:
-            text.write(f"{i + 1}   t = {steps[pick] / STEPS_PER_SECOND:.2f} s")
+            text.write(f"{i + 1}   t = {steps[pick] / steps_per_second():.2f} s")
         inputs += ["-i", os.path.join(folder, f"{pick:03d}.png")]
         graph += (f"[{i}:v]format=rgb24,scale={w}:{h}:flags=neighbor,pad={w}:{h + band}:0:{band}:white,drawtext=fontfile={FONT_FILE}:"
                   f"textfile={label}:fontsize={font}:fontcolor=black:x=(w-text_w)/2:y=({band}-text_h)/2[p{i}];")

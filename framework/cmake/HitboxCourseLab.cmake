@@ -75,6 +75,39 @@ function(hitbox_find_course_lab_generation lab_folder)
     endif()
 endfunction()
 
+# Sets `out_var` to the files a Visual Studio project compiles: its <ClCompile Include="..."/>
+# items in order, backslashes made slashes, as Visual Studio reads them: an item inside an
+# XML comment is not one, and an item excluded from the build (<ExcludedFromBuild> true for
+# every configuration, or for a Debug one, which is what students build) is left out.
+# CMake has no XML reader and students build course labs with no Python, so the project's
+# few elements are read here; tests/course/CMakeLists.txt checks it on tests/support/vcxproj/.
+function(hitbox_read_project_sources out_var project)
+    file(READ "${project}" text)
+    string(REGEX REPLACE "<!--([^-]|-[^-])*-->" "" text "${text}") # XML allows no -- inside
+    set(sources "")
+    set(item_regex "<ClCompile[ \t\r\n]+Include=\"([^\"]+)\"[^>]*>")
+    string(REGEX MATCH "${item_regex}" item "${text}")
+    while(item)
+        set(listed "${CMAKE_MATCH_1}")
+        string(FIND "${text}" "${item}" start)
+        string(LENGTH "${item}" item_length)
+        math(EXPR after "${start} + ${item_length}")
+        string(SUBSTRING "${text}" ${after} -1 text)
+        set(body "")
+        if(NOT item MATCHES "/>$") # <ClCompile ...> ... </ClCompile>: its settings
+            string(FIND "${text}" "</ClCompile>" body_end)
+            string(SUBSTRING "${text}" 0 ${body_end} body)
+        endif()
+        string(REPLACE "&amp;" "&" listed "${listed}")
+        string(REPLACE "\\" "/" listed "${listed}")
+        if(NOT body MATCHES "<ExcludedFromBuild( Condition=\"[^\"]*Debug[^\"]*\")?>[ \t]*true")
+            list(APPEND sources "${listed}")
+        endif()
+        string(REGEX MATCH "${item_regex}" item "${text}")
+    endwhile()
+    set(${out_var} "${sources}" PARENT_SCOPE)
+endfunction()
+
 # Finds, ignoring letter case, the file of `files` (relative paths) that `wanted` names.
 function(hitbox_find_ignoring_case out_var wanted files)
     string(TOLOWER "${wanted}" wanted)
@@ -117,6 +150,91 @@ function(hitbox_report_unlisted_sources lab_folder project_name lab_files compil
     endforeach()
 endfunction()
 
+# Sets `out_files` to the lab's files to compile (relative paths): the Visual Studio project's
+# ClCompile list when the folder has a project, else every .cpp; `out_from` says which.
+function(hitbox_course_lab_compiled_files out_files out_from lab_folder lab_files)
+    file(GLOB projects "${lab_folder}/*.vcxproj")
+    set(compiled_files "")
+    if(projects)
+        list(GET projects 0 project)
+        hitbox_read_project_sources(listed_sources "${project}")
+        foreach(listed IN LISTS listed_sources)
+            hitbox_find_ignoring_case(found "${listed}" "${lab_files}")
+            if(found)
+                list(APPEND compiled_files "${found}")
+            elseif(NOT listed MATCHES "^Framework/")
+                message(WARNING "${project} compiles ${listed}, which is not in the lab folder")
+            endif()
+        endforeach()
+        get_filename_component(project_name "${project}" NAME)
+        set(compiled_from "the ClCompile list of ${project_name}")
+        hitbox_report_unlisted_sources("${lab_folder}" "${project_name}" "${lab_files}" "${compiled_files}")
+    else()
+        set(compiled_files ${lab_files})
+        list(FILTER compiled_files INCLUDE REGEX "\\.cpp$")
+        set(compiled_from "every .cpp (no .vcxproj)")
+    endif()
+    set(${out_files} "${compiled_files}" PARENT_SCOPE)
+    set(${out_from} "${compiled_from}" PARENT_SCOPE)
+    if(NOT compiled_files)
+        message(FATAL_ERROR
+            "HITBOX_COURSE_LAB_DIR: no .cpp files to compile in ${lab_folder} (outside "
+            "Framework/ and SFML/). Give the lab folder that holds Main.cpp.")
+    endif()
+endfunction()
+
+# The course's classes in Hitbox for one lab (library hitbox_course2025 or hitbox_course_compat,
+# linked into course_lab), compiled against the lab's own GameState.h (and any edited header
+# it chose to build) in the overlay folder; a class the lab brings its own .cpp for is not
+# compiled from Hitbox's. Reads what hitbox_use_course_lab_framework set in the caller
+# (COURSE_LAB_OVERLAY, COURSE_LAB_OWN_CLASSES).
+function(hitbox_add_course_classes generation compat_folder)
+    if(generation EQUAL 2025)
+        file(GLOB compat_sources CONFIGURE_DEPENDS "${compat_folder}/Framework/*.cpp")
+        set(library hitbox_course2025)
+    else()
+        set(compat_sources "")
+        foreach(class_name AudioManager MusicObject SoundObject TileMap GameState)
+            list(APPEND compat_sources "${compat_folder}/Framework/${class_name}.cpp")
+        endforeach()
+        set(library hitbox_course_compat)
+    endif()
+    foreach(class_name IN LISTS COURSE_LAB_OWN_CLASSES)
+        list(REMOVE_ITEM compat_sources "${compat_folder}/Framework/${class_name}.cpp")
+    endforeach()
+    if(generation EQUAL 2025)
+        # Built on Hitbox's object layer (GameObject, Animation; Hitbox's own classes are in
+        # namespace hitbox, so the course's names are free). A lab's own Animation.cpp is
+        # linked before the layer's, which is then never pulled in.
+        add_library(${library} STATIC ${compat_sources})
+        target_link_libraries(${library} PUBLIC hitbox_objects)
+    else()
+        add_library(${library} STATIC ${compat_sources})
+        target_link_libraries(${library} PUBLIC hitbox_course_2019)
+        # Before main(): with no sound device, OpenAL Soft's silent driver and one line
+        # instead of an error for every sound (SFML 2 only: SFML 3 says it once itself).
+        # An object library: its objects are always linked, so its initializer runs.
+        add_library(hitbox_course_silent_audio OBJECT
+            "${PROJECT_SOURCE_DIR}/framework/compat/SilentAudio.cpp")
+        hitbox_warnings(hitbox_course_silent_audio)
+        target_link_libraries(hitbox_course_silent_audio PRIVATE hitbox_platform)
+        target_link_libraries(course_lab PRIVATE hitbox_course_silent_audio)
+    endif()
+    target_include_directories(${library} BEFORE PUBLIC "${COURSE_LAB_OVERLAY}" "${compat_folder}")
+    hitbox_warnings(${library})
+    if(NOT MSVC)
+        # The lab's own headers in the overlay may carry MSVC's #pragma warning lines.
+        target_compile_options(${library} PRIVATE -Wno-unknown-pragmas)
+    endif()
+    target_link_libraries(course_lab PRIVATE ${library})
+    # The course's own files include their neighbours without the folder ("GameObject.h"
+    # in Framework/TileMap.h): when the lab builds some of them, Hitbox's neighbours are
+    # found that way too, last.
+    if(HITBOX_COURSE_LAB_OWN_FRAMEWORK)
+        target_include_directories(${library} PUBLIC "${compat_folder}/Framework")
+    endif()
+endfunction()
+
 function(hitbox_add_course_lab lab_folder)
     get_filename_component(lab_folder "${lab_folder}" ABSOLUTE BASE_DIR "${CMAKE_SOURCE_DIR}")
     if(NOT IS_DIRECTORY "${lab_folder}")
@@ -154,35 +272,7 @@ function(hitbox_add_course_lab lab_folder)
     list(REMOVE_ITEM lab_files ${COURSE_LAB_OWN_HEADERS})
 
     # What to compile: the Visual Studio project's ClCompile list when there is a project.
-    file(GLOB projects "${lab_folder}/*.vcxproj")
-    set(compiled_files "")
-    if(projects)
-        list(GET projects 0 project)
-        file(READ "${project}" project_text)
-        string(REGEX MATCHALL "<ClCompile[ \t\r\n]+Include=\"[^\"]+\"" entries "${project_text}")
-        foreach(entry IN LISTS entries)
-            string(REGEX REPLACE "^.*Include=\"([^\"]+)\"$" "\\1" listed "${entry}")
-            string(REPLACE "\\" "/" listed "${listed}")
-            hitbox_find_ignoring_case(found "${listed}" "${lab_files}")
-            if(found)
-                list(APPEND compiled_files "${found}")
-            elseif(NOT listed MATCHES "^Framework/")
-                message(WARNING "${project} compiles ${listed}, which is not in the lab folder")
-            endif()
-        endforeach()
-        get_filename_component(project_name "${project}" NAME)
-        set(compiled_from "the ClCompile list of ${project_name}")
-        hitbox_report_unlisted_sources("${lab_folder}" "${project_name}" "${lab_files}" "${compiled_files}")
-    else()
-        set(compiled_files ${lab_files})
-        list(FILTER compiled_files INCLUDE REGEX "\\.cpp$")
-        set(compiled_from "every .cpp (no .vcxproj)")
-    endif()
-    if(NOT compiled_files)
-        message(FATAL_ERROR
-            "HITBOX_COURSE_LAB_DIR: no .cpp files to compile in ${lab_folder} (outside "
-            "Framework/ and SFML/). Give the lab folder that holds Main.cpp.")
-    endif()
+    hitbox_course_lab_compiled_files(compiled_files compiled_from "${lab_folder}" "${lab_files}")
 
     # Copy (and convert) each file into the build tree, keeping the folder's layout so that
     # the lab's own includes ("Level.h", "Objects/Ball.h") still find each other.
@@ -241,57 +331,11 @@ function(hitbox_add_course_lab lab_folder)
     # never with -Werror, whatever HITBOX_WARNINGS_AS_ERRORS says. Still /utf-8 and the DLLs.
     hitbox_portable_settings(course_lab)
 
-    # The course's classes in Hitbox, compiled against the lab's own GameState.h (and any
-    # edited header it chose to build) in the overlay folder; a class the lab brings its own
-    # .cpp for is not compiled from Hitbox's.
-    if(generation EQUAL 2025)
-        file(GLOB compat_sources CONFIGURE_DEPENDS "${compat_folder}/Framework/*.cpp")
-        set(library hitbox_course2025)
-    else()
-        set(compat_sources "")
-        foreach(class_name AudioManager MusicObject SoundObject TileMap GameState)
-            list(APPEND compat_sources "${compat_folder}/Framework/${class_name}.cpp")
-        endforeach()
-        set(library hitbox_course_compat)
-    endif()
-    foreach(class_name IN LISTS COURSE_LAB_OWN_CLASSES)
-        list(REMOVE_ITEM compat_sources "${compat_folder}/Framework/${class_name}.cpp")
-    endforeach()
-    if(generation EQUAL 2025)
-        # Built on Hitbox's object layer (GameObject, Animation; Hitbox's own classes are in
-        # namespace hitbox, so the course's names are free). A lab's own Animation.cpp is
-        # linked before the layer's, which is then never pulled in.
-        add_library(${library} STATIC ${compat_sources})
-        target_link_libraries(${library} PUBLIC hitbox_objects)
-    else()
-        add_library(${library} STATIC ${compat_sources})
-        target_link_libraries(${library} PUBLIC hitbox_course_2019)
-        # Before main(): with no sound device, OpenAL Soft's silent driver and one line
-        # instead of an error for every sound (SFML 2 only: SFML 3 says it once itself).
-        # An object library: its objects are always linked, so its initializer runs.
-        add_library(hitbox_course_silent_audio OBJECT
-            "${PROJECT_SOURCE_DIR}/framework/compat/SilentAudio.cpp")
-        hitbox_warnings(hitbox_course_silent_audio)
-        target_link_libraries(hitbox_course_silent_audio PRIVATE hitbox_platform)
-        target_link_libraries(course_lab PRIVATE hitbox_course_silent_audio)
-    endif()
-    target_include_directories(${library} BEFORE PUBLIC "${COURSE_LAB_OVERLAY}" "${compat_folder}")
-    hitbox_warnings(${library})
-    if(NOT MSVC)
-        # The lab's own headers in the overlay may carry MSVC's #pragma warning lines.
-        target_compile_options(${library} PRIVATE -Wno-unknown-pragmas)
-    endif()
-    target_link_libraries(course_lab PRIVATE ${library})
+    hitbox_add_course_classes(${generation} "${compat_folder}")
     # The lab's converted copies first (its own includes: "Level.h"), then the overlay (its
     # GameState.h), then Hitbox's "Framework/X.h" headers. The original folder is
     # deliberately not on the path.
     target_include_directories(course_lab BEFORE PRIVATE "${copy_folder}" "${COURSE_LAB_OVERLAY}" "${compat_folder}")
-    # The course's own files include their neighbours without the folder ("GameObject.h"
-    # in Framework/TileMap.h): when the lab builds some of them, Hitbox's neighbours are
-    # found that way too, last.
-    if(HITBOX_COURSE_LAB_OWN_FRAMEWORK)
-        target_include_directories(${library} PUBLIC "${compat_folder}/Framework")
-    endif()
 
     # The folder the program runs from: the lab's assets, letter case forgiven.
     set(run_folder "${CMAKE_CURRENT_BINARY_DIR}/course_lab_run")
@@ -320,6 +364,13 @@ endfunction()
 if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_GENERATION_OF)
     hitbox_find_course_lab_generation("${HITBOX_PRINT_GENERATION_OF}")
     execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${HITBOX_COURSE_LAB_GENERATION}")
+endif()
+# Script mode, for the tests: the files a .vcxproj compiles, one a line.
+#   cmake -DHITBOX_PRINT_PROJECT_SOURCES_OF=<project.vcxproj> -P HitboxCourseLab.cmake
+if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_PROJECT_SOURCES_OF)
+    hitbox_read_project_sources(listed "${HITBOX_PRINT_PROJECT_SOURCES_OF}")
+    string(REPLACE ";" "\n" lines "${listed}")
+    execute_process(COMMAND "${CMAKE_COMMAND}" -E echo "${lines}")
 endif()
 # Script mode, for tests/course/write_framework_hashes.py: the Framework/ files whose lab
 # copy is always used, one a line.

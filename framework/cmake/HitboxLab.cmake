@@ -31,8 +31,8 @@
 # "labs/LabTesting.h" (EXPECT_VEC_NEAR). scripts/check-exercises.sh checks that each task
 # has a test (suite Task<n>...) that fails on the exercise.
 #
-# In a student handout (scripts/make-handout.sh writes framework/cmake/HitboxHandout.cmake,
-# which sets HITBOX_HANDOUT) the lab folders already hold the exercise, so there is only one
+# In a student handout (scripts/make-handout.sh copies scripts/labtool/handout/HitboxHandout.cmake
+# into framework/cmake/; it sets HITBOX_HANDOUT) the lab folders already hold the exercise, so there is only one
 # version: <lab>_level, <lab> and <lab>_tests build and test the student's own code.
 #
 # THE LAB FORMAT (what a new lab needs for the build, the handout and the class grader):

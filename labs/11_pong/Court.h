@@ -4,7 +4,7 @@
 // any of them and the tests still check the same behaviour. Pixels and seconds.
 #pragma once
 
-#include "hitbox/app/Level.h" // hitbox::defaultWorldSize: the world, 1200 x 675
+#include "hitbox/app/Level.h" // hitbox::defaultWorldSize: the size of the world
 
 // The court: the ball and the paddles stay between `top` and `bottom` (the walls); `left`
 // and `right` are the goal lines. Touching an edge is inside (Hitbox's edge rule: touching

@@ -210,11 +210,12 @@ void WorldLevel::renderDebug(hitbox::DebugRenderer& debug) const
                 return true;
         return false;
     };
-    for (const std::unique_ptr<Coin>& coin : coins)
-        debug.objectCircle(*coin, collided(*coin));
-    for (const std::unique_ptr<Enemy>& enemy : enemies)
-        debug.objectBox(*enemy, collided(*enemy));
-    debug.objectBox(*player, collided(*player));
+    // Each object as the shape the World tests it as (its ShapeTable row's outline).
+    for (const hitbox::GameObject* object : objects)
+        debug.objectShape(*object, world.getShape(*object),
+                          collided(*object) ? hitbox::DebugState::Overlapping
+                                            : hitbox::DebugState::Free,
+                          world.getShapes());
 }
 
 // The keys, then the score and what the last step's collision check cost (redrawn every

@@ -213,7 +213,7 @@ void DepotLevel::renderDebug(hitbox::DebugRenderer& debug) const
             else if (touching(box, otherBox) && state == hitbox::DebugState::Free)
                 state = hitbox::DebugState::Touching;
         }
-        debug.objectBox(*object, state);
+        debug.objectShape(*object, world.getShape(*object), state, world.getShapes());
     }
 }
 

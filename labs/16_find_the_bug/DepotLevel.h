@@ -15,7 +15,8 @@
 #include <string>
 #include <vector>
 
-// Where things are (world pixels: 1200 x 675) and how often the belts bring a crate.
+// Where things are (world pixels, in the world of hitbox::defaultWorldSize) and how often the
+// belts bring a crate.
 constexpr float upperBeltTop = 160.f; // the top of the upper belt's crates
 constexpr float lowerBeltTop = 440.f; // the top of the lower belt's crates
 const hitbox::Box plateBox{480.f, 150.f, 160.f, 60.f};

@@ -30,8 +30,10 @@ TEMPLATES = Path(__file__).resolve().parent / "handout"
 KEEP = (
     ("tests/labs/*/hidden/*", False),  # hidden grading variants and the packs' own checks
     ("tests/course/*/*", False),  # course lab folders (scripts/check-course-labs.sh)
+    ("tests/support/vcxproj/*", False),  # the course-lab build's .vcxproj reader's fixture
     ("framework/*", True), ("assets/*", True), ("tests/support/*", True), ("tests/geometry/*", True),
-    ("tests/labs/*", True), ("tests/objects/*", True), ("tests/app/*", True), ("tests/debug/*", True),
+    ("tests/labs/*", True), ("tests/sfml/*", True), ("tests/objects/*", True), ("tests/app/*", True),
+    ("tests/debug/*", True),
     ("tests/course/*.cpp", True),
     ("CMakeLists.txt", True), ("CMakePresets.json", True), (".clang-format", True), (".gitignore", True),
     ("tests/CMakeLists.txt", True),
@@ -44,7 +46,6 @@ KEEP = (
 LAB_SOURCE = "labs/[0-9][0-9]_*/*"
 # The lecture's slide markers ("// [slide:name]", "// [/slide]") mean nothing to a student.
 SLIDE_MARKER = re.compile(r"^\s*//\s*\[(slide:[^\]]*|/slide)\]\s*$")
-TASK_MARKER = re.compile(r"//\s*(BEGIN|STARTER|END) TASK")
 TARGET = re.compile(r"\blab[0-9]{2}_[A-Za-z0-9_]+")
 
 
@@ -192,7 +193,7 @@ def solution_only_lines():
             continue
         for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
             trimmed = line.rstrip("\r").strip(" \t")
-            marker = re.match(r"^[ \t]*//[ \t]*(BEGIN|STARTER|END) TASK", line)
+            marker = markers.ANY_MARKER.match(line)
             if marker:
                 state = {"BEGIN": "solution", "STARTER": "starter", "END": ""}[marker.group(1)]
             elif state == "solution":
@@ -216,7 +217,7 @@ def check_no_solution(out):
                 seen.add(trimmed)
                 say(f"solution line leaked into the handout: {trimmed} ({where})")
                 leaks += 1
-            if TASK_MARKER.search(line):
+            if markers.MARKER_ANYWHERE.search(line):
                 say(f"a task marker left in the handout: {where}: {trimmed}")
                 leaks += 1
     for path in sorted(p for p in out.rglob("*") if p.is_file() and p.name.endswith(markers.SOURCE_SUFFIXES)):

@@ -27,7 +27,7 @@ def run_all(program, work):
     """{Suite.Name: TestResult} of every test of a built GoogleTest program, one process each."""
     if program is None:
         raise RuntimeError("a test program that was just built is missing")
-    listing = procs.run_limited([str(program), "--gtest_list_tests"], Path(work) / "list.out", limits.TEST_SECONDS,
+    listing = procs.run_limited([str(program), "--gtest_list_tests"], Path(work) / "list.out", limits.LIST_SECONDS,
                                 env=engine.test_environment(), set_limits_here=True)
     tests = engine.list_tests(listing.output) if listing.status == 0 else []
     return {test: engine.run_test(program, test, work) for test in tests}

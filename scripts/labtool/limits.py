@@ -26,7 +26,10 @@ COMPILE_MEMORY = 2 * 1024 * 1024 * 1024
 COMPILE_FILE_BYTES = 256 * 1024 * 1024
 # Linking one lab's test program.
 LINK_SECONDS = 60
-# Listing the tests of the instructor's own test program (no student code runs then).
+# Listing the tests of a test program built from the instructor's code only (class grading,
+# before any submission; the course's own checks of solutions and exercises). A program
+# holding a student's code (the self-check) is listed under TEST_SECONDS and the test limits:
+# the student's static initialisers run when it starts.
 LIST_SECONDS = 60
 # Everything of one submission together (every lab): when it is used up, what is left is
 # reported "not run: the submission used up its N s".

@@ -17,8 +17,10 @@ from pathlib import Path
 BEGIN = re.compile(r"^([ \t]*)//[ \t]*BEGIN TASK ([0-9]+):[ \t]*(\S.*)$")
 STARTER = re.compile(r"^[ \t]*//[ \t]*STARTER TASK ([0-9]+)[ \t]*$")
 END = re.compile(r"^[ \t]*//[ \t]*END TASK ([0-9]+)[ \t]*$")
-# Any marker line at all (a malformed one must stop the tool, never pass as code).
-ANY_MARKER = re.compile(r"^[ \t]*//[ \t]*(BEGIN|STARTER|END)[ \t]+TASK")
+# Any marker line at all (a malformed one must stop the tool, never pass as code); and a
+# marker anywhere in a line, for the handout's check that none is left.
+MARKER_ANYWHERE = re.compile(r"//[ \t]*(BEGIN|STARTER|END)[ \t]+TASK")
+ANY_MARKER = re.compile(r"^[ \t]*" + MARKER_ANYWHERE.pattern)
 # What an exercise (handout) file keeps of a task: "// TASK n: title — see README.md".
 EXERCISE_TASK = re.compile(r"^[ \t]*//[ \t]*TASK ([0-9]+):")
 # A grading test's suite names its task: Task2BounceOffWalls checks task 2.

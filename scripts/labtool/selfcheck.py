@@ -157,6 +157,8 @@ def grade_lab(lab, build, target, results_dir, work):
         why = f"refused: {refused}"
         graded.update(reason=why, results=[engine.TestResult(t, False, why) for t in expected])
         return graded
+    # The student's code is in this program (its static initialisers run at the listing), so
+    # the listing is held to a test's limits, not LIST_SECONDS (limits.py).
     listing = procs.run_limited([str(program), "--gtest_list_tests"], work / "list.out", limits.TEST_SECONDS,
                                 env=engine.test_environment(), memory=limits.TEST_MEMORY,
                                 file_bytes=limits.OUTPUT_BYTES, set_limits_here=True)

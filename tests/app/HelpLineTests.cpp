@@ -39,3 +39,16 @@ TEST(HelpLine, TheDebugLegendComesFirstWhereItIsNeverCutOff)
     EXPECT_EQ(line.rfind(hitbox::DebugRenderer::legend, 0), 0u) << line;
     EXPECT_NE(line.find(hitbox::sharedKeysHelp()), std::string::npos) << line;
 }
+
+// The help line names each shared key from the key in its row (Keys.h), so changing a key
+// changes its name on screen too.
+TEST(HelpLine, SharedKeysAreNamedFromTheirKeys)
+{
+    EXPECT_EQ(hitbox::sharedKeysHelp(),
+              "F1 debug boxes   P pause   N step   F12 screenshot   Esc quit");
+    EXPECT_EQ(hitbox::keyName(sf::Keyboard::Key::A), "A");
+    EXPECT_EQ(hitbox::keyName(sf::Keyboard::Key::Z), "Z");
+    EXPECT_EQ(hitbox::keyName(sf::Keyboard::Key::F15), "F15");
+    EXPECT_EQ(hitbox::keyName(sf::Keyboard::Key::Space),
+              "key " + std::to_string(static_cast<int>(sf::Keyboard::Key::Space)));
+}

@@ -2,6 +2,7 @@
 // overflow, nothing silently read as something else.
 #include "support/CommandLine.h"
 
+#include "hitbox/app/Loop.h"
 #include "hitbox/app/Options.h"
 
 #include <gtest/gtest.h>
@@ -107,26 +108,33 @@ TEST(OptionsOneOf, SpelledExactlyOrAnError)
         "--mode needs one of swept, discrete, not 'bogus'");
 }
 
+// The limits come from their one home (Options.h: maxSeconds, maxSteps; Loop.h: the step rate).
 TEST(OptionsShared, SecondsAndFramesHaveAStatedMaximumAndNeverOverflow)
 {
-    EXPECT_EQ(parseCommandLine({"--seconds", "100000000"}).frames, 12'000'000'000LL);
+    const std::string mostSeconds = std::to_string(hitbox::maxSeconds);
+    const std::string mostSteps = std::to_string(hitbox::maxSteps);
+    EXPECT_EQ(hitbox::maxSteps,
+              hitbox::maxSeconds * static_cast<long long>(hitbox::stepsPerSecond));
+    EXPECT_EQ(parseCommandLine({"--seconds", mostSeconds.c_str()}).frames, hitbox::maxSteps);
     EXPECT_EQ(messageOf(
                   [] {
                       parseCommandLine({"--seconds", "76861433640456466"});
                   }),
-              "--seconds needs a number from 0 to 100000000, not '76861433640456466'");
+              "--seconds needs a number from 0 to " + mostSeconds + ", not '76861433640456466'");
+    const std::string tooMany = std::to_string(hitbox::maxSteps + 1);
     EXPECT_EQ(messageOf(
-                  [] {
-                      parseCommandLine({"--frames", "12000000001"});
+                  [&] {
+                      parseCommandLine({"--frames", tooMany.c_str()});
                   }),
-              "--frames needs a whole number from 0 to 12000000000, not '12000000001'");
+              "--frames needs a whole number from 0 to " + mostSteps + ", not '" + tooMany + "'");
 }
 
 // Items 22 and 24: --help anywhere, half seconds, and no option silently overriding another.
 TEST(OptionsShared, HelpHalfSecondsAndConflicts)
 {
     EXPECT_TRUE(parseCommandLine({"--frames", "bogus", "-h"}).help);
-    EXPECT_EQ(parseCommandLine({"--seconds", "0.5"}).frames, 60);
+    EXPECT_EQ(parseCommandLine({"--seconds", "0.5"}).frames,
+              static_cast<long long>(hitbox::stepsPerSecond / 2.f));
     EXPECT_EQ(messageOf(
                   [] {
                       parseCommandLine({"--seed", "1", "--seed", "2"});
@@ -163,6 +171,18 @@ TEST(OptionsPrintable, ControlBytesAreEscapedAndLongTextIsCut)
     EXPECT_EQ(hitbox::printable(std::string("a\r\0\xEF\xBB\xBF\\", 7)),
               "a\\r\\0\\xEF\\xBB\\xBF\\\\");
     EXPECT_EQ(hitbox::printable(std::string(100, 'x'), 5), "xxxxx...");
+}
+
+// The help page states the step rate and the headless default from their constants, so it
+// cannot go stale when either changes.
+TEST(OptionsShared, HelpStatesTheStepRateAndTheHeadlessDefault)
+{
+    const std::string page = hitbox::usagePage({"Test"});
+    const std::string frames = "--frames N          run N fixed steps (" +
+                               std::to_string(static_cast<int>(hitbox::stepsPerSecond)) +
+                               " a second; headless default " +
+                               std::to_string(hitbox::headlessDefaultSteps) + ")\n";
+    EXPECT_NE(page.find(frames), std::string::npos) << page;
 }
 
 // A --screenshot picture is drawn for a document and compared run against run (the slides'

@@ -57,7 +57,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         {
             const hitbox::Options options =
                 hitbox::parseOptions(static_cast<int>(argv.size()), argv.data(), info);
-            if (options.frames < -1 || options.frames > hitbox::maxSeconds * 120)
+            if (options.frames < -1 || options.frames > hitbox::maxSteps)
                 std::abort();
             answersOrRefuses(
                 [&]

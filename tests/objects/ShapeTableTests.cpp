@@ -4,6 +4,7 @@
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/geometry/Polygon.h"
 #include "hitbox/objects/Collision.h"
+#include "hitbox/objects/ExplainPair.h"
 #include "hitbox/objects/GameObject.h"
 #include "hitbox/objects/ShapeTable.h"
 #include "hitbox/objects/World.h"
@@ -195,6 +196,25 @@ TEST(ShapeTable, CollisionGetContactUsesTheToyShape)
     EXPECT_LT(contact.normal.x, 0.f); // out of b (on the right) towards a
     // Collision's own rules still come first: an object against itself never collides.
     EXPECT_FALSE(hitbox::Collision::getContact(&a, diamondKind, &a, diamondKind, table).hit);
+}
+
+TEST(ShapeTable, ExplainGivesTheTablesAnswerForAKindItHasNoWordsFor)
+{
+    hitbox::GameObject a = square(0.f, 0.f);
+    hitbox::GameObject b = square(30.f, 30.f); // the boxes overlap, the diamonds do not
+    a.setName("a");
+    b.setName("b");
+    const hitbox::ShapeTable table = tableWithDiamonds();
+    const hitbox::Explanation apart = hitbox::explain(a, b, diamondKind, diamondKind, table);
+    EXPECT_FALSE(apart.collides);
+    EXPECT_EQ(apart.verdict, "'a' and 'b' do not collide (the diamond-diamond test says so); no "
+                             "explanation for shape kind 2 (only box and circle are explained)");
+    b.setPosition({30.f, 0.f});
+    const hitbox::Explanation meet =
+        hitbox::explain(a, b, diamondKind, hitbox::ShapeKind::Box, table);
+    EXPECT_TRUE(meet.collides);
+    EXPECT_EQ(meet.verdict.rfind("'a' and 'b' collide (the diamond-box test says so)", 0), 0u)
+        << meet.verdict;
 }
 
 TEST(ShapeTable, DebugRendererDrawsTheToyShapeFromItsOutline)

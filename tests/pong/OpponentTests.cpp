@@ -2,6 +2,8 @@
 // scripted people: what they see is the ball, what they do is hold W or S.
 #include "PongTestHelpers.h"
 
+#include "hitbox/app/Loop.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -63,10 +65,14 @@ struct DecentPlayer
     void operator()(const PongLevel& pong, hitbox::Input& input)
     {
         const long long stepNumber = pong.getStepCount();
-        if (stepNumber % 30 == 0)
+        const long long quarterSecond = static_cast<long long>(hitbox::stepsPerSecond / 4.f);
+        if (stepNumber % quarterSecond == 0)
         {
-            const float wobble = static_cast<float>((stepNumber / 30) % 7 - 3) / 3.f; // -1..1
-            const float error = 20.f * pong.getBall().getSpeed() / 460.f;
+            const float wobble =
+                static_cast<float>((stepNumber / quarterSecond) % 7 - 3) / 3.f; // -1..1
+            // 20 px off at the serve speed, more as the ball speeds up.
+            const Ball& ball = pong.getBall();
+            const float error = 20.f * ball.getSpeed() / ball.getSettings().serveSpeed;
             target = arrivalY(pong) + wobble * error;
         }
         pongtest::steerTowards(input, pong.getPaddle(Side::Left).getPosition().y, target, 8.f);

@@ -8,6 +8,7 @@ The screenshot rows need a display: the whole table runs inside ONE xvfb-run (th
 take the display away themselves), so a busy machine starts one X server, not many.
 """
 import os
+import re
 import resource
 import shutil
 import signal
@@ -15,6 +16,22 @@ import subprocess
 import sys
 import tempfile
 
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def header_number(path, pattern):
+    """A number read from its one home, a framework header: the table follows it."""
+    with open(os.path.join(REPO, path), encoding="utf-8") as header:
+        found = re.search(pattern, header.read())
+    if not found:
+        sys.exit(f"bad_input: {path} has no line matching {pattern}")
+    return int(float(found.group(1).replace("'", "")))
+
+
+# The largest --seconds, and --frames: that many seconds of fixed steps.
+MAX_SECONDS = header_number("framework/hitbox/app/Options.h", r"constexpr long long maxSeconds = ([0-9']+);")
+MAX_STEPS = MAX_SECONDS * header_number("framework/hitbox/app/Loop.h",
+                                        r"constexpr float stepsPerSecond = ([0-9.]+)f;")
 NO_DISPLAY = ["env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY"]
 # The programs the table runs, by the name of their executable.
 PROGRAMS = ("pong", "sandbox", "lab02_bouncing_balls", "lab03_bouncing_squares",
@@ -45,11 +62,11 @@ def command_line_rows(p):
     lab08 = NO_DISPLAY + [p["lab08_many_objects"]]
     rows = [
         (2, "Pong: --frames needs a value", pong + ["--frames"]),
-        (2, "Pong: --frames needs a whole number from 0 to 12000000000, not 'ten'", pong + ["--frames", "ten"]),
-        (2, "Pong: --frames needs a whole number from 0 to 12000000000, not '-3'", pong + ["--frames", "-3"]),
-        (2, "Pong: --seconds needs a number from 0 to 100000000, not '76861433640456466'",
+        (2, f"Pong: --frames needs a whole number from 0 to {MAX_STEPS}, not 'ten'", pong + ["--frames", "ten"]),
+        (2, f"Pong: --frames needs a whole number from 0 to {MAX_STEPS}, not '-3'", pong + ["--frames", "-3"]),
+        (2, f"Pong: --seconds needs a number from 0 to {MAX_SECONDS}, not '76861433640456466'",
          pong + ["--headless", "--seconds", "76861433640456466"]),
-        (2, "Pong: --seconds needs a number from 0 to 100000000, not '153722867280912931'",
+        (2, f"Pong: --seconds needs a number from 0 to {MAX_SECONDS}, not '153722867280912931'",
          pong + ["--headless", "--seconds", "153722867280912931"]),
         (2, "Pong: --seed needs a whole number from 0 to 4294967295, not '4294967297'",
          pong + ["--headless", "--seed", "4294967297"]),
@@ -194,7 +211,7 @@ def screenshot_rows(sandbox, work):
         (1, could_not + "/keep/link.png': it is a symbolic link (save to the file it points to, or to a new name)",
          [sandbox, "--screenshot", work + "/keep/link.png"]),
     ], [
-        (1, could_not + missing, [sandbox, "--frames", "12000000000", "--screenshot", work + "/no/such/folder/a.png"]),
+        (1, could_not + missing, [sandbox, "--frames", str(MAX_STEPS), "--screenshot", work + "/no/such/folder/a.png"]),
         (1, could_not + r"/new\nline/a.png': the folder '" + work + r"/new\nline' does not exist",
          [sandbox, "--screenshot", work + "/new\nline/a.png"]),
         (1, "Hitbox sandbox: the font '" + fonts + "' is not a regular file (a folder, a device or a pipe). "

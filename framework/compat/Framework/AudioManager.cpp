@@ -36,32 +36,20 @@ sf::Sound* AudioManager::getSound(std::string lname)
 
 void AudioManager::addMusic(std::string filename, std::string lname)
 {
-    musics.emplace_back();
-    musics.back().setMusic(filename, lname);
+    music.add(filename, lname);
 }
 
 void AudioManager::playMusicbyName(std::string lname)
 {
-    for (const MusicObject& musicObject : musics)
-    {
-        if (musicObject.name != lname)
-            continue;
-        music.stop();
-        if (music.openFromFile(musicObject.filename))
-        {
-            music.setLoop(true);
-            music.play();
-        }
-        return;
-    }
+    music.play(lname);
 }
 
 void AudioManager::stopAllMusic()
 {
-    music.stop();
+    music.stream().stop();
 }
 
 sf::Music* AudioManager::getMusic()
 {
-    return &music;
+    return &music.stream();
 }

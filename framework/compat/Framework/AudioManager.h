@@ -9,6 +9,7 @@
 // that was never added plays nothing; a file that does not load gets one line from SFML.
 #pragma once
 
+#include "../CourseMusic.h"
 #include "Framework/MusicObject.h"
 #include "Framework/SoundObject.h"
 
@@ -38,6 +39,5 @@ public:
 private:
     // std::deque: adding a sound never moves the others, so getSound's pointers stay valid.
     std::deque<SoundObject> sounds;
-    std::deque<MusicObject> musics;
-    sf::Music music;
+    CourseMusic music; // shared with the 2025-26 AudioManager
 };

@@ -9,17 +9,18 @@
 //     ...
 //     for (GameObject& tile : *tileMap.getLevel())  // collision against the placed tiles
 //
-// Every cell gets a copy of its tile, placed at the map's position plus (column, row) times
-// the size of tile 0, and drawn with the map's texture. A cell whose index is not in the tile
-// set (e.g. -1) is left empty.
+// The data and buildLevel's placing rule are CourseTileMap's (../CourseTileMap.h), shared
+// with the 2025-26 framework; this class adds the older framework's signatures. Its protected
+// members, as the course had them: tileSet, tileMap, level, texture, mapSize, position.
 #pragma once
 
+#include "../CourseTileMap.h"
 #include "Framework/GameObject.h"
 
 #include <SFML/Graphics.hpp>
 #include <vector>
 
-class TileMap
+class TileMap : public CourseTileMap<GameObject>
 {
 public:
     TileMap();
@@ -30,19 +31,9 @@ public:
     void setTileSet(std::vector<GameObject> ts);
     // mapDimensions: columns and rows. Cells past the end of `tm` are left empty.
     void setTileMap(std::vector<int> tm, sf::Vector2u mapDimensions);
-    // Places the tiles; call it again after changing the set, the map or the position.
-    void buildLevel();
 
     void render(sf::RenderWindow* window);
     // The placed tiles, to test for collisions (and change, e.g. collect a coin).
     std::vector<GameObject>* getLevel();
     void setPosition(sf::Vector2f pos);
-
-protected:
-    std::vector<GameObject> tileSet;
-    std::vector<int> tileMap;
-    std::vector<GameObject> level;
-    sf::Texture texture;
-    sf::Vector2u mapSize;
-    sf::Vector2f position;
 };

@@ -26,7 +26,7 @@ namespace
 
 int runHeadless(Level& level, const Options& options, const ProgramInfo& info)
 {
-    const long long frames = options.frames >= 0 ? options.frames : 600;
+    const long long frames = options.frames >= 0 ? options.frames : headlessDefaultSteps;
     if (!simulateReporting(level, frames, info.title))
         return stoppedExitCode;
     std::cout << info.title << ": " << frames << " frames, " << frames * stepSeconds

@@ -9,7 +9,7 @@
 //     }
 // and so every program understands the same command line:
 //     --headless          no window: simulate only, then print one line of final state
-//     --frames N          simulate N fixed steps (headless default 600, i.e. 5 seconds);
+//     --frames N          simulate N fixed steps (headless: headlessDefaultSteps, Options.h);
 //                         in a window: close it after N steps
 //     --seconds S         the same, in simulated seconds (0.5 is 60 steps)
 //     --screenshot F.png  simulate --frames steps (default 0), draw one frame into F.png

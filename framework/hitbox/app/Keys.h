@@ -2,7 +2,7 @@
 //
 // The window acts on them (private/Window.cpp), the help line shows them, and a level that
 // asks "did a player press something?" leaves them out with isSharedKey(). To change a key,
-// change its row here.
+// change its row here: the help line names the key from the row's key itself (keyName).
 #pragma once
 
 #include <SFML/Window/Keyboard.hpp>
@@ -29,16 +29,21 @@ struct SharedKey
 {
     sf::Keyboard::Key key;
     SharedAction action;
-    const char* help; // how the help line names it
+    const char* does; // what the help line says it does, after the key's name
 };
 
 constexpr std::array<SharedKey, 5> sharedKeys{{
-    {sf::Keyboard::Key::F1, SharedAction::ToggleDebug, "F1 debug boxes"},
-    {sf::Keyboard::Key::P, SharedAction::Pause, "P pause"},
-    {sf::Keyboard::Key::N, SharedAction::Step, "N step"},
-    {sf::Keyboard::Key::F12, SharedAction::Screenshot, "F12 screenshot"},
-    {sf::Keyboard::Key::Escape, SharedAction::Quit, "Esc quit"},
+    {sf::Keyboard::Key::F1, SharedAction::ToggleDebug, "debug boxes"},
+    {sf::Keyboard::Key::P, SharedAction::Pause, "pause"},
+    {sf::Keyboard::Key::N, SharedAction::Step, "step"},
+    {sf::Keyboard::Key::F12, SharedAction::Screenshot, "screenshot"},
+    {sf::Keyboard::Key::Escape, SharedAction::Quit, "quit"},
 }};
+
+// How the help line names a key: "A" to "Z", "F1" to "F15", "Esc"; any other key "key N" (its
+// code). Worked out from the code (A..Z and F1..F15 are consecutive in SFML 2 and 3), not with
+// sf::Keyboard::getDescription, which SFML 2.5 lacks and which follows the keyboard layout.
+[[nodiscard]] std::string keyName(sf::Keyboard::Key key);
 
 // The shared key row for `key` (an sf::Keyboard::Key code), or nullptr if it is not one.
 [[nodiscard]] const SharedKey* findSharedKey(int key);

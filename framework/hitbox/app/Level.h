@@ -5,9 +5,9 @@
 // rules in update and make render only read state: then tests can run the level with no window at
 // all.
 //
-// (The course's old framework called its level base "BaseLevel"; that class still exists
-// for old lab code, see BaseLevel.h. This one lives in namespace hitbox so a course lab's
-// own `class Level` never clashes with it.)
+// (The course's framework calls its level base "BaseLevel"; that class still exists for
+// course lab code, in framework/compat/Framework/BaseLevel.h. This one lives in namespace
+// hitbox so a course lab's own `class Level` never clashes with it.)
 #pragma once
 
 #include "hitbox/objects/ContactEvent.h"

@@ -167,7 +167,9 @@ std::string usagePage(const ProgramInfo& info)
 {
     std::string page = info.title + "\n\nOptions every Hitbox program takes:\n";
     page += "  --headless          simulate with no window, then print one line of final state\n";
-    page += "  --frames N          run N fixed steps (120 a second; headless default 600)\n";
+    page += "  --frames N          run N fixed steps (" +
+            std::to_string(static_cast<int>(stepsPerSecond)) + " a second; headless default " +
+            std::to_string(headlessDefaultSteps) + ")\n";
     page += "  --seconds S         the same in simulated seconds, e.g. 0.5 (0 to " +
             std::to_string(maxSeconds) + ")\n";
     page += "  --screenshot F.png  draw one frame into F.png after --frames steps\n";
@@ -192,7 +194,6 @@ std::string usagePage(const ProgramInfo& info)
 
 Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info)
 {
-    const long long framesPerSecond = static_cast<long long>(stepsPerSecond);
     Options options;
     for (int i = 1; i < argc; ++i)
     {
@@ -247,12 +248,12 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
         else if (option == "--debug")
             options.debugBoxes = true;
         else if (option == "--frames")
-            options.frames = toWholeNumber(option, value(), 0, maxSeconds * framesPerSecond);
+            options.frames = toWholeNumber(option, value(), 0, maxSteps);
         else if (option == "--seconds")
             // Rounded to the nearest whole step: 0.5 s is 60 steps.
             options.frames =
                 std::llround(toNumber(option, value(), 0.0, static_cast<double>(maxSeconds)) *
-                             static_cast<double>(framesPerSecond));
+                             static_cast<double>(stepsPerSecond));
         else if (option == "--screenshot")
         {
             options.screenshotPath = value();
@@ -271,7 +272,7 @@ Options parseOptions(int argc, const char* const argv[], const ProgramInfo& info
                 throw std::invalid_argument(option + " needs a file name, e.g. run.csv");
         }
         else if (option == "--pause-at-step")
-            options.pauseAtStep = toWholeNumber(option, value(), 0, maxSeconds * framesPerSecond);
+            options.pauseAtStep = toWholeNumber(option, value(), 0, maxSteps);
         else
             options.extra[option] = value();
     }

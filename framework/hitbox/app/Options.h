@@ -4,6 +4,8 @@
 // A bad value throws std::invalid_argument; hitbox::run prints the line and exits with 2.
 #pragma once
 
+#include "hitbox/app/Loop.h"
+
 #include <cstddef>
 #include <map>
 #include <string>
@@ -21,6 +23,10 @@ struct ProgramInfo
 // The largest --seconds (--frames: as many steps): about three years of simulated time, far
 // beyond any run anyone waits for, and small enough that a frame count never overflows.
 constexpr long long maxSeconds = 100'000'000;
+// The largest --frames and --pause-at-step: maxSeconds of fixed steps.
+constexpr long long maxSteps = maxSeconds * static_cast<long long>(stepsPerSecond);
+// How many steps --headless runs when --frames and --seconds are not given.
+constexpr long long headlessDefaultSteps = 600;
 
 struct Options
 {

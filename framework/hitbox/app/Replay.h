@@ -1,5 +1,5 @@
 // Replay.h - a run written down: the seed, the level's options and the input every fixed step
-// saw, enough to run it again exactly (--record FILE, --replay FILE; docs/replay.md).
+// saw, enough to run it again exactly (--record FILE, --replay FILE; docs/debugging.md).
 //
 // The simulation is fixed-step and deterministic (Loop.h): the same level, built from the same
 // options and seed, fed the same input at the same steps, ends in the same state bit for bit.

@@ -21,12 +21,12 @@ public:
     void render(sf::RenderTarget& target) const override;
     void renderBlended(sf::RenderTarget& target, float leftover) const override;
     void renderDebug(DebugRenderer& debug) const override;
-    sf::Vector2f getWorldSize() const override;
-    std::string getHelpText() const override;
-    std::string describeState() const override;
-    bool handleEscape() override;
-    std::vector<PairEvent> getContactEvents() const override;
-    std::unique_ptr<LevelState> saveState() const override;
+    [[nodiscard]] sf::Vector2f getWorldSize() const override;
+    [[nodiscard]] std::string getHelpText() const override;
+    [[nodiscard]] std::string describeState() const override;
+    [[nodiscard]] bool handleEscape() override;
+    [[nodiscard]] std::vector<PairEvent> getContactEvents() const override;
+    [[nodiscard]] std::unique_ptr<LevelState> saveState() const override;
     void restoreState(const LevelState& state) override;
 
     // Fixed steps run so far.
@@ -74,7 +74,7 @@ public:
     ReplayingLevel(Level& inner, Recording recording);
 
     void handleInput(const Input& input, float dt) override;
-    std::string getHelpText() const override;
+    [[nodiscard]] std::string getHelpText() const override;
 
 private:
     Recording recording;

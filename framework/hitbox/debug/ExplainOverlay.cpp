@@ -28,8 +28,8 @@ void explainInPanel(DebugRenderer& debug, const World& world, Vec2 mouse,
     }
     if (first == nullptr || second == nullptr)
         return;
-    const Explanation why =
-        explain(*first, *second, world.getShape(*first), world.getShape(*second));
+    const Explanation why = explain(*first, *second, world.getShape(*first),
+                                    world.getShape(*second), world.getShapes());
     std::vector<std::string> lines{why.verdict};
     for (const std::string& step : why.steps)
         lines.push_back("  " + step);

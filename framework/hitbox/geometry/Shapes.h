@@ -36,7 +36,7 @@ struct Box
     }
 };
 // Exact comparison of the four fields.
-constexpr bool operator==(const Box& a, const Box& b)
+[[nodiscard]] constexpr bool operator==(const Box& a, const Box& b)
 {
     return a.left == b.left && a.top == b.top && a.width == b.width && a.height == b.height;
 }

@@ -71,7 +71,7 @@ struct Vec2
     return {a.x / divisor, a.y / divisor};
 }
 // Exact comparison, as for floats: NaN is never equal to anything.
-constexpr bool operator==(Vec2 a, Vec2 b)
+[[nodiscard]] constexpr bool operator==(Vec2 a, Vec2 b)
 {
     return a.x == b.x && a.y == b.y;
 }

@@ -17,7 +17,7 @@ std::string nameOf(const GameObject& object, const char* fallback)
 } // namespace
 
 Explanation explain(const GameObject& a, const GameObject& b, World::Shape shapeA,
-                    World::Shape shapeB)
+                    World::Shape shapeB, const ShapeTable& shapes)
 {
     const std::string nameA = nameOf(a, "A");
     const std::string nameB = nameOf(b, "B");
@@ -40,14 +40,19 @@ Explanation explain(const GameObject& a, const GameObject& b, World::Shape shape
     if (!why.verdict.empty())
         return why;
     // The explanations are written for Hitbox's own kinds; a kind added to a ShapeTable
-    // (docs/adding-a-shape.md) gets this line until it has one of its own.
+    // (docs/adding-a-shape.md) gets the table's answer and this line until it has words of
+    // its own, never a reason that is not the test's.
     for (const World::Shape kind : {shapeA, shapeB})
         if (kind != World::Shape::Box && kind != World::Shape::Circle)
-            why.verdict = "no explanation for shape kind " +
-                          std::to_string(static_cast<int>(kind)) +
-                          " (only box and circle are explained)";
-    if (!why.verdict.empty())
-        return why;
+        {
+            why.collides = shapes.test(a, shapeA, b, shapeB).hit;
+            why.verdict =
+                nameA + " and " + nameB + (why.collides ? " collide" : " do not collide") +
+                " (the " + shapes.nameOf(shapeA) + "-" + shapes.nameOf(shapeB) +
+                " test says so); no explanation for shape kind " +
+                std::to_string(static_cast<int>(kind)) + " (only box and circle are explained)";
+            return why;
+        }
     const Box boxA = toBox(a.getCollisionBox());
     const Box boxB = toBox(b.getCollisionBox());
     if (shapeA == World::Shape::Box && shapeB == World::Shape::Box)

@@ -17,8 +17,11 @@ class GameObject;
 // The objects' names are used when set (GameObject::setName), else "A" and "B". A dead
 // object, one that is not a collider, or an object against itself never collides, and the
 // verdict says which. Box against Box: their collision boxes; Circle: the bounding circle.
+// Another kind of `shapes` (docs/adding-a-shape.md) has no words yet: `collides` is then the
+// table's test's answer, and the verdict says so and that it has no explanation.
 [[nodiscard]] Explanation explain(const GameObject& a, const GameObject& b,
                                   World::Shape shapeA = World::Shape::Box,
-                                  World::Shape shapeB = World::Shape::Box);
+                                  World::Shape shapeB = World::Shape::Box,
+                                  const ShapeTable& shapes = ShapeTable::standard());
 
 } // namespace hitbox

@@ -162,14 +162,14 @@ private:
     {
         std::uint64_t first;
         std::uint64_t second;
-        bool operator==(const PairKey& other) const
+        [[nodiscard]] bool operator==(const PairKey& other) const
         {
             return first == other.first && second == other.second;
         }
     };
     struct PairKeyHash
     {
-        std::size_t operator()(const PairKey& key) const;
+        [[nodiscard]] std::size_t operator()(const PairKey& key) const;
     };
     // A pair that collided in some step and has not had its Exit yet.
     struct ContactRecord

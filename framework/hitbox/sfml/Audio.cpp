@@ -14,4 +14,13 @@ bool loadMonoSamples(sf::SoundBuffer& buffer, const std::vector<std::int16_t>& s
 #endif
 }
 
+void setLooping(sf::SoundStream& stream, bool looping)
+{
+#if SFML_VERSION_MAJOR >= 3
+    stream.setLooping(looping);
+#else
+    stream.setLoop(looping);
+#endif
+}
+
 } // namespace hitbox

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <SFML/Audio/SoundBuffer.hpp>
+#include <SFML/Audio/SoundStream.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -13,5 +14,9 @@ namespace hitbox
 // SFML refuses them (e.g. no samples). SFML 3 also needs the channel layout (mono).
 [[nodiscard]] bool loadMonoSamples(sf::SoundBuffer& buffer,
                                    const std::vector<std::int16_t>& samples, unsigned sampleRate);
+
+// Makes `stream` (music) start again from its beginning when it ends, or not (SFML 2:
+// setLoop, SFML 3: setLooping).
+void setLooping(sf::SoundStream& stream, bool looping);
 
 } // namespace hitbox

@@ -15,6 +15,7 @@
 
 #include "hitbox/app/App.h"
 #include "hitbox/app/Input.h"
+#include "hitbox/app/Loop.h"
 #include "hitbox/objects/World.h"
 #include "hitbox/sfml/Conversions.h"
 
@@ -269,9 +270,11 @@ TEST(Task2CollectCoins, InTheProgramsSceneEveryCoinThatLeavesScoresOnce)
     std::mt19937 random(11);
     std::uniform_int_distribution<int> pick(0, 4); // 4: let go (the autopilot stays off)
     hitbox::Input input;
-    for (int i = 0; i < 120 * 40; ++i)
+    // 40 s of play, a new arrow (or none) every quarter of a second.
+    const int stepsPerSecond = static_cast<int>(hitbox::stepsPerSecond);
+    for (int i = 0; i < stepsPerSecond * 40; ++i)
     {
-        if (i % 30 == 0)
+        if (i % (stepsPerSecond / 4) == 0)
         {
             for (sf::Keyboard::Key arrow : arrows)
                 input.setKeyUp(arrow);

@@ -37,31 +37,20 @@ sf::Sound* AudioManager::getSound(const std::string& name)
 
 void AudioManager::addMusic(const std::string& filename, const std::string& name)
 {
-    m_musics.push_back({name, filename});
+    m_music.add(filename, name);
 }
 
 void AudioManager::playMusicbyName(const std::string& name)
 {
-    for (const NamedMusic& named : m_musics)
-    {
-        if (named.name != name)
-            continue;
-        m_music.stop();
-        if (m_music.openFromFile(named.filename))
-        {
-            m_music.setLooping(true);
-            m_music.play();
-        }
-        return;
-    }
+    m_music.play(name);
 }
 
 void AudioManager::stopAllMusic()
 {
-    m_music.stop();
+    m_music.stream().stop();
 }
 
 sf::Music& AudioManager::getMusic()
 {
-    return m_music;
+    return m_music.stream();
 }

@@ -10,6 +10,8 @@
 // not load gets one line from SFML and plays nothing.
 #pragma once
 
+#include "../../CourseMusic.h"
+
 #include <SFML/Audio.hpp>
 
 #include <deque>
@@ -45,13 +47,7 @@ private:
         sf::SoundBuffer buffer;
         std::optional<sf::Sound> sound; // SFML 3: a sound exists only with its buffer
     };
-    struct NamedMusic
-    {
-        std::string name;
-        std::string filename;
-    };
     // std::deque: adding a sound never moves the others (a sound points at its buffer).
     std::deque<NamedSound> m_sounds;
-    std::deque<NamedMusic> m_musics;
-    sf::Music m_music;
+    CourseMusic m_music; // shared with the older framework's AudioManager
 };

@@ -1,16 +1,12 @@
-// The debug renderer builds its lines without a window; assets are found or named.
+// The debug renderer builds its lines without a window.
 #include "support/SfmlPrinters.h"
 
-#include "hitbox/app/Assets.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/objects/GameObject.h"
-#include "hitbox/platform/Platform.h"
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -106,43 +102,4 @@ TEST(DebugRenderer, ContactsDrawOnlyWhenHit)
     EXPECT_GT(debug.getVertices().getVertexCount(), 0u);
     debug.clear();
     EXPECT_EQ(debug.getVertices().getVertexCount(), 0u);
-}
-
-TEST(Assets, TheFontIsFoundFromAnyFolder)
-{
-    EXPECT_NO_THROW(EXPECT_FALSE(hitbox::findAsset("fonts/DejaVuSans.ttf").empty()));
-    EXPECT_NO_THROW([[maybe_unused]] const sf::Font font = hitbox::loadFont());
-}
-
-TEST(Assets, AMissingAssetNamesThePathAndTheFix)
-{
-    try
-    {
-        const std::string found = hitbox::findAsset("fonts/NoSuchFont.ttf");
-        FAIL() << "expected an AssetError, found " << found;
-    }
-    catch (const hitbox::AssetError& error)
-    {
-        const std::string message = error.what();
-        EXPECT_NE(message.find("assets/fonts/NoSuchFont.ttf"), std::string::npos) << message;
-        EXPECT_NE(message.find("Fix:"), std::string::npos) << message;
-    }
-}
-
-TEST(Assets, ADamagedFontIsReportedNotCrashed)
-{
-    const std::string folder = ::testing::TempDir() + "hitbox-bad-assets";
-    std::filesystem::create_directories(folder + "/fonts");
-    std::ofstream(folder + "/fonts/Broken.ttf") << "this is not a font";
-    ASSERT_TRUE(hitbox::platform::setEnvironmentVariable("HITBOX_ASSETS", folder));
-    try
-    {
-        [[maybe_unused]] const sf::Font font = hitbox::loadFont("fonts/Broken.ttf");
-        FAIL() << "expected an AssetError";
-    }
-    catch (const hitbox::AssetError& error)
-    {
-        EXPECT_NE(std::string(error.what()).find("Broken.ttf"), std::string::npos);
-    }
-    EXPECT_TRUE(hitbox::platform::unsetEnvironmentVariable("HITBOX_ASSETS"));
 }
