@@ -13,8 +13,10 @@
 #    that name only code their slide shows, no words for insiders on the slides, images
 #    present, every figure used by a deck, offline HTML, and every concept listed in
 #    concepts.txt on at least one slide.
-# 4. check-layout.mjs: in headless Chromium, no slide's content runs below the slide
-#    (skipped, saying so, without Chromium).
+# 4. check-layout.mjs: in headless Chromium, no slide's content runs below the slide, no label
+#    or screenshot text (figures.txt's text=PX, as drawn) under 24 px, no screenshot at the
+#    slide's edge, no interactive still without its whole border in print (skipped, saying
+#    so, without Chromium).
 # BUILD_DIR: where the programs are (default: build.sh builds the figure programs alone into
 # build/slides).
 set -euo pipefail

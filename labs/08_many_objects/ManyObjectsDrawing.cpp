@@ -259,17 +259,22 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
                  " balls: stopped, too slow to watch. Press M or Down.\n";
         color = sf::Color(255, 190, 90);
     }
-    // The timings go last: everything above them is the same on every run, so a screenshot
-    // cut above them is too (the slides' figures are checked for that).
+    // The timings go last. A --screenshot picture leaves them out (showTimings): it must be
+    // the same on every run, and the slides' figures are drawn twice and compared.
     std::string timing;
     if (!bruteForceSkipped && !stoppedAsTooSlow)
     {
         lines += "pairs tested: " + withCommas(getPairsTested()) +
                  "    boxes overlapping: " + withCommas(candidatePairs.size()) +
                  "    circles touching: " + withCommas(contacts) + "\n";
-        timing = "collision: " + fixed(collisionMilliseconds, 2) + " ms CPU per step";
-        if (stepsMeasured > 1)
-            timing += "    real time: " + fixed(realStepMilliseconds, 1) + " ms per step";
+        if (showTimings)
+        {
+            timing = "collision: " + fixed(collisionMilliseconds, 2) + " ms CPU per step";
+            if (stepsMeasured > 1)
+                timing += "    real time: " + fixed(realStepMilliseconds, 1) + " ms per step";
+        }
+        else
+            timing = "collision timing: not in a --screenshot picture (F12 in the window)";
         timing += "\n";
     }
     if (scene == Scene::PairTable)

@@ -56,7 +56,7 @@ hitbox::Vec2 fromAngle(float angle, float length)
 
 ManyObjectsLevel::ManyObjectsLevel(const LabSettings& settings)
     : printTimingSeconds(settings.printTimingSeconds), stopWhenTooSlow(settings.stopWhenTooSlow),
-      threads(settings.threads)
+      showTimings(settings.showTimings), threads(settings.threads)
 {
     method = settings.method;
     random.seed(settings.seed);

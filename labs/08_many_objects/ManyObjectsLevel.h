@@ -48,6 +48,9 @@ struct LabSettings
     // Both give the same pairs in the same order, so the same balls step after step.
     int threads = 2;
     bool stopWhenTooSlow = false; // the wall-clock guard below: for a window, never headless
+    // The readout's timing line (CPU and real time per step); off in a --screenshot picture,
+    // which must be the same on every run (hitbox::Options::repeatablePicture).
+    bool showTimings = true;
 };
 
 // What one collision step may cost to keep up with the fixed step: 1000 / 120 = 8.33 ms of
@@ -176,6 +179,7 @@ private:
     StepTiming stepTiming;            // every collision step since the last timing line
     std::size_t replayedContacts = 0; // the exact tests timed apart (recordStepTime)
     bool stopWhenTooSlow = false;
+    bool showTimings = true;
     int threads = 2;
 
     // Real time, measured in update(): the readout shows it, --print-timing prints it.

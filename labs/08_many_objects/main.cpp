@@ -38,6 +38,7 @@ int main(int argc, char* argv[])
                 static_cast<float>(options.number("--print-timing", 0.0, 0.0, 3600.0));
             // The slow-step guard reads the wall clock: only where someone is watching.
             settings.stopWhenTooSlow = !options.headless && options.screenshotPath.empty();
+            settings.showTimings = !options.repeatablePicture();
             return std::make_unique<ManyObjectsLevel>(settings);
         });
 }

@@ -19,6 +19,7 @@
   const height = 540;
   const panelX = 700; // the answer text starts here
   const snap = 10;
+  const border = 4; // the frame around the figure, inside its width x height
 
   // --- Asking the geometry -------------------------------------------------------------
   let geometry = null;
@@ -344,7 +345,10 @@
     const [functionName, numbers] = figure.question(state);
     const answer = ask(functionName, numbers);
     const svg = `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 ${width} ${height}" width="${width}" height="${height}">` +
-      `<defs>${defs}</defs>${style}${rect(0, 0, width, height, 'fill="#fff" stroke="#ddd"')}${figure.draw(state, answer)}</svg>`;
+      `<defs>${defs}</defs>${style}${rect(0, 0, width, height, 'fill="#fff"')}${figure.draw(state, answer)}` +
+      // The border last, over the answer panel's white, and inside the picture: a stroke on
+      // the picture's edge is half outside it, and the PDF loses its right and bottom sides.
+      `${rect(border / 2, border / 2, width - border, height - border, `class="border" fill="none" stroke="#999" stroke-width="${border}"`)}</svg>`;
     return { svg, question: [functionName, ...numbers] };
   }
 

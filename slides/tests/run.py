@@ -5,7 +5,9 @@ Each case plants one defect in a small deck (or a figure list with stand-in prog
 same tools check.sh runs, and expects them to fail with the right message; the clean cases must
 pass. Needs node and clang-format only (no display, no build): seconds.
 """
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -121,6 +123,13 @@ printf '%s\\n' "${args[@]}" >"$out"
 while [[ $# -gt 0 ]]; do [[ "$1" == --screenshot ]] && out="$2"; shift; done
 echo "collision: $(date +%N) ms" >"$out"
 """,
+    "ticker": """#!/usr/bin/env bash
+# Paints a real PNG with a run-dependent corner, as a timing readout would be: only the 4 x 2
+# pixels at (8, 12) change from run to run.
+while [[ $# -gt 0 ]]; do [[ "$1" == --screenshot ]] && out="$2"; shift; done
+ffmpeg -nostdin -loglevel error -y -f lavfi -i "color=c=0x204080:s=16x16" \
+    -vf "drawbox=x=8:y=12:w=4:h=2:t=fill:c=0x$(date +%N | cut -c1-6)" -frames:v 1 "$out"
+""",
     "deaf": """#!/usr/bin/env bash
 # Ignores every option: a "debug view" that looks the same as the plain one.
 while [[ $# -gt 0 ]]; do [[ "$1" == --screenshot ]] && out="$2"; shift; done
@@ -140,14 +149,23 @@ ffmpeg -nostdin -loglevel error -y -f lavfi -i "color=c=0x$(printf '%02x' $((fra
 
 # (name, the message make-figures must fail with or "" to pass, the line of figures.txt)
 FIGURE_CASES = [
-    ("figure-clean-passes", "", "shot.png programs/steady --frames 2 | --debug"),
-    ("figure-with-timing", "two runs drew different pictures", "shot.png programs/clock --frames 2"),
+    ("figure-clean-passes", "", "shot.png programs/steady --frames 2 text=0 | --debug"),
+    ("figure-with-timing", "two runs drew different pictures", "shot.png programs/clock --frames 2 text=0"),
     ("figure-claim-not-drawn", "claims '--debug' but looks the same without it",
-     "shot.png programs/deaf --frames 2 | --debug"),
-    ("figure-program-missing", "program programs/nothing not found", "shot.png programs/nothing --frames 2"),
-    ("animation-without-frames", "an animation needs frames=FIRST:LAST:STEP", "moving.apng programs/painter --debug"),
+     "shot.png programs/deaf --frames 2 text=0 | --debug"),
+    ("figure-program-missing", "program programs/nothing not found", "shot.png programs/nothing --frames 2 text=0"),
+    ("animation-without-frames", "an animation needs frames=FIRST:LAST:STEP",
+     "moving.apng programs/painter --debug text=0"),
+    # The smallest text on a figure must be stated, so the slide can be checked for it.
+    ("figure-without-text-size", "needs text=PX", "shot.png programs/steady --frames 2"),
 ]
-ANIMATION_CASE = ("animation-clean-passes", "", "moving.apng programs/painter frames=10:50:20")
+# Needs ffmpeg: real pictures.
+PICTURE_CASES = [
+    ("animation-clean-passes", "", "moving.apng programs/painter frames=10:50:20 text=0"),
+    # The message names where two runs differ (the timing's place), so it can be left out.
+    ("figure-with-timing-named-where", "two runs drew different pictures, in crop=4:2:8:12",
+     "shot.png programs/ticker --frames 2 text=0"),
+]
 FFMPEG = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
 
 
@@ -241,6 +259,61 @@ def label_svg(path, size):
     ET.ElementTree(svg).write(path)
 
 
+def still_svg(path, border_inside):
+    """An interactive figure's still: white, a frame, and an answer panel on the right. The
+    frame inside the picture and drawn last is whole; the old one (1 px of light grey on the
+    picture's edge, half outside it, drawn first: the panel's white covers its right side) is
+    lost in print."""
+    svg = ET.Element("svg", xmlns="http://www.w3.org/2000/svg", viewBox="0 0 1160 540", width="1160", height="540")
+    frame = {"fill": "none", "stroke": "#999", "stroke-width": "4"}
+    outline = dict(frame, x="2", y="2", width="1156", height="536") if border_inside else \
+        dict(frame, x="0", y="0", width="1160", height="540", stroke="#ddd", **{"stroke-width": "1"})
+    if not border_inside:
+        ET.SubElement(svg, "rect", outline)
+    ET.SubElement(svg, "rect", {"x": "680", "y": "1", "width": "479", "height": "538", "fill": "#fff"})
+    ET.SubElement(svg, "text", {"x": "700", "y": "60", "font-size": "30"}).text = "an answer"
+    if border_inside:
+        ET.SubElement(svg, "rect", outline)
+    ET.ElementTree(svg).write(path)
+
+
+def picture_cases(results, work, check_layout):
+    """Screenshots on slides: text under 24 px as shown (figure-text.json's size times the
+    drawn scale), a screenshot whose text size is unknown, one flush against the slide's edge;
+    and an interactive still whose border is cut off in print."""
+    folder = os.path.join(work, "pictures")
+    os.makedirs(folder + "/src")
+    os.makedirs(folder + "/dist/figures/generated")
+    os.makedirs(folder + "/dist/figures/labs")
+    for name in ("clean.png", "small-text.png", "../labs/01.png"):
+        subprocess.run(FFMPEG + ["-f", "lavfi", "-i", "color=c=0x202030:s=1200x675", "-frames:v", "1",
+                                 f"{folder}/dist/figures/generated/{name}"], check=True)
+    sizes = {"clean.png": {"text": 0, "width": 1200, "height": 675},
+             "small-text.png": {"text": 14, "width": 1200, "height": 675}}
+    write(folder + "/dist/figures/generated/figure-text.json", json.dumps(sizes))
+    still_svg(folder + "/dist/figures/whole.svg", True)
+    still_svg(folder + "/dist/figures/cut.svg", False)
+    slides = ["![bg left:50% fit](figures/generated/clean.png)\n\n- beside it",
+              "![bg left:50% fit](figures/generated/small-text.png)\n\n- beside it",
+              "![bg left:50% fit](figures/labs/01.png)\n\n- beside it",
+              '<img src="figures/generated/clean.png" style="position:absolute;left:0;top:0;width:640px">',
+              '<div class="interactive" data-figure="x"><img class="still" src="figures/whole.svg"></div>',
+              '<div class="interactive" data-figure="x"><img class="still" src="figures/cut.svg"></div>']
+    write(folder + "/src/01-pictures.md", "---\nmarp: true\ntheme: hitbox\n---\n\n" +
+          "\n\n---\n\n".join(f"# Slide {i + 1}\n\n{body}" for i, body in enumerate(slides)) + "\n")
+    marp_html(folder + "/src", folder + "/dist")
+    status, output = run(check_layout + [folder + "/dist"])
+    expected = {2: "text in figures/generated/small-text.png (14 px in the picture, drawn at 0.49x)",
+                3: "figures/labs/01.png has no known text size", 4: "px from the slide's edge (at least 16)",
+                6: "right side(s) in print"}
+    for slide, message in expected.items():
+        found = any(line.startswith(f"01-pictures.html slide {slide}:") and message in line for line in output.split("\n"))
+        results.report(f"picture-slide-{slide}-fails", status != 0 and found,
+                       f'expected slide {slide} to fail with "{message}", got (exit {status}): {output}')
+    clean = [line for line in output.split("\n") if re.match(r"01-pictures\.html slide [15]:", line)]
+    results.report("picture-clean-slides-pass", not clean, f"expected slides 1 and 5 to pass, got: {clean}")
+
+
 def layout_cases(results, work):
     """A slide whose content runs below its bottom edge, measured in Chromium; and a diagram
     label under 24 px as shown: a 600-wide SVG drawn in 40% of the slide (512 px) with a 20 px
@@ -270,6 +343,7 @@ def layout_cases(results, work):
     results.report("diagram-label-under-24-px",
                    status != 0 and small >= 0 and "17.1 px" in output[small:] and "slide 1:" not in output,
                    f"expected slide 2 (only) to fail at 17.1 px, got (exit {status}): {output}")
+    picture_cases(results, work, check_layout)
 
 
 def main():
@@ -289,7 +363,8 @@ def main():
         for case in FIGURE_CASES:
             figure_case(results, work, *case)
         if shutil.which("ffmpeg"):
-            figure_case(results, work, *ANIMATION_CASE)
+            for case in PICTURE_CASES:
+                figure_case(results, work, *case)
             still_cases(results, work)
         chrome = os.environ.get("CHROME_PATH") or "/usr/bin/chromium"
         if os.access(os.path.join(SLIDES, "node_modules", ".bin", "marp"), os.X_OK) and os.access(chrome, os.X_OK):

@@ -7,7 +7,7 @@
 //   name in them (`inline code`, a camelCase name, a member like hit.time) is in the slide's
 //   code, so a caption cannot promise what the excerpt was cut before;
 // - every figure (figures/*.svg, every output of figures.txt and, with --labs DIR, every
-//   lab's screenshot.png) is used by a deck;
+//   lab's screenshot.png unless a figure its program draws is on a slide) is used by a deck;
 // - every slide has speaker notes (an HTML comment that is not a Marp directive);
 // - no slide shows more code than fits at lecture-hall size: 16 lines, and no line longer
 //   than the 78 characters that fit at the theme's 24px (code never shrinks or wraps);
@@ -213,12 +213,22 @@ function main() {
     .map((f) => fs.readFileSync(path.join(options.src, f), 'utf8')).join('\n');
   const figures = fs.readdirSync(options.figures).filter((f) => f.endsWith('.svg')).map((f) => `figures/${f}`);
   const list = path.join(options.figures, '..', 'figures.txt');
+  const drawnBy = new Map(); // lab folder => the figures its program draws
   if (fs.existsSync(list))
     for (const line of fs.readFileSync(list, 'utf8').split(/\r?\n/))
-      if (line.trim() && !line.startsWith('#')) figures.push(`figures/generated/${line.trim().split(/\s+/)[0]}`);
+      if (line.trim() && !line.startsWith('#')) {
+        const [name, program = ''] = line.trim().split(/\s+/);
+        figures.push(`figures/generated/${name}`);
+        const lab = /^labs\/([^/]+)\//.exec(program);
+        if (lab) drawnBy.set(lab[1], [...(drawnBy.get(lab[1]) || []), `figures/generated/${name}`]);
+      }
+  // Every lab is on a slide: its screenshot.png, or a figure its program draws (a crop of it
+  // that a lecture hall can read).
   if (options.labs)
     for (const lab of fs.readdirSync(options.labs))
-      if (fs.existsSync(path.join(options.labs, lab, 'screenshot.png'))) figures.push(`figures/labs/${lab.slice(0, 2)}.png`);
+      if (fs.existsSync(path.join(options.labs, lab, 'screenshot.png')) &&
+          !(drawnBy.get(lab) || []).some((figure) => linked.includes(figure)))
+        figures.push(`figures/labs/${lab.slice(0, 2)}.png`);
   for (const figure of figures)
     if (!linked.includes(figure)) problems.push(`${figure}: used by no deck (use it on a slide, or remove it)`);
 

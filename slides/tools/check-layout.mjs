@@ -13,6 +13,16 @@
 // .svg, or an SVG drawn in the slide) smaller than 24 slide pixels fails (body text is 30 px;
 // a label the back row cannot read shows nothing). The size on the slide is the label's font
 // size times the scale the picture is drawn at (its width on the slide over its viewBox).
+// The same holds for the screenshots the programs draw (figures/generated/*.png, *.apng): their
+// smallest text, in the picture's own pixels, is in figures/generated/figure-text.json
+// (make-figures.py writes it from figures.txt's text=PX), times the scale the picture is drawn
+// at; a screenshot whose text size is not known (a lab's whole screenshot.png, whose help line
+// is small) fails too. And a screenshot keeps a margin from the slide's edge (`margin`, 16 px): a
+// dark picture flush against the edge of the projected slide reads as cut off.
+// In print, each interactive figure's still (the PDF's picture of it) must show its whole
+// frame: the outermost pixels of each of its four sides, as Chromium draws it on the slide,
+// are mostly the border's grey (a border drawn on the picture's edge is half outside it, and
+// the answer panel's white covered the right side).
 // Without Chromium the check says so and passes (the build itself needs no browser).
 import fs from 'node:fs';
 import path from 'node:path';
@@ -39,6 +49,9 @@ const problems = [];
 let slides = 0;
 // The smallest label a diagram may have, in slide pixels (1280x720 slides).
 const minimumLabel = Number(process.env.HITBOX_MIN_LABEL || 24);
+const margin = 16;
+const textSizesFile = path.resolve(options.dist, 'figures', 'generated', 'figure-text.json');
+const textSizes = fs.existsSync(textSizesFile) ? JSON.parse(fs.readFileSync(textSizesFile, 'utf8')) : {};
 // The labels of one SVG file: viewBox size and each <text>'s font size in its own units.
 const svgLabels = new Map();
 async function labelsOf(page, file) {
@@ -88,10 +101,23 @@ try {
       // Diagram labels: SVG pictures (measured in node from the file) and SVG in the slide.
       const images = [];
       const inline = [];
+      const rasters = []; // screenshots: where each is drawn, in slide pixels
+      const raster = /figures\/(?:generated|labs)\/[^/"')]+\.a?png$/i;
       sections.forEach((section, index) => {
         const box = section.getBoundingClientRect();
         if (box.height === 0) return;
         const scale = box.height / section.offsetHeight;
+        // An <img> fills its box, unless it is fitted into it (object-fit: contain).
+        const place = (src, own, fit) => rasters.push({ slide: index + 1, src: src.replace(/^.*\/(figures\/)/, '$1'),
+          left: (own.left - box.left) / scale, top: (own.top - box.top) / scale,
+          width: own.width / scale, height: own.height / scale, fit });
+        for (const picture of section.querySelectorAll('img, svg image')) {
+          const src = picture.getAttribute('src') || picture.getAttribute('href') || '';
+          const own = picture.getBoundingClientRect();
+          if (raster.test(src) && own.width > 0 && getComputedStyle(picture).display !== 'none' &&
+              !(picture.closest('svg') && getComputedStyle(picture.closest('svg')).display === 'none'))
+            place(src, own, getComputedStyle(picture).objectFit === 'contain');
+        }
         for (const img of section.querySelectorAll('img')) {
           const src = img.getAttribute('src') || '';
           const own = img.getBoundingClientRect();
@@ -121,11 +147,63 @@ try {
         const slide = slideFrames.indexOf(figure.closest('svg[data-marpit-svg]')) + 1;
         images.push({ slide, src: url[1].replace(/^.*\/(figures\/)/, '$1'), width: own.width / scale, height: own.height / scale });
       }
-      return { result, count: sections.length, images, inline };
+      // Split backgrounds of screenshots: the box they are fitted ("contain") into.
+      for (const figure of document.querySelectorAll('section[data-marpit-advanced-background="background"] figure')) {
+        const style = getComputedStyle(figure);
+        const url = /url\("?([^")]*\.a?png)"?\)/i.exec(figure.style.backgroundImage || '');
+        const frame = figure.closest('svg[data-marpit-svg]');
+        const section = frame && frame.querySelector('section:not([data-marpit-advanced-background])') || figure.closest('section');
+        const box = section.getBoundingClientRect();
+        const own = figure.getBoundingClientRect();
+        if (!url || !raster.test(url[1]) || own.width === 0 || box.height === 0 || style.display === 'none') continue;
+        const scale = box.height / section.offsetHeight;
+        const inset = style.backgroundOrigin === 'content-box' ? ['Left', 'Top', 'Right', 'Bottom'].map((side) => parseFloat(style['padding' + side]) * scale) : [0, 0, 0, 0];
+        rasters.push({ slide: slideFrames.indexOf(frame) + 1, src: url[1].replace(/^.*\/(figures\/)/, '$1'), fit: true,
+          left: (own.left + inset[0] - box.left) / scale, top: (own.top + inset[1] - box.top) / scale,
+          width: (own.width - inset[0] - inset[2]) / scale, height: (own.height - inset[1] - inset[3]) / scale });
+      }
+      return { result, count: sections.length, images, inline, rasters };
     });
     if (media === 'screen') {
       slides += found.count;
       for (const problem of found.result) problems.push(`${deck} ${problem}`);
+    }
+    // Before the labels below: measuring an SVG's labels opens that file in this page.
+    if (media === 'print') {
+      const stills = page.locator('section .interactive img.still');
+      for (let i = 0; i < await stills.count(); i++) {
+        const still = stills.nth(i);
+        const shot = await still.screenshot().catch(() => null);
+        if (!shot) continue;
+        const where = await still.evaluate((img) => {
+          const frames = [...document.querySelectorAll('svg[data-marpit-svg]')];
+          return { slide: frames.indexOf(img.closest('svg[data-marpit-svg]')) + 1, src: img.getAttribute('src') };
+        });
+        const missing = await page.evaluate(async (png) => {
+          const img = new Image();
+          img.src = `data:image/png;base64,${png}`;
+          await img.decode();
+          const canvas = document.createElement('canvas');
+          [canvas.width, canvas.height] = [img.width, img.height];
+          const context = canvas.getContext('2d');
+          context.drawImage(img, 0, 0);
+          // A side is there when, in its outermost 2 pixels, 90 % of the places along it
+          // have a pixel darker than light grey.
+          const data = context.getImageData(0, 0, canvas.width, canvas.height).data;
+          const dark = (x, y) => { const at = 4 * (y * canvas.width + x); return data[at] + data[at + 1] + data[at + 2] < 3 * 200; };
+          const side = (along, at) => {
+            let found = 0;
+            for (let i = 4; i < along - 4; i++) if (at(i, 0) || at(i, 1)) found++;
+            return found >= 0.9 * (along - 8);
+          };
+          const { width: w, height: h } = canvas;
+          const sides = { top: side(w, (i, d) => dark(i, d)), bottom: side(w, (i, d) => dark(i, h - 1 - d)),
+            left: side(h, (i, d) => dark(d, i)), right: side(h, (i, d) => dark(w - 1 - d, i)) };
+          return Object.keys(sides).filter((name) => !sides[name]);
+        }, shot.toString('base64'));
+        if (missing.length)
+          problems.push(`${deck} slide ${where.slide}: the still ${where.src} has no border on its ${missing.join(', ')} side(s) in print`);
+      }
     }
     const small = new Map(); // slide => its smallest label
     const note = (slide, size, what) => {
@@ -138,6 +216,26 @@ try {
       const drawn = Math.min(image.width / labels.width, image.height / labels.height);
       for (const text of labels.texts) note(image.slide, text.size * drawn, `"${text.text}" in ${image.src}`);
     }
+    for (const picture of found.rasters) {
+      const name = picture.src.replace(/^figures\/generated\//, '');
+      const known = textSizes[name];
+      if (!known) {
+        const problem = `${deck} slide ${picture.slide}: ${picture.src} has no known text size (draw it with figures.txt, text=PX)`;
+        if (!problems.includes(problem)) problems.push(problem);
+        continue;
+      }
+      // Where the picture is drawn: an <img> fills its box; a background is fitted into it.
+      const drawn = Math.min(picture.width / known.width, picture.height / known.height);
+      const [w, h] = picture.fit ? [known.width * drawn, known.height * drawn] : [picture.width, picture.height];
+      const left = picture.fit ? picture.left + (picture.width - w) / 2 : picture.left;
+      const top = picture.fit ? picture.top + (picture.height - h) / 2 : picture.top;
+      if (known.text > 0) note(picture.slide, known.text * drawn, `text in ${picture.src} (${known.text} px in the picture, drawn at ${drawn.toFixed(2)}x)`);
+      const gap = Math.min(left, top, 1280 - left - w, 720 - top - h);
+      if (gap < margin - 0.5) {
+        const problem = `${deck} slide ${picture.slide}: ${picture.src} is ${Math.max(0, gap).toFixed(0)} px from the slide's edge (at least ${margin})`;
+        if (!problems.includes(problem)) problems.push(problem);
+      }
+    }
     for (const [slide, { size, what }] of [...small].sort((a, b) => a[0] - b[0])) {
       const problem = `${deck} slide ${slide}: label ${what} is ${size.toFixed(1)} px on the slide (at least ${minimumLabel})`;
       if (!problems.includes(problem)) problems.push(problem);
@@ -148,7 +246,7 @@ try {
 }
 for (const problem of problems) console.error(problem);
 if (problems.length) {
-  console.error(`check-layout: ${problems.length} slide(s) with content cut off or diagram labels under ${minimumLabel} px`);
+  console.error(`check-layout: ${problems.length} slide(s) with content cut off, labels under ${minimumLabel} px or a screenshot at the slide's edge`);
   process.exit(1);
 }
 console.log(`check-layout: ${slides} slides, all content inside the slide, every diagram label at least ${minimumLabel} px`);

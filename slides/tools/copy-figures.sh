@@ -10,6 +10,8 @@ for folder in "$@"; do
     cp "$slides"/figures/*.svg "$folder/figures/"
     cp "$slides"/figures/generated/*.png "$slides"/figures/generated/*.apng "$folder/figures/generated/" 2>/dev/null || true
     cp "$slides"/figures/generated/interactive-*.svg "$folder/figures/generated/"
+    # Each screenshot's smallest text and size (make-figures.py), for tools/check-layout.mjs.
+    cp "$slides"/figures/generated/figure-text.json "$folder/figures/generated/" 2>/dev/null || true
     mkdir -p "$folder/figures/labs"
     for shot in "$repo"/labs/*/screenshot.png; do
         lab="$(basename "$(dirname "$shot")")"

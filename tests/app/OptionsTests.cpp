@@ -184,3 +184,13 @@ TEST(OptionsShared, HelpStatesTheStepRateAndTheHeadlessDefault)
                                std::to_string(hitbox::headlessDefaultSteps) + ")\n";
     EXPECT_NE(page.find(frames), std::string::npos) << page;
 }
+
+// A --screenshot picture is drawn for a document and compared run against run (the slides'
+// figures): it must leave out timings. A window run (F12 saves it) and a headless run do not.
+TEST(OptionsRepeatablePicture, OnlyAScreenshotRunAsksForOne)
+{
+    EXPECT_TRUE(
+        parseCommandLine({"--screenshot", "shot.png", "--frames", "60"}, {}).repeatablePicture());
+    EXPECT_FALSE(parseCommandLine({"--frames", "60"}, {}).repeatablePicture());
+    EXPECT_FALSE(parseCommandLine({"--headless", "--frames", "60"}, {}).repeatablePicture());
+}

@@ -42,6 +42,12 @@ struct Options
     long long pauseAtStep = -1; // --pause-at-step N: the window pauses after N steps; -1 never
     std::map<std::string, std::string> extra; // the ProgramInfo::extraOptions that were given
 
+    // A --screenshot run draws a picture that must be the same on every run (the slides'
+    // figures and the lab sheets' pictures are drawn twice and compared): a level leaves out
+    // what depends on the machine or the moment (CPU or wall-clock timings, clocks). F12 in a
+    // window saves the window as it is, timings included.
+    [[nodiscard]] bool repeatablePicture() const { return !screenshotPath.empty(); }
+
     // The value of an extra option as typed, or `fallback` when it was not given.
     [[nodiscard]] std::string get(const std::string& name, const std::string& fallback) const;
 
