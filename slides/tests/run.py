@@ -279,6 +279,23 @@ def deck_case(results, work, root, name, expected, body, unused_figure=None, not
     results.expect(name, expected, status, output)
 
 
+def notes_deck_case(results, work):
+    """The notes PDF prints every speaker note: one that starts with a scoped name
+    ("hitbox::f (F.h) is ...") is a note, not a Marp directive, as in Marp's presenter view."""
+    folder = os.path.join(work, "notes-deck")
+    for sub in ("decks", "notes", "dist"):
+        os.makedirs(os.path.join(folder, sub))
+    write(os.path.join(folder, "decks", "01-test.md"), '---\nmarp: true\ntitle: "Test"\n---\n\n'
+          "<!-- _class: lead -->\n\n# Code\n\n<!--\nhitbox::elasticCollision (Response.h) is the formula.\n-->\n")
+    status, output = run(["node", os.path.join(SLIDES, "tools", "deck-extras.mjs"), "--decks", folder + "/decks",
+                          "--notes", folder + "/notes", "--dist", folder + "/dist"])
+    notes_file = os.path.join(folder, "notes", "01-test-notes.md")
+    printed = open(notes_file, encoding="utf-8").read() if os.path.exists(notes_file) else ""
+    results.report("notes-deck-keeps-a-note-starting-with-a-scoped-name",
+                   status == 0 and "is the formula" in printed and "_class: lead" not in printed.split("# Code")[-1],
+                   f"expected the note in {notes_file}, got (exit {status}): {output}")
+
+
 def figure_case(results, work, name, expected, line):
     write(os.path.join(work, name + ".txt"), line + "\n")
     environment = dict(os.environ, DISPLAY=os.environ.get("DISPLAY") or ":none")
@@ -358,6 +375,7 @@ def main():
         write(work + "/concepts.txt", "")
         for case in DECK_CASES:
             deck_case(results, work, root, *case)
+        notes_deck_case(results, work)
         os.makedirs(work + "/programs")
         for name, source in STAND_INS.items():
             write(os.path.join(work, "programs", name), source, 0o755)

@@ -25,6 +25,7 @@
 //   (speaker notes do not count: the students must see it).
 import fs from 'node:fs';
 import path from 'node:path';
+import { isDirective } from './marp-directives.mjs';
 
 // How much code fits under a heading at the theme's 24px: 16 lines of 78 characters.
 // include-regions.mjs formats every excerpt to this width with the project's clang-format.
@@ -54,9 +55,6 @@ const authoringLeftovers = [
   /\bseed\s+(?:documents?|files?|ideas?)\b/i,
 ];
 
-// Marp's directives (<!-- _class: lead -->, <!-- paginate: false -->); any other comment is
-// a speaker note, even one that starts with "Next:".
-const directive = /^\s*_?(class|paginate|header|footer|theme|style|size|math|headingDivider|backgroundColor|backgroundImage|backgroundPosition|backgroundRepeat|backgroundSize|color|marp|title|description|author|image|keywords|url|transition|lang)\s*:/;
 
 function parseArguments(argv) {
   const options = {};
@@ -177,7 +175,7 @@ function namesNotShown(text) {
 }
 
 function notesOf(text) {
-  return [...text.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]).filter((c) => !directive.test(c) && c.trim() !== '');
+  return [...text.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]).filter((c) => !isDirective(c) && c.trim() !== '');
 }
 
 function hasNotes(text) {
