@@ -5,10 +5,10 @@
 #    (a defect planted in a small deck or figure list must fail, a clean one pass).
 # 2. build.sh in strict mode (HTML only): fails when a code region named by a deck does not
 #    exist, lacks its key line or is not whole (starts or ends mid-statement, in or on a
-#    comment, repeats lines), when a figure in figures.txt cannot be drawn, differs between
+#    comment, repeats lines, uses a local it does not show), shows a lab task's answer, when a figure in figures.txt cannot be drawn, differs between
 #    two runs or does not show what it claims, when an animation's still is not clean
 #    frames (tools/check-stills.sh), or when a deck does not convert.
-# 3. check-decks.mjs on the built decks: speaker notes on every slide, code that fits at
+# 3. check-decks.mjs on the built decks: useful speaker notes on every slide, code that fits at
 #    24px (16 lines of at most 78 characters), balanced brackets in every excerpt, captions
 #    that name only code their slide shows, no words for insiders on the slides, images
 #    present, every figure used by a deck, offline HTML, and every concept listed in

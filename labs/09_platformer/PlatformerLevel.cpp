@@ -403,11 +403,12 @@ void PlatformerLevel::applyPush(const hitbox::Contact& push)
 {
     player.setPosition(player.getPosition() + push.normal * push.depth);
     // Stop the part of the velocity that goes into the surface (so gravity does not build up
-    // while standing), and keep the part along it (so the player slides along walls).
+    // while standing), and keep the part along it (so the player slides along walls). The part
+    // along the normal is negative when the player moves into the surface.
     hitbox::Vec2 velocity = player.getVelocity();
-    const float intoSurface = velocity.x * push.normal.x + velocity.y * push.normal.y;
-    if (intoSurface < 0.f)
-        velocity -= push.normal * intoSurface;
+    const float alongNormal = velocity.x * push.normal.x + velocity.y * push.normal.y;
+    if (alongNormal < 0.f)
+        velocity -= push.normal * alongNormal;
     player.setVelocity(velocity);
     // Pushed up = something under the feet: a floor. This is the only way to be grounded
     // (the bottom point, or a bottom corner resolved along y).
@@ -448,11 +449,12 @@ void PlatformerLevel::moveWithSpeculativeContacts(const hitbox::Box& before)
         }
         player.setPosition(player.getPosition() + move * first.time); // just touching
         applyPush({true, first.normal, 0.f, first.point});
-        // What is left of the move, minus the part that would go into the surface.
+        // What is left of the move, minus the part that would go into the surface (the part
+        // along the normal, when it is negative).
         move *= 1.f - first.time;
-        const float intoSurface = move.x * first.normal.x + move.y * first.normal.y;
-        if (intoSurface < 0.f)
-            move -= first.normal * intoSurface;
+        const float alongNormal = move.x * first.normal.x + move.y * first.normal.y;
+        if (alongNormal < 0.f)
+            move -= first.normal * alongNormal;
     }
     resolvePenetration(before); // anything that started inside is pushed out as usual
 }

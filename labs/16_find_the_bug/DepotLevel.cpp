@@ -68,12 +68,14 @@ void DepotLevel::start()
     guard = std::make_unique<Piece>(Kind::Guard, guardStart, sf::Vector2f{guardSize, guardSize});
     guard->setName("gatekeeper");
     guard->setFillColor({230, 159, 0});
+    // [slide:depot-triggers]
     using Body = hitbox::World::Body;
     const hitbox::World::Shape box = hitbox::World::Shape::Box;
     world.add(*plate, layer::zone, layer::crate, box, Body::Trigger);
     world.add(*gateway, layer::zone, layer::crate | layer::guard, box, Body::Trigger);
     world.add(*dropZone, layer::zone, layer::crate, box, Body::Trigger);
     world.add(*guard, layer::guard, layer::zone, box, Body::Trigger);
+    // [/slide]
     guardDirection = {};
     steps = 0;
     cratesMade = 0;

@@ -21,11 +21,13 @@ Crate::Crate(sf::Vector2f topLeft) : Piece(Kind::Crate, topLeft, {crateSize, cra
     setFillColor({190, 130, 70});
 }
 
+// [slide:depot-crate-delivered]
 void Crate::onCollisionEnter(const hitbox::CollisionEvent& event)
 {
     if (event.other != nullptr && kindOf(*event.other) == Kind::DropZone)
         delivered = true;
 }
+// [/slide]
 
 bool Crate::isDelivered() const
 {

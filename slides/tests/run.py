@@ -60,6 +60,37 @@ int total(int a, int b)
 }
 // [/slide]
 
+// [slide:copied]
+// The lines of lab 01's task 1 answer, under another function's name.
+int limit(int value, int low, int high)
+{
+    const int notBelow = value < low ? low : value;
+    const int notAbove = notBelow > high ? high : notBelow;
+    const bool changed = notAbove != value;
+    return changed ? notAbove : value;
+}
+// [/slide]
+
+// [slide:repeat-a]
+float speedOf(float vx, float vy)
+{
+    const float squared = vx * vx + vy * vy;
+    const float speed = std::sqrt(squared);
+    const float halfSpeed = speed / 2.f;
+    return halfSpeed;
+}
+// [/slide]
+
+// [slide:repeat-b]
+float halfSpeedOf(float vx, float vy)
+{
+    const float squared = vx * vx + vy * vy;
+    const float speed = std::sqrt(squared);
+    const float halfSpeed = speed / 2.f;
+    return halfSpeed + 0.f;
+}
+// [/slide]
+
 // [slide:tall]
 void tall()
 {
@@ -68,8 +99,32 @@ void tall()
 """
 
 
+# A lab with a graded task: the answer between BEGIN TASK and STARTER TASK.
+LAB_CPP = """// [slide:lab-answer]
+int clampToRange(int value, int low, int high)
+{
+    // BEGIN TASK 1: clamp the value into the range
+    const int notBelow = value < low ? low : value;
+    const int notAbove = notBelow > high ? high : notBelow;
+    const bool changed = notAbove != value;
+    return changed ? notAbove : value;
+    // STARTER TASK 1
+    // return value;
+    // END TASK 1
+}
+// [/slide]
+"""
+
+# Speaker notes that say enough (12 words or more) for the cases about something else.
+NOTES = "Say what the slide shows, ask the class one question, and point at the code."
+
+
 def include(region, extra=""):
     return f"<!-- include: src/Example.cpp#{region}{extra} -->"
+
+
+def include_from(path, region, extra=""):
+    return f"<!-- include: {path}#{region}{extra} -->"
 
 
 # (name, the message the tools must fail with or "" to pass, the slide's body, a figure no deck uses)
@@ -105,7 +160,25 @@ DECK_CASES = [
     ("old-course-code", "words for insiders", "# Radius\n\n- Old course code: radius = width / 2"),
     ("last-years", "words for insiders", "# Fixing last year's mistake\n\n- The edge rule"),
     ("insider-words-in-notes-allowed", "",
-     "# Fine\n\n- The edge rule\n\n<!-- From seed 002; last year's slides had it wrong. -->"),
+     "# Fine\n\n- The edge rule\n\n<!-- Last year's slides had it wrong; say so, it helps. -->"),
+    # A reader can follow an excerpt: a local it uses is declared on the slide or explained.
+    ("excerpt-uses-a-name-it-does-not-declare", "uses sum, declared at line 3 of the region",
+     "# Which sum?\n\n" + include("split", ' lines 5-6 key "return sum"')),
+    ("name-explained-in-the-caption-passes", "",
+     "# Explained\n\n" + include("split", ' lines 5-6 key "return sum"') + "\n\n`sum` is a + b."),
+    # A slide never hands students a graded answer.
+    ("excerpt-inside-a-task-block", "shows the answer to labs/01_lab/Lab.cpp's task 1",
+     "# The answer\n\n" + include_from("labs/01_lab/Lab.cpp", "lab-answer")),
+    ("excerpt-copies-a-task-answer", "lines of the answer to lab 01 task 1 (labs/01_lab/Lab.cpp:4)",
+     "# A copy\n\n" + include("copied")),
+    # One deck says a thing once, even from two regions.
+    ("two-excerpts-repeat-lines", "repeats 3 lines already shown at",
+     "# Speed\n\n" + include("repeat-a") + "\n\n---\n\n# Again\n\n" + include("repeat-b") + "\n\n<!-- " + NOTES + " -->"),
+    # Speaker notes help the one presenting.
+    ("notes-only-point-to-the-next-deck", "speaker notes say too little",
+     "# Summary\n\n- The edge rule", None, "Next: the next deck."),
+    ("notes-name-an-authoring-source", 'by its authoring name: "the top-down report"',
+     "# Capsules\n\n- Round ends", None, "From the top-down report: a capsule is a rectangle with round ends."),
 ]
 
 # Stand-in programs for the figure cases: each writes a "PNG" made of its arguments.
@@ -204,7 +277,7 @@ def write(path, text, mode=None):
         os.chmod(path, mode)
 
 
-def deck_case(results, work, root, name, expected, body, unused_figure=None):
+def deck_case(results, work, root, name, expected, body, unused_figure=None, notes=NOTES):
     """One deck with a title slide and BODY, through include-regions and check-decks."""
     folder = os.path.join(work, name)
     for sub in ("src", "decks", "dist", "figures"):
@@ -212,7 +285,7 @@ def deck_case(results, work, root, name, expected, body, unused_figure=None):
     if unused_figure:
         write(os.path.join(folder, "figures", unused_figure), '<svg xmlns="http://www.w3.org/2000/svg"/>\n')
     write(os.path.join(folder, "src", "01-test.md"), '---\nmarp: true\ntitle: "Test"\n---\n\n# Test\n\n'
-          f"<!-- notes -->\n\n---\n\n{body}\n\n<!--\nNotes.\n-->\n")
+          f"<!-- {NOTES} -->\n\n---\n\n{body}\n\n<!--\n{notes}\n-->\n")
     write(os.path.join(folder, "dist", "01-test.html"), "<html></html>\n")
     status, output = run(["node", os.path.join(SLIDES, "tools", "include-regions.mjs"), "--root", root,
                           "--src", folder + "/src", "--out", folder + "/decks"])
@@ -222,6 +295,23 @@ def deck_case(results, work, root, name, expected, body, unused_figure=None):
                                "--src", folder + "/src", "--figures", folder + "/figures"])
         output = "\n".join(part for part in (output, checked) if part)
     results.expect(name, expected, status, output)
+
+
+def notes_deck_case(results, work):
+    """The notes PDF prints every speaker note: one that starts with a scoped name
+    ("hitbox::f (F.h) is ...") is a note, not a Marp directive, as in Marp's presenter view."""
+    folder = os.path.join(work, "notes-deck")
+    for sub in ("decks", "notes", "dist"):
+        os.makedirs(os.path.join(folder, sub))
+    write(os.path.join(folder, "decks", "01-test.md"), '---\nmarp: true\ntitle: "Test"\n---\n\n'
+          "<!-- _class: lead -->\n\n# Code\n\n<!--\nhitbox::elasticCollision (Response.h) is the formula.\n-->\n")
+    status, output = run(["node", os.path.join(SLIDES, "tools", "deck-extras.mjs"), "--decks", folder + "/decks",
+                          "--notes", folder + "/notes", "--dist", folder + "/dist"])
+    notes_file = os.path.join(folder, "notes", "01-test-notes.md")
+    printed = open(notes_file, encoding="utf-8").read() if os.path.exists(notes_file) else ""
+    results.report("notes-deck-keeps-a-note-starting-with-a-scoped-name",
+                   status == 0 and "is the formula" in printed and "_class: lead" not in printed.split("# Code")[-1],
+                   f"expected the note in {notes_file}, got (exit {status}): {output}")
 
 
 def figure_case(results, work, name, expected, line):
@@ -354,9 +444,12 @@ def main():
         os.makedirs(root + "/src")
         shutil.copy(os.path.join(REPO, ".clang-format"), root)
         write(root + "/src/Example.cpp", EXAMPLE_CPP)
+        os.makedirs(root + "/labs/01_lab")
+        write(root + "/labs/01_lab/Lab.cpp", LAB_CPP)
         write(work + "/concepts.txt", "")
         for case in DECK_CASES:
             deck_case(results, work, root, *case)
+        notes_deck_case(results, work)
         os.makedirs(work + "/programs")
         for name, source in STAND_INS.items():
             write(os.path.join(work, "programs", name), source, 0o755)

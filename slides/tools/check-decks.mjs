@@ -8,7 +8,10 @@
 //   code, so a caption cannot promise what the excerpt was cut before;
 // - every figure (figures/*.svg, every output of figures.txt and, with --labs DIR, every
 //   lab's screenshot.png unless a figure its program draws is on a slide) is used by a deck;
-// - every slide has speaker notes (an HTML comment that is not a Marp directive);
+// - every slide has speaker notes (an HTML comment that is not a Marp directive) that say
+//   something to the instructor: at least `notesWords` words besides a "Next: ..." pointer,
+//   and no authoring leftovers (the names of the sources the decks were written from, such
+//   as "the course lecture" or "the top-down report", mean nothing to the one presenting);
 // - no slide shows more code than fits at lecture-hall size: 16 lines, and no line longer
 //   than the 78 characters that fit at the theme's 24px (code never shrinks or wraps);
 // - every code excerpt has balanced brackets ( ) [ ] { } outside strings and comments, so
@@ -22,6 +25,7 @@
 //   (speaker notes do not count: the students must see it).
 import fs from 'node:fs';
 import path from 'node:path';
+import { isDirective } from './marp-directives.mjs';
 
 // How much code fits under a heading at the theme's 24px: 16 lines of 78 characters.
 // include-regions.mjs formats every excerpt to this width with the project's clang-format.
@@ -37,9 +41,20 @@ const insiderWords = [
   /\bthe old framework\b/i,
   /\blast year'?s?\b/i,
 ];
-// Marp's directives (<!-- _class: lead -->, <!-- paginate: false -->); any other comment is
-// a speaker note, even one that starts with "Next:".
-const directive = /^\s*_?(class|paginate|header|footer|theme|style|size|math|headingDivider|backgroundColor|backgroundImage|backgroundPosition|backgroundRepeat|backgroundSize|color|marp|title|description|author|image|keywords|url|transition|lang)\s*:/;
+// Speaker notes that help the one presenting: what to say, what to ask, what is left out.
+// A summary slide whose notes only say "Next: ..." gives them nothing.
+const notesWords = 12;
+const nextPointer = /^\s*(?:Next|Last deck)\s*:.*$/gim;
+// The sources the decks were written from, by the names their authors used for them.
+const authoringLeftovers = [
+  /\bthe course(?:'s)? (?:old )?(?:collision )?(?:lecture|code)\b/i,
+  /\bcourse lecture(?:'s)?\b/i,
+  /\b(?:the )?top-down (?:game )?report\b/i,
+  /\bthe report(?:'s)?\b/i,
+  /\bseeds?\s*(?:documents?\s*)?0\d\d\b/i,
+  /\bseed\s+(?:documents?|files?|ideas?)\b/i,
+];
+
 
 function parseArguments(argv) {
   const options = {};
@@ -159,9 +174,28 @@ function namesNotShown(text) {
   return [...new Set(names)].filter((name) => !code.includes(name));
 }
 
+function notesOf(text) {
+  return [...text.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]).filter((c) => !isDirective(c) && c.trim() !== '');
+}
+
 function hasNotes(text) {
-  const comments = [...text.matchAll(/<!--([\s\S]*?)-->/g)].map((m) => m[1]);
-  return comments.some((c) => !directive.test(c) && c.trim() !== '');
+  return notesOf(text).length > 0;
+}
+
+// What is wrong with a slide's notes: too thin to help, or an authoring leftover.
+function notesProblems(text) {
+  const notes = notesOf(text).join('\n');
+  if (!notes) return [];
+  const problems = [];
+  const words = notes.replace(nextPointer, ' ').split(/\s+/).filter((w) => /\w/.test(w)).length;
+  if (words < notesWords)
+    problems.push(`speaker notes say too little (${words} words besides a "Next:" line; at least ${notesWords}): ` +
+      'what should the instructor say, ask or point at here?');
+  for (const leftover of authoringLeftovers) {
+    const found = notes.match(leftover);
+    if (found) problems.push(`speaker notes name a source by its authoring name: "${found[0]}" (say what it is, or what it says)`);
+  }
+  return problems;
 }
 
 function visibleText(text) {
@@ -179,6 +213,7 @@ function main() {
     for (const slide of slidesOf(markdown)) {
       const where = `${deck} slide ${slide.number}`;
       if (!hasNotes(slide.text)) problems.push(`${where}: no speaker notes (an HTML comment)`);
+      for (const problem of notesProblems(slide.text)) problems.push(`${where}: ${problem}`);
       for (const problem of codeProblems(slide.text)) problems.push(`${where}: ${problem}`);
       for (const name of namesNotShown(slide.text))
         problems.push(`${where}: the caption or notes name "${name}", which the slide's code does not contain`);

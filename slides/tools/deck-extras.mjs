@@ -14,6 +14,7 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { dataUrl } from './inline-images.mjs';
+import { isDirective } from './marp-directives.mjs';
 
 function parseArguments(argv) {
   const options = {};
@@ -46,7 +47,7 @@ const headingOf = (slide) => ((slide.match(/^#{1,2} +(.*)$/m) || [])[1] || '').t
 const notesOf = (slide) =>
   [...slide.matchAll(/<!--([\s\S]*?)-->/g)]
     .map((m) => m[1].trim())
-    .filter((text) => text && !/^_?[a-zA-Z]+\s*:/.test(text) && !/^include:/.test(text));
+    .filter((text) => text && !isDirective(text) && !/^include:/.test(text));
 const escapeHtml = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 const plain = (text) => text.replace(/\$+([^$]*)\$+/g, '$1').replace(/[*`]/g, '');
 

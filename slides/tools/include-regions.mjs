@@ -15,9 +15,9 @@
 // are joined by a `// ...` line.
 // A region is marked in a source file by a line `// [slide:NAME]` and a line `// [/slide]`.
 // The include line becomes a fenced code block of the region: marker lines left out, the
-// common indentation removed. In lab solutions, the task markers and the starter code
-// (`// BEGIN TASK n`, `// STARTER TASK n` ... `// END TASK n`) are left out too: a slide
-// shows the solution's code only. A missing file or region is an error naming the deck and line:
+// common indentation removed. In lab sources, the task markers and the starter code
+// (`// BEGIN TASK n`, `// STARTER TASK n` ... `// END TASK n`) are left out too, and a slide
+// may show the code around a task, never the task's answer ("graded answer" below). A missing file or region is an error naming the deck and line:
 //     src/01-bounding-volumes.md:42: region aabb-overlap not found in framework/x.cpp
 //
 // Usage:
@@ -104,12 +104,20 @@ function regionsOf(root, file) {
 
 // The solution's lines of a lab region: task markers and starter code dropped.
 function withoutTaskMarkers(lines) {
+  return taggedSolution(lines).map((l) => l.text);
+}
+// The same lines, each with the task it answers ("TASK 3") or null outside a task block.
+function taggedSolution(lines) {
   const kept = [];
   let inStarter = false;
+  let task = null;
   for (const line of lines) {
     if (taskStarter.test(line)) inStarter = true;
-    else if (taskEnd.test(line)) inStarter = false;
-    else if (!inStarter && !taskBegin.test(line)) kept.push(line);
+    else if (taskEnd.test(line)) {
+      inStarter = false;
+      task = null;
+    } else if (taskBegin.test(line)) task = line.match(/TASK\s*\d*/)[0];
+    else if (!inStarter) kept.push({ text: line, task });
   }
   return kept;
 }
@@ -212,6 +220,124 @@ function wholeProblems(code, parts, region) {
   return problems;
 }
 
+// --- A slide never hands students a graded answer -------------------------------------------
+// A lab's task is graded: the code between `// BEGIN TASK n` and `// STARTER TASK n` (or
+// `// END TASK n`) in labs/*/ is the answer the tests accept, and the handout gives students
+// the starter instead. A slide shown in the lecture must not print it: it teaches the idea with
+// the framework's own general function, pseudo-code or another example. Two checks:
+// a shown code line inside a task block of the region itself, and an excerpt from anywhere
+// (the framework, pong/) that repeats `answerLines` or more significant lines of one task's
+// answer word for word (a copy of the answer under another name is still the answer).
+const answerLines = 3;
+// A line that says something: at least 12 characters of code (spaces and comments dropped),
+// and more than a bare `return x;`, `break;` or a brace.
+const normalisedCode = (line) => codeOfLine(line).replace(/\s+/g, '');
+const significant = (code) => code.length >= 12 && !/^(return\w*|break|continue)?;?[{}]?;?$/.test(code) &&
+  !/^return[\w.]*;$/.test(code);
+
+function labFiles(root) {
+  const labs = path.join(root, 'labs');
+  if (!fs.existsSync(labs)) return [];
+  return sourceFiles(root, 'labs');
+}
+// Every task's answer lines: [{where: "labs/..:line", label: "lab 05 task 4", lines: Set}].
+function taskAnswerIndex(root) {
+  const tasks = [];
+  for (const file of labFiles(root)) {
+    const lines = fs.readFileSync(path.join(root, file), 'utf8').split(/\r?\n/);
+    let open = null;
+    lines.forEach((line, index) => {
+      if (taskBegin.test(line)) {
+        const number = (line.match(/TASK\s*(\d+)/) || [])[1] ?? '?';
+        open = { where: `${file}:${index + 1}`, label: `lab ${file.split('/')[1].slice(0, 2)} task ${number}`, lines: new Set() };
+        tasks.push(open);
+      } else if (taskStarter.test(line) || taskEnd.test(line)) open = null;
+      else if (open && !commentLine(line)) {
+        const code = normalisedCode(line);
+        if (significant(code)) open.lines.add(code);
+      }
+    });
+  }
+  return tasks;
+}
+function answerProblems(solution, parts, file, taskIndex, shownCode) {
+  const problems = [];
+  const inside = new Set();
+  for (const [first, last] of parts)
+    for (let l = first; l <= last; l++) {
+      const line = solution[l - 1];
+      if (line && line.task && line.text.trim() !== '' && !commentLine(line.text)) inside.add(line.task);
+    }
+  for (const task of inside)
+    problems.push(`shows the answer to ${file}'s ${task.toLowerCase()}: a lecture slide must not hand students a graded ` +
+      'answer (teach the idea with the framework\'s general function, pseudo-code or another example)');
+  if (inside.size) return problems;
+  const shown = new Set(shownCode.map(normalisedCode).filter(significant));
+  for (const task of taskIndex ?? []) {
+    const same = [...task.lines].filter((l) => shown.has(l));
+    if (same.length >= answerLines)
+      problems.push(`repeats ${same.length} lines of the answer to ${task.label} (${task.where}) word for word: a lecture ` +
+        'slide must not hand students a graded answer (teach it with pseudo-code or another example)');
+  }
+  return problems;
+}
+
+// --- A reader can follow an excerpt --------------------------------------------------------
+// A name the excerpt uses must be declared where the reader can see it: in the excerpt, in an
+// earlier excerpt of the same region in this deck, or outside the region (a parameter, a
+// member), or named in backticks in the slide's caption or notes, which say what it is. A
+// local declared in the lines the excerpt leaves out (`sharedMidX` computed in the gap,
+// `inside` declared above the loop) and explained nowhere leaves the reader guessing.
+const notTypes = new Set(['return', 'else', 'case', 'goto', 'delete', 'throw', 'using', 'typedef', 'new', 'co_return', 'not', 'and', 'or']);
+function declaredName(line) {
+  const m = codeOfLine(line).match(/^(?:(?:const|constexpr|static|auto)\s+)*([A-Za-z_][\w:<>,]*)[\s&*]+([A-Za-z_]\w*)\s*(?:=|;|\{|\[)/);
+  return m && !notTypes.has(m[1]) ? m[2] : null;
+}
+function undeclaredNames(code, parts, shownBefore, explained) {
+  if (parts.length === 1 && parts[0][0] === 1 && parts[0][1] === code.length) return [];
+  const visible = new Set();
+  for (const [first, last] of [...parts, ...shownBefore.map((s) => [s.first, s.last])])
+    for (let l = first; l <= last; l++) visible.add(l);
+  const declaredHidden = new Map();
+  const declaredShown = new Set();
+  code.forEach((line, index) => {
+    const name = declaredName(line);
+    if (!name) return;
+    if (visible.has(index + 1)) declaredShown.add(name);
+    else if (!declaredHidden.has(name)) declaredHidden.set(name, index + 1);
+  });
+  const problems = [];
+  for (const [name, line] of declaredHidden) {
+    if (declaredShown.has(name) || explained.has(name)) continue;
+    const use = new RegExp(`(?<![\\w.>:])${name}\\b`);
+    const usedAt = parts.flatMap(([first, last]) => code.slice(first - 1, last)).find((l) => use.test(codeOfLine(l)));
+    if (usedAt) problems.push(`uses ${name}, declared at line ${line} of the region, which the slide does not show: "${usedAt.trim()}"`);
+  }
+  return problems;
+}
+
+// --- One deck says a thing once ------------------------------------------------------------
+// Two excerpts of one deck may not show the same code twice (the same region's lines are
+// checked by range; this catches two regions holding the same lines, such as two labs'
+// answers): `answerLines` significant lines in common fail.
+function repeatedElsewhere(code, name, shownCode) {
+  const mine = new Set(code.map(normalisedCode).filter(significant));
+  const problems = [];
+  for (const other of shownCode) {
+    if (other.name === name) continue;
+    const same = other.lines.map(normalisedCode).filter((l) => mine.has(l));
+    if (new Set(same).size >= answerLines)
+      problems.push(`repeats ${new Set(same).size} lines already shown at ${other.where} (${other.name}): say it once`);
+  }
+  return problems;
+}
+
+function dedentTagged(tagged) {
+  const texts = dedent(tagged.map((l) => l.text));
+  const firstKept = tagged.findIndex((l) => l.text.trim() !== '');
+  return texts.map((text, i) => ({ text, task: tagged[firstKept + i].task }));
+}
+
 class RegionIndex {
   constructor(root) {
     this.root = root;
@@ -237,8 +363,25 @@ class RegionIndex {
   }
 }
 
+// The `names` in backticks that each line's slide explains in its caption or notes.
+function explainedNames(lines) {
+  const result = [];
+  let start = 0;
+  for (let i = 0; i <= lines.length; i++) {
+    if (i === lines.length || lines[i] === '---') {
+      const text = lines.slice(start, i).join('\n');
+      const names = new Set([...text.matchAll(/`([A-Za-z_]\w*)`/g)].map((m) => m[1]));
+      for (let k = start; k < i; k++) result[k] = names;
+      start = i + 1;
+      result[i] = new Set();
+    }
+  }
+  return result;
+}
+
 function processDeck(deckPath, deckLabel, index, options, problems, listing) {
   const lines = fs.readFileSync(deckPath, 'utf8').split(/\r?\n/);
+  const explained = explainedNames(lines);
   const output = [];
   lines.forEach((line, i) => {
     const match = line.match(includeLine);
@@ -279,10 +422,12 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       const kept = dedent(parts.map((l) => (l === null ? '' : l)));
       code = [];
       const indentOf = (l) => (l.match(/^[ \t]*/) || [''])[0];
-      // Dedent lost the gap markers' indentation: give each the indentation of the next line.
+      // Dedent lost the gap markers' indentation: give each the indentation of the next line,
+      // or of the line before when the next one closes a block (the gap is inside it).
       let k = 0;
       for (let p = 0; p < parts.length; p++) code.push(kept[k++] ?? '');
-      code = code.map((l, p) => (parts[p] === null ? `${indentOf(code[p + 1] || '')}// ...` : l));
+      const gapIndent = (p) => (/^\s*\}/.test(code[p + 1] || '') ? indentOf(code[p - 1] || '') : indentOf(code[p + 1] || ''));
+      code = code.map((l, p) => (parts[p] === null ? `${gapIndent(p)}// ...` : l));
       code = dedent(code);
     }
     const cut = wholeProblems(dedent(withoutTaskMarkers(found.region.lines)), partList, found.region);
@@ -290,6 +435,12 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       for (const problem of cut) problems.push(`${where}: the excerpt of ${name} ${problem}`);
       return;
     }
+    const solution = dedentTagged(taggedSolution(found.region.lines));
+    const answers = answerProblems(solution, partList, found.file, options.taskIndex, code);
+    const undeclared = undeclaredNames(solution.map((l) => l.text), partList, options.shownLines.get(name) ?? [], explained[i]);
+    const repeated = repeatedElsewhere(code, name, options.shownCode);
+    for (const problem of [...answers, ...undeclared, ...repeated]) problems.push(`${where}: the excerpt of ${name} ${problem}`);
+    options.shownCode.push({ name, where, lines: code });
     const shown = options.shownLines.get(name) ?? [];
     for (const [first, last] of partList) {
       const again = shown.find((s) => first <= s.last && s.first <= last);
@@ -315,12 +466,14 @@ function main() {
   const options = parseArguments(process.argv.slice(2));
   const index = new RegionIndex(options.root);
   options.styleFolder = slideStyleFolder(options.root);
+  options.taskIndex = taskAnswerIndex(options.root);
   const decks = fs.readdirSync(options.src).filter((f) => f.endsWith('.md')).sort();
   if (options.out) fs.mkdirSync(options.out, { recursive: true });
   const problems = [];
   const listing = [];
   for (const deck of decks) {
     options.shownLines = new Map(); // region -> the line ranges this deck has shown
+    options.shownCode = []; // every excerpt this deck has shown: {name, where, lines}
     const deckPath = path.join(options.src, deck);
     processDeck(deckPath, path.relative(process.cwd(), deckPath), index, options, problems, listing);
   }

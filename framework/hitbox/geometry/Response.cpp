@@ -41,6 +41,7 @@ Vec2 pushOutOffset(const Contact& contact)
     return contact.normal * (contact.depth + pushOutSlop * scale);
 }
 
+// [slide:response-elastic]
 VelocityPair elasticCollision(Vec2 firstVelocity, float firstMass, Vec2 secondVelocity,
                               float secondMass, Vec2 normal, float restitution)
 {
@@ -66,5 +67,6 @@ VelocityPair elasticCollision(Vec2 firstVelocity, float firstMass, Vec2 secondVe
     return {firstVelocity + normal * (impulse * firstInverse),
             secondVelocity - normal * (impulse * secondInverse)};
 }
+// [/slide]
 
 } // namespace hitbox

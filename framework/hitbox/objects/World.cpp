@@ -408,6 +408,7 @@ void World::tell(const ContactRecord& record, ContactPhase phase)
     }
 }
 
+// [slide:world-trigger-never-pushed]
 void World::separate(std::uint32_t i, std::uint32_t j)
 {
     if (!takesPart(i) || !takesPart(j))
@@ -425,6 +426,7 @@ void World::separate(std::uint32_t i, std::uint32_t j)
     entries[i].object->move(toSfml(contact.normal * (contact.depth * shareA)));
     entries[j].object->move(toSfml(contact.normal * (-contact.depth * shareB)));
 }
+// [/slide]
 
 void World::settle()
 {
