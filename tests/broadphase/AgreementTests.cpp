@@ -263,7 +263,7 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
     // Four at a time (SSE) against one at a time (plain C++), both with two threads and a
     // given cell size, so both build the same grid: the same pairs in the same order.
     hitbox::GridSettings fourFixed = two;
-    fourFixed.cellSize = 24.f;
+    fourFixed.cellSize = 60.f; // about 14 boxes a cell: both the four-wide and the few-box path
     hitbox::GridSettings plainFixed = fourFixed;
     plainFixed.simd = false;
     hitbox::GridBroadphase fourFixedThreads(fourFixed), plainFixedThreads(plainFixed);

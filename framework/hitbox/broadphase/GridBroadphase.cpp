@@ -239,6 +239,10 @@ void forEachBusyCell(const std::uint32_t* start, const std::uint32_t* items, con
 bool cpuHasAvx(); // below, with the eight-wide tests
 #endif
 
+// Four at a time: cells of fewer boxes test each pair on its own (measured in lab 8, whose
+// cells hold 2-3 balls, and in the benchmark, whose cells hold about 12 boxes).
+constexpr std::uint32_t kFourAtATimeFrom = 5;
+
 // The three dummy counters forEachCell uses, after the grid's cells.
 constexpr std::size_t kDummyCounters = 3;
 
@@ -777,9 +781,33 @@ std::size_t GridBroadphase::testCellRangeFourWide(Half& half, Pair* out) const
     const float inf = std::numeric_limits<float>::infinity();
     const __m128i indexMask = _mm_set1_epi32(int(kItemIndexMask));
     std::size_t found = 0;
+    const __m128 signs = _mm_set1_ps(-0.f);
     auto testCell = [&](std::uint32_t begin, std::uint32_t end)
     {
         const std::uint32_t n = end - begin;
+        if (n < kFourAtATimeFrom)
+        {
+            // A cell of a few boxes: each pair on its own, straight from the per-item edges
+            // (copying them into columns would cost more than the few tests).
+            for (std::uint32_t p = begin; p + 1 < end; ++p)
+            {
+                const std::uint32_t a = items[p];
+                const __m128 negated =
+                    _mm_xor_ps(_mm_load_ps(&itemEdges[a & kItemIndexMask].minX), signs);
+                const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+                for (std::uint32_t q = p + 1; q < end; ++q)
+                {
+                    const std::uint32_t b = items[q];
+                    const bool overlap =
+                        _mm_movemask_ps(_mm_cmplt_ps(
+                            _mm_load_ps(&itemEdges[b & kItemIndexMask].minX), query)) == 0xF;
+                    const bool reportHere = ((a | b) & kBothFlags) == kBothFlags;
+                    out[found] = {a & kItemIndexMask, b & kItemIndexMask};
+                    found += reportHere & overlap;
+                }
+            }
+            return;
+        }
         for (std::uint32_t j = 0; j < n; ++j)
         {
             const std::uint32_t word = items[begin + j];
