@@ -4,6 +4,8 @@
 //     where SSE is missing (ARM, 32-bit x86 without SSE2).
 //   - Four at a time: the tests copy a busy cell into five columns (the four edges and the
 //     item words) and compare one box with four others per SSE step, flags and all.
+//   - Few-box cells one at a time: cells of fewer than kFourAtATimeFrom boxes skip the column
+//     copy and test each pair straight from the per-item edges.
 //   - One preparation pass: loading a box, its share of the grid's bounds and average size,
 //     its cells and the count of its cells happen in one walk over the items.
 //   - Four-lane preparation: in that pass the usual box is loaded, bounded and placed in its
@@ -239,9 +241,12 @@ void forEachBusyCell(const std::uint32_t* start, const std::uint32_t* items, con
 bool cpuHasAvx(); // below, with the eight-wide tests
 #endif
 
-// Four at a time: cells of fewer boxes test each pair on its own (measured in lab 8, whose
-// cells hold 2-3 balls, and in the benchmark, whose cells hold about 12 boxes).
+#if defined(HITBOX_GRID_SSE)
+// Few-box cells one at a time: cells of fewer boxes than this test each pair on its own, not
+// four at a time (lab 8's cells hold 2-3 balls, the benchmark's about 12 boxes; 5 and 8
+// measured the same there, docs/performance.md).
 constexpr std::uint32_t kFourAtATimeFrom = 5;
+#endif
 
 // The three dummy counters forEachCell uses, after the grid's cells.
 constexpr std::size_t kDummyCounters = 3;
