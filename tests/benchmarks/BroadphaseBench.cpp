@@ -8,8 +8,7 @@
 // grid's speed-up is a ratio measured in the same run. Grid/<N> is today's grid as the World
 // uses it (pairs sorted, one thread), GridCellOrder/<N> leaves the pairs in cell order and
 // GridEightWide/<N> is GridCellOrder with two entries per compare (AVX, where the CPU has it)
-// instead of one (SSE), GridSlimEntries/<N> is GridCellOrder with slim entries at every N (the
-// default from 5,000 boxes), GridTwoThreads/<N> also splits the work over two threads (its CPU
+// instead of four-wide SSE steps, GridTwoThreads/<N> also splits the work over two threads (its CPU
 // time counts both threads; its wall time is the "Time" column). Before timing, each grid's pairs
 // are checked against the baseline's, as a set: a benchmark whose pairs differ stops with an error.
 // Results, machine and the exact command: docs/performance.md.
@@ -126,13 +125,6 @@ void GridCellOrder(benchmark::State& state)
     settings.order = hitbox::PairOrder::CellOrder;
     runBroadphase(state, std::make_unique<hitbox::GridBroadphase>(settings));
 }
-void GridSlimEntries(benchmark::State& state)
-{
-    hitbox::GridSettings settings;
-    settings.order = hitbox::PairOrder::CellOrder;
-    settings.slimEntriesFromItems = 0;
-    runBroadphase(state, std::make_unique<hitbox::GridBroadphase>(settings));
-}
 void GridEightWide(benchmark::State& state)
 {
     hitbox::GridSettings settings;
@@ -233,7 +225,6 @@ void sizes(benchmark::internal::Benchmark* benchmark)
 BENCHMARK(BaselineGrid)->Apply(sizes);
 BENCHMARK(Grid)->Apply(sizes);
 BENCHMARK(GridCellOrder)->Apply(sizes);
-BENCHMARK(GridSlimEntries)->Apply(sizes);
 BENCHMARK(GridEightWide)->Apply(sizes);
 BENCHMARK(GridTwoThreads)->Apply(sizes);
 BENCHMARK(SortAndSweep)->Apply(sizes);

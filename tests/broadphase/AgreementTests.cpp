@@ -68,19 +68,10 @@ std::vector<std::unique_ptr<Broadphase>> everyMethod()
     hitbox::GridSettings plainSorted;
     plainSorted.simd = false;
     methods.push_back(std::make_unique<hitbox::GridBroadphase>(plainSorted));
-    // Slim entries (item words only; the tests fetch the edges), as from 5,000 boxes.
-    hitbox::GridSettings slim = twoThreads;
-    slim.slimEntriesFromItems = 0;
-    methods.push_back(std::make_unique<hitbox::GridBroadphase>(slim));
-    // Two entries per compare (AVX; on CPUs without it, the same as one), slim and not.
-    hitbox::GridSettings eightWide = slim;
+    // Two entries per compare (AVX; on CPUs without it, the same as four-wide SSE).
+    hitbox::GridSettings eightWide = twoThreads;
     eightWide.eightWide = true;
     methods.push_back(std::make_unique<hitbox::GridBroadphase>(eightWide));
-    eightWide.slimEntriesFromItems = hitbox::kGridSlimEntriesFromItems;
-    methods.push_back(std::make_unique<hitbox::GridBroadphase>(eightWide));
-    hitbox::GridSettings slimPlainSorted = plainSorted;
-    slimPlainSorted.slimEntriesFromItems = 0;
-    methods.push_back(std::make_unique<hitbox::GridBroadphase>(slimPlainSorted));
     return methods;
 }
 
@@ -269,12 +260,14 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
     plainOne.simd = false;
     hitbox::GridBroadphase plainOneThread(plainOne);
     std::vector<Pair> fromPlain;
-    // Full entries (as below 5,000 boxes; these 24,000 get slim ones) with two threads: the
-    // same cells, so the same order.
-    hitbox::GridSettings slimTwo = two;
-    slimTwo.slimEntriesFromItems = items.size() + 1;
-    hitbox::GridBroadphase slimTwoThreads(slimTwo);
-    std::vector<Pair> fromSlim;
+    // Four at a time (SSE) against one at a time (plain C++), both with two threads and a
+    // given cell size, so both build the same grid: the same pairs in the same order.
+    hitbox::GridSettings fourFixed = two;
+    fourFixed.cellSize = 60.f; // about 14 boxes a cell: both the four-wide and the few-box path
+    hitbox::GridSettings plainFixed = fourFixed;
+    plainFixed.simd = false;
+    hitbox::GridBroadphase fourFixedThreads(fourFixed), plainFixedThreads(plainFixed);
+    std::vector<Pair> fromFourFixed, fromPlainFixed;
     // Two entries per compare (AVX where the CPU has it), one thread: the same order again.
     hitbox::GridSettings wideOne = one;
     wideOne.eightWide = true;
@@ -288,7 +281,8 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
         twoThreads.findPairs(items, fromTwo);
         sortedTwoThreads.findPairs(items, sorted);
         plainOneThread.findPairs(items, fromPlain);
-        slimTwoThreads.findPairs(items, fromSlim);
+        fourFixedThreads.findPairs(items, fromFourFixed);
+        plainFixedThreads.findPairs(items, fromPlainFixed);
         wideOneThread.findPairs(items, fromWide);
         sweep->findPairs(items, expected);
         ASSERT_GT(expected.size(), 1000u) << "the scene should have many pairs";
@@ -297,11 +291,12 @@ TEST(GridBroadphase, TwoThreadsGiveTheSamePairsInTheSameOrderAsOne)
             ASSERT_TRUE(fromOne[k].first == fromTwo[k].first &&
                         fromOne[k].second == fromTwo[k].second)
                 << "pair #" << k << " differs, frame " << frame;
-        ASSERT_EQ(fromOne.size(), fromSlim.size()) << "frame " << frame;
-        for (std::size_t k = 0; k < fromOne.size(); ++k)
-            ASSERT_TRUE(fromOne[k].first == fromSlim[k].first &&
-                        fromOne[k].second == fromSlim[k].second)
-                << "full entries: pair #" << k << " differs, frame " << frame;
+        ASSERT_GT(fromFourFixed.size(), 1000u) << "frame " << frame;
+        ASSERT_EQ(fromFourFixed.size(), fromPlainFixed.size()) << "frame " << frame;
+        for (std::size_t k = 0; k < fromFourFixed.size(); ++k)
+            ASSERT_TRUE(fromFourFixed[k].first == fromPlainFixed[k].first &&
+                        fromFourFixed[k].second == fromPlainFixed[k].second)
+                << "four at a time: pair #" << k << " differs, frame " << frame;
         ASSERT_EQ(fromOne.size(), fromWide.size()) << "frame " << frame;
         for (std::size_t k = 0; k < fromOne.size(); ++k)
             ASSERT_TRUE(fromOne[k].first == fromWide[k].first &&

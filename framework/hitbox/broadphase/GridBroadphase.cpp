@@ -1,7 +1,11 @@
 // The grid's tricks, each named once here and measured in docs/performance.md:
-//   - Negated-max edges: a box is stored as (minX, minY, -maxX, -maxY), so one four-wide
-//     "less than" (SSE) tests a pair on both axes; a scalar version of the same four compares
-//     is compiled where SSE is missing (ARM, 32-bit x86 without SSE2).
+//   - Negated-max edges: a box is stored as (minX, minY, -maxX, -maxY), so "less than" on all
+//     four numbers tests a pair on both axes; the plain C++ steps make the same four compares
+//     where SSE is missing (ARM, 32-bit x86 without SSE2).
+//   - Four at a time: the tests copy a busy cell into five columns (the four edges and the
+//     item words) and compare one box with four others per SSE step, flags and all.
+//   - Few-box cells one at a time: cells of fewer than kFourAtATimeFrom boxes skip the column
+//     copy and test each pair straight from the per-item edges.
 //   - One preparation pass: loading a box, its share of the grid's bounds and average size,
 //     its cells and the count of its cells happen in one walk over the items.
 //   - Four-lane preparation: in that pass the usual box is loaded, bounded and placed in its
@@ -11,12 +15,11 @@
 //     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
 //   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
-//   - Split entries: 16 aligned bytes of edges plus a 4-byte item word in a second array.
-//   - Slim entries: from kGridSlimEntriesFromItems boxes the fill writes the item words only
-//     (4 bytes a box-in-a-cell, which stay in the cache while written in scattered places) and
-//     the tests copy each busy cell's edges from the per-item array.
-//   - Prefetched edges: with slim entries the tests ask for the next 24 entries' edges while
-//     a cell is tested, so the copies find them in the cache.
+//   - Item-word entries: a cell entry is the box's 4-byte item word only (4 bytes a
+//     box-in-a-cell, which stay in the cache while written in scattered places); the tests
+//     copy each busy cell's edges from the per-item array.
+//   - Prefetched edges: the tests ask for the next 24 entries' edges while a cell is tested,
+//     so the copies find them in the cache.
 //   - Eight-wide compares (GridSettings::eightWide, off: measured slower): two entries per
 //     AVX compare, chosen at run time by asking the CPU; SSE or plain C++ otherwise.
 //   - Pairs in cell order: no sort when the caller does not need (first, second) order.
@@ -196,7 +199,7 @@ inline std::uint32_t packCells(const Range& range, std::size_t width)
     return std::uint32_t(cell) | std::uint32_t(right) << 30 | std::uint32_t(down) << 31;
 }
 
-// Slim entries: how many entries ahead the tests ask for the boxes' edges.
+// Prefetched edges: how many entries ahead the tests ask for the boxes' edges.
 constexpr std::uint32_t kFetchAhead = 24;
 
 // Asks the cache for the line at `where` without waiting for it (a hint; nothing where SSE is
@@ -210,8 +213,39 @@ inline void prefetch(const void* where)
 #endif
 }
 
+// Calls testCell(begin, end) for every cell in [firstCell, endCell) with two entries or more
+// (most cells have fewer: nothing to test, and no hashing to find that out). Prefetched edges:
+// first it asks for the edges of the next kFetchAhead entries, so they arrive while this cell
+// is tested (the cache fetches on its own only what is read in order).
+template <typename Edge, typename TestCell>
+void forEachBusyCell(const std::uint32_t* start, const std::uint32_t* items, const Edge* itemEdges,
+                     std::uint32_t indexMask, std::size_t firstCell, std::size_t endCell,
+                     TestCell testCell)
+{
+    std::uint32_t fetched = start[firstCell]; // entries whose edges were asked for
+    const std::uint32_t lastEntry = start[endCell];
+    for (std::size_t cell = firstCell; cell < endCell; ++cell)
+    {
+        const std::uint32_t begin = start[cell];
+        const std::uint32_t end = start[cell + 1];
+        if (end - begin < 2)
+            continue;
+        const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
+        for (fetched = std::max(fetched, end); fetched < until; ++fetched)
+            prefetch(itemEdges + (items[fetched] & indexMask));
+        testCell(begin, end);
+    }
+}
+
 #if defined(HITBOX_GRID_AVX)
 bool cpuHasAvx(); // below, with the eight-wide tests
+#endif
+
+#if defined(HITBOX_GRID_SSE)
+// Few-box cells one at a time: cells of fewer boxes than this test each pair on its own, not
+// four at a time (lab 8's cells hold 2-3 balls, the benchmark's about 12 boxes; 5 and 8
+// measured the same there, docs/performance.md).
+constexpr std::uint32_t kFourAtATimeFrom = 5;
 #endif
 
 // The three dummy counters forEachCell uses, after the grid's cells.
@@ -534,8 +568,6 @@ void GridBroadphase::startCells()
     lastStats.pairsTested = tested;
     largestCell = largest;
     // Two spare entries, one per filling thread (forEachCell's covered = 0 calls write there).
-    if (!slimEntries)
-        growWithRoom(cellEdges, std::size_t(total) + 2);
     growWithRoom(cellItems, std::size_t(total) + 2);
     // Each half of the cells is tested by one thread: split where half the entries are.
     const std::size_t middle =
@@ -557,13 +589,15 @@ void GridBroadphase::startCells()
 
 void GridBroadphase::fillCells(Half& half)
 {
+    // Item-word entries: a cell entry is the box's 4-byte item word (index and report-once
+    // flags), not its edges. At 100,000 boxes the edges would be 2.8 MB written to scattered
+    // places (each write a cache miss); the words are 0.7 MB, which a core's 1 MB cache holds
+    // while they are written. The tests fetch each busy cell's edges from the per-item array.
     const std::size_t width = std::size_t(shape.columns);
     const std::size_t cellCount = width * std::size_t(shape.rows);
     std::uint32_t* cursor = half.cursor.data();
-    Edges* outEdges = cellEdges.data();
-    std::uint32_t* outItems = cellItems.data();
+    std::uint32_t* entries = cellItems.data();
     const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
-    const Edges* box = edges.data();
     const std::uint32_t* words = cellWords.data();
     const CellFinder finder(shape);
     // From the half's last box back, each cell from its end back: every cell's boxes end up in
@@ -571,57 +605,22 @@ void GridBroadphase::fillCells(Half& half)
     // [slide:grid-fill]
     for (std::size_t i = half.end; i-- > half.begin;)
     {
-        const Edges b = box[i];
         const std::uint32_t item = std::uint32_t(i);
-        auto put = [cursor, outEdges, outItems, spare, b,
-                    item](std::size_t target, std::uint32_t covered, std::uint32_t flags)
+        auto put = [cursor, entries, spare, item](std::size_t target, std::uint32_t covered,
+                                                  std::uint32_t flags)
         {
             const std::uint32_t slot = --cursor[target];
-            const std::uint32_t at = selectWithoutBranch(covered, slot, spare);
-            outEdges[at] = b;
-            outItems[at] = item | flags;
+            entries[selectWithoutBranch(covered, slot, spare)] = item | flags;
         };
         const std::uint32_t word = words[i];
         if (word != kWideBox)
             forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
                          kFirstColumnFlag, kFirstRowFlag, put);
         else
-            forEachCell(finder.cellsOf(b), width, cellCount, kFirstColumnFlag, kFirstRowFlag, put);
-    }
-    // [/slide]
-}
-
-void GridBroadphase::fillItemWords(Half& half)
-{
-    // Slim entries: fillCells without the edges. At 100,000 boxes the entries' edges are
-    // 2.8 MB written to scattered places (each write a cache miss); the item words alone are
-    // 0.7 MB, which a core's 1 MB cache holds while they are written. testCellRange fetches
-    // the edges of each busy cell from the per-item array (reads, which overlap).
-    const std::size_t width = std::size_t(shape.columns);
-    const std::size_t cellCount = width * std::size_t(shape.rows);
-    std::uint32_t* cursor = half.cursor.data();
-    std::uint32_t* outItems = cellItems.data();
-    const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
-    const Edges* box = edges.data();
-    const std::uint32_t* words = cellWords.data();
-    const CellFinder finder(shape);
-    for (std::size_t i = half.end; i-- > half.begin;)
-    {
-        const std::uint32_t item = std::uint32_t(i);
-        auto put = [cursor, outItems, spare, item](std::size_t target, std::uint32_t covered,
-                                                   std::uint32_t flags)
-        {
-            const std::uint32_t slot = --cursor[target];
-            outItems[selectWithoutBranch(covered, slot, spare)] = item | flags;
-        };
-        const std::uint32_t word = words[i];
-        if (word != kWideBox)
-            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
-                         kFirstColumnFlag, kFirstRowFlag, put);
-        else
-            forEachCell(finder.cellsOf(box[i]), width, cellCount, kFirstColumnFlag, kFirstRowFlag,
+            forEachCell(finder.cellsOf(edges[i]), width, cellCount, kFirstColumnFlag, kFirstRowFlag,
                         put);
     }
+    // [/slide]
 }
 
 namespace
@@ -629,8 +628,8 @@ namespace
 
 // Negated-max edges: a box's query is its (maxX, maxY, -minX, -minY), so that b overlaps it
 // exactly when each of b's (minX, minY, -maxX, -maxY) is less: bMin < aMax, -bMax < -aMin.
-// Two versions of the same four comparisons: PlainPairTest in C++ (every machine), and
-// SsePairTest, one four-wide "less than" where the compiler offers SSE.
+// PlainPairTest is the same four comparisons in C++ (every machine); where the compiler offers
+// SSE, testCellRangeFourWide makes them four-wide "less than"s.
 struct PlainPairTest
 {
     float maxX, maxY, negMinX, negMinY;
@@ -645,36 +644,19 @@ struct PlainPairTest
     }
 };
 
-#if defined(HITBOX_GRID_SSE)
-struct SsePairTest
-{
-    __m128 query;
-    explicit SsePairTest(const float* edges)
-    {
-        const __m128 negated = _mm_xor_ps(_mm_load_ps(edges), _mm_set1_ps(-0.f));
-        query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
-    }
-    bool overlaps(const float* other) const
-    {
-        return _mm_movemask_ps(_mm_cmplt_ps(_mm_load_ps(other), query)) == 0xF;
-    }
-};
-#endif
-
 #if defined(HITBOX_GRID_AVX)
 // What testCellsEightWide needs of the grid (it is a free function: see HITBOX_TARGET_AVX).
 struct WideCellTest
 {
     const std::uint32_t* start = nullptr;
     const std::uint32_t* items = nullptr;
-    const float* cellEdges = nullptr; // null: slim entries, fetched from itemEdges
     const float* itemEdges = nullptr;
     float* gathered = nullptr; // room for the largest cell + 1
     std::size_t firstCell = 0, endCell = 0;
     std::uint32_t bothFlags = 0, indexMask = 0;
 };
 
-// Eight-wide compares: the same pair test as SsePairTest, on two entries per instruction (the
+// Eight-wide compares: the negated-max pair test on two entries per instruction (the
 // query in both halves of an AVX register), so the inner loop runs half as often, and its end,
 // which the CPU guesses wrong about once per entry, comes up half as often. The second entry
 // of the last step may be one past the cell: its answer is masked off (`q + 1 < end`).
@@ -694,17 +676,12 @@ HITBOX_TARGET_AVX std::size_t testCellsEightWide(const WideCellTest& test, Pair*
         if (end - begin < 2)
             continue;
         const float* boxes = test.gathered;
-        if (test.cellEdges == nullptr)
-        {
-            const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
-            for (fetched = std::max(fetched, end); fetched < until; ++fetched)
-                prefetch(test.itemEdges + 4 * std::size_t(items[fetched] & mask));
-            for (std::uint32_t p = begin; p < end; ++p)
-                _mm_store_ps(test.gathered + 4 * std::size_t(p - begin),
-                             _mm_load_ps(test.itemEdges + 4 * std::size_t(items[p] & mask)));
-        }
-        else
-            boxes = test.cellEdges + 4 * std::size_t(begin);
+        const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
+        for (fetched = std::max(fetched, end); fetched < until; ++fetched)
+            prefetch(test.itemEdges + 4 * std::size_t(items[fetched] & mask));
+        for (std::uint32_t p = begin; p < end; ++p)
+            _mm_store_ps(test.gathered + 4 * std::size_t(p - begin),
+                         _mm_load_ps(test.itemEdges + 4 * std::size_t(items[p] & mask)));
         for (std::uint32_t p = begin; p + 1 < end; ++p)
         {
             const std::uint32_t a = items[p];
@@ -749,43 +726,25 @@ bool cpuHasAvx()
 
 } // namespace
 
-template <typename PairTest, bool Slim>
-std::size_t GridBroadphase::testCellRange(Half& half, Pair* out) const
+std::size_t GridBroadphase::testCellRangePlain(Half& half, Pair* out) const
 {
     const std::uint32_t* items = cellItems.data();
     const Edges* itemEdges = edges.data();
-    if (Slim)
-        half.gathered.resize(largestCell);
-    Edges* gathered = half.gathered.data();
-    std::uint32_t fetched = start[half.firstCell]; // slim: entries whose edges were asked for
-    const std::uint32_t lastEntry = start[half.endCell];
+    half.gathered.resize(largestCell);
+    Edges* boxes = half.gathered.data();
     std::size_t found = 0;
-    for (std::size_t cell = half.firstCell; cell < half.endCell; ++cell)
+    auto testCell = [&](std::uint32_t begin, std::uint32_t end)
     {
-        const std::uint32_t begin = start[cell];
-        const std::uint32_t end = start[cell + 1];
-        if (end - begin < 2)
-            continue; // most cells: nothing to test, and no hashing to find that out
-        // Slim entries: the cell's edges fetched into a small array first, so the inner loop
-        // reads them from the nearest cache. The fetches do not depend on each other.
-        // boxes[p - begin] is entry p's edges either way.
-        if (Slim)
-        {
-            // Ask for the edges of the next kFetchAhead entries now, so they arrive while
-            // this cell is tested (the cache fetches on its own only what is read in order).
-            const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
-            for (fetched = std::max(fetched, end); fetched < until; ++fetched)
-                prefetch(itemEdges + (items[fetched] & kItemIndexMask));
-            for (std::uint32_t p = begin; p < end; ++p)
-                gathered[p - begin] = itemEdges[items[p] & kItemIndexMask];
-        }
-        const Edges* boxes = Slim ? gathered : cellEdges.data() + begin;
+        // The cell's edges copied into a small array first, so the inner loop reads them from
+        // the nearest cache; boxes[p - begin] is entry p's edges.
+        for (std::uint32_t p = begin; p < end; ++p)
+            boxes[p - begin] = itemEdges[items[p] & kItemIndexMask];
         // [slide:grid-test]
         for (std::uint32_t p = begin; p + 1 < end; ++p)
         {
             const std::uint32_t a = items[p];
             const std::uint32_t first = a & kItemIndexMask;
-            const PairTest test(&boxes[p - begin].minX);
+            const PlainPairTest test(&boxes[p - begin].minX);
             for (std::uint32_t q = p + 1; q < end; ++q)
             {
                 const bool overlap = test.overlaps(&boxes[q - begin].minX);
@@ -798,9 +757,119 @@ std::size_t GridBroadphase::testCellRange(Half& half, Pair* out) const
             }
         }
         // [/slide]
-    }
+    };
+    forEachBusyCell(start.data(), items, itemEdges, kItemIndexMask, half.firstCell, half.endCell,
+                    testCell);
     return found;
 }
+
+#if defined(HITBOX_GRID_SSE)
+std::size_t GridBroadphase::testCellRangeFourWide(Half& half, Pair* out) const
+{
+    // Four at a time: a busy cell is copied into five columns (minX, minY, -maxX, -maxY and
+    // the item word of every entry), so one box's query is compared with four other boxes in
+    // four SSE "less than"s, and the report-once flags of the four are checked in two integer
+    // steps. Three pad entries after the cell (minX = +infinity, overlapping nothing) let the
+    // last step of four run past the cell's end without a mask. The pairs are written without
+    // a branch as before (always written, the position moved on a hit), in the same order as
+    // the one-at-a-time loop: by first entry, then second.
+    const std::uint32_t* items = cellItems.data();
+    const Edges* itemEdges = edges.data();
+    const std::size_t room = std::size_t(largestCell) + 4;
+    half.laneEdges.resize(4 * room);
+    half.laneWords.resize(room);
+    float* const minXs = half.laneEdges.data();
+    float* const minYs = minXs + room;
+    float* const negMaxXs = minYs + room;
+    float* const negMaxYs = negMaxXs + room;
+    std::uint32_t* const words = half.laneWords.data();
+    const float inf = std::numeric_limits<float>::infinity();
+    const __m128i indexMask = _mm_set1_epi32(int(kItemIndexMask));
+    std::size_t found = 0;
+    const __m128 signs = _mm_set1_ps(-0.f);
+    auto testCell = [&](std::uint32_t begin, std::uint32_t end)
+    {
+        const std::uint32_t n = end - begin;
+        if (n < kFourAtATimeFrom)
+        {
+            // A cell of a few boxes: each pair on its own, straight from the per-item edges
+            // (copying them into columns would cost more than the few tests).
+            for (std::uint32_t p = begin; p + 1 < end; ++p)
+            {
+                const std::uint32_t a = items[p];
+                const __m128 negated =
+                    _mm_xor_ps(_mm_load_ps(&itemEdges[a & kItemIndexMask].minX), signs);
+                const __m128 query = _mm_shuffle_ps(negated, negated, _MM_SHUFFLE(1, 0, 3, 2));
+                for (std::uint32_t q = p + 1; q < end; ++q)
+                {
+                    const std::uint32_t b = items[q];
+                    const bool overlap =
+                        _mm_movemask_ps(_mm_cmplt_ps(
+                            _mm_load_ps(&itemEdges[b & kItemIndexMask].minX), query)) == 0xF;
+                    const bool reportHere = ((a | b) & kBothFlags) == kBothFlags;
+                    out[found] = {a & kItemIndexMask, b & kItemIndexMask};
+                    found += reportHere & overlap;
+                }
+            }
+            return;
+        }
+        for (std::uint32_t j = 0; j < n; ++j)
+        {
+            const std::uint32_t word = items[begin + j];
+            const Edges& box = itemEdges[word & kItemIndexMask];
+            minXs[j] = box.minX;
+            minYs[j] = box.minY;
+            negMaxXs[j] = box.negMaxX;
+            negMaxYs[j] = box.negMaxY;
+            words[j] = word;
+        }
+        for (std::uint32_t j = n; j < n + 3; ++j)
+        {
+            minXs[j] = inf; // inf < x is false for every x: no pair with a pad
+            words[j] = 0;
+        }
+        for (std::uint32_t p = 0; p + 1 < n; ++p)
+        {
+            // Box p's query (maxX, maxY, -minX, -minY), each in all four lanes (negated-max
+            // edges: negating is exact, so the same answer as boxVsBox).
+            const __m128 maxX = _mm_set1_ps(-negMaxXs[p]);
+            const __m128 maxY = _mm_set1_ps(-negMaxYs[p]);
+            const __m128 negMinX = _mm_set1_ps(-minXs[p]);
+            const __m128 negMinY = _mm_set1_ps(-minYs[p]);
+            const std::uint32_t a = words[p];
+            // Report-once: ((a | b) & both) == both is (b & needs) == needs.
+            const __m128i needs = _mm_set1_epi32(int(kBothFlags & ~a));
+            const __m128i first = _mm_set1_epi32(int(a & kItemIndexMask));
+            for (std::uint32_t q = p + 1; q < n; q += 4)
+            {
+                const __m128 onX = _mm_and_ps(_mm_cmplt_ps(_mm_loadu_ps(minXs + q), maxX),
+                                              _mm_cmplt_ps(_mm_loadu_ps(negMaxXs + q), negMinX));
+                const __m128 onY = _mm_and_ps(_mm_cmplt_ps(_mm_loadu_ps(minYs + q), maxY),
+                                              _mm_cmplt_ps(_mm_loadu_ps(negMaxYs + q), negMinY));
+                const __m128i others = _mm_loadu_si128(reinterpret_cast<const __m128i*>(words + q));
+                const __m128i here = _mm_cmpeq_epi32(_mm_and_si128(others, needs), needs);
+                const int hits =
+                    _mm_movemask_ps(_mm_and_ps(_mm_and_ps(onX, onY), _mm_castsi128_ps(here)));
+                // (first, second) of the four pairs, two per register, as Pair lays them out.
+                const __m128i seconds = _mm_and_si128(others, indexMask);
+                const __m128i low = _mm_unpacklo_epi32(first, seconds);
+                const __m128i high = _mm_unpackhi_epi32(first, seconds);
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(out + found), low);
+                found += std::size_t(hits & 1);
+                _mm_storeh_pd(reinterpret_cast<double*>(out + found), _mm_castsi128_pd(low));
+                found += std::size_t((hits >> 1) & 1);
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(out + found), high);
+                found += std::size_t((hits >> 2) & 1);
+                _mm_storeh_pd(reinterpret_cast<double*>(out + found), _mm_castsi128_pd(high));
+                found += std::size_t(hits >> 3);
+            }
+        }
+    };
+    forEachBusyCell(start.data(), items, itemEdges, kItemIndexMask, half.firstCell, half.endCell,
+                    testCell);
+    return found;
+}
+#endif
 
 void GridBroadphase::testCells(Half& half)
 {
@@ -812,7 +881,6 @@ void GridBroadphase::testCells(Half& half)
         WideCellTest test;
         test.start = start.data();
         test.items = cellItems.data();
-        test.cellEdges = slimEntries ? nullptr : &cellEdges.data()->minX;
         test.itemEdges = &edges.data()->minX;
         half.gathered.resize(std::size_t(largestCell) + 1); // + 1: the pair loop reads one past
         test.gathered = &half.gathered.data()->minX;
@@ -829,13 +897,11 @@ void GridBroadphase::testCells(Half& half)
 #if defined(HITBOX_GRID_SSE)
     if (gridSettings.simd)
     {
-        half.foundCount = slimEntries ? testCellRange<SsePairTest, true>(half, out)
-                                      : testCellRange<SsePairTest, false>(half, out);
+        half.foundCount = testCellRangeFourWide(half, out);
         return;
     }
 #endif
-    half.foundCount = slimEntries ? testCellRange<PlainPairTest, true>(half, out)
-                                  : testCellRange<PlainPairTest, false>(half, out);
+    half.foundCount = testCellRangePlain(half, out);
 }
 
 void GridBroadphase::gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
@@ -920,12 +986,8 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
         hasShape = true;
         extra += runHalves(twoThreads, [this](int h) { countCells(halves[h]); });
     }
-    slimEntries = count >= gridSettings.slimEntriesFromItems;
     startCells();
-    if (slimEntries)
-        extra += runHalves(twoThreads, [this](int h) { fillItemWords(halves[h]); });
-    else
-        extra += runHalves(twoThreads, [this](int h) { fillCells(halves[h]); });
+    extra += runHalves(twoThreads, [this](int h) { fillCells(halves[h]); });
     extra += runHalves(twoThreads, [this](int h) { testCells(halves[h]); });
     gatherPairs(items, pairs);
     workerExtraSeconds = extra;

@@ -46,12 +46,6 @@ enum class PairOrder
 // boxes takes about 0.3 ms, starting a thread tens of microseconds): one thread is used.
 constexpr std::size_t kGridTwoThreadsFromItems = 20000;
 
-// From this many boxes the cells list only each box's 4-byte item word, and the tests fetch
-// the box's edges from the per-item array ("Slim entries" in the .cpp): written in scattered
-// places, 4 bytes a box stay in the core's nearest caches where 20 do not. Measured: 5 %
-// faster at 10,000 boxes, 25 % at 100,000, 2 % slower at 1,000 (docs/performance.md).
-constexpr std::size_t kGridSlimEntriesFromItems = 5000;
-
 struct GridSettings
 {
     float cellSize = 0.f; // <= 0: gridCellSizeFor(the items' average side), every frame
@@ -63,7 +57,6 @@ struct GridSettings
     // true: the SSE steps where the compiler offers SSE (x86-64); false: the plain C++ steps
     // every other machine (ARM, 32-bit x86) runs, so tests check both give the same pairs.
     bool simd = true;
-    std::size_t slimEntriesFromItems = kGridSlimEntriesFromItems; // tests lower it to 0
     // With simd: true compares two entries per instruction (AVX) when the CPU has AVX (asked
     // at run time), false one (SSE). Off by default: measured 3-6 % slower on this workload
     // (docs/performance.md); kept, and tested, so the measurement can be repeated.
@@ -123,7 +116,11 @@ private:
         std::unique_ptr<Pair[]> found;          // foundRoom pairs; the first foundCount are real
         std::size_t foundRoom = 0;
         std::size_t foundCount = 0;
-        std::vector<Edges> gathered; // slim entries: the edges of the cell being tested
+        std::vector<Edges> gathered; // the edges of the cell being tested (plain C++ steps)
+        // Four at a time: the cell being tested as columns (minX, minY, -maxX, -maxY, item
+        // word), each column laneRoom long, so one box is tested against four in one step.
+        std::vector<float> laneEdges;
+        std::vector<std::uint32_t> laneWords;
     };
 
     struct CellFinder;
@@ -133,12 +130,13 @@ private:
     [[nodiscard]] bool keepsShape(const Shape& ideal, std::size_t count) const;
     void startCells();
     void fillCells(Half& half);
-    void fillItemWords(Half& half);
     void testCells(Half& half);
-    // The pairs found in half's cells, written to `out`; PairTest: the SSE or the plain test.
-    // Slim: the entries hold item words only (fillItemWords); the edges are fetched per cell.
-    template <typename PairTest, bool Slim>
-    [[nodiscard]] std::size_t testCellRange(Half& half, Pair* out) const;
+    // The pairs found in half's cells, written to `out`, one pair test at a time in plain C++
+    // (machines without SSE, and GridSettings::simd = false).
+    [[nodiscard]] std::size_t testCellRangePlain(Half& half, Pair* out) const;
+    // The same pairs in the same order, one box against four others per SSE step (the .cpp's
+    // "Four at a time"); only where SSE is compiled.
+    [[nodiscard]] std::size_t testCellRangeFourWide(Half& half, Pair* out) const;
     void gatherPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs);
     void sortPairs(std::vector<Pair>& pairs);
 
@@ -158,16 +156,14 @@ private:
     Half halves[2];
     std::size_t itemCount = 0;
     bool hasAvx = false;                          // the CPU runs AVX (eightWide)
-    bool slimEntries = false;                     // this frame: see kGridSlimEntriesFromItems
     std::uint32_t largestCell = 0;                // the most entries in one cell this frame
     const BroadphaseItem* currentItems = nullptr; // during findPairs
     std::vector<Edges> edges;                     // per item
     std::vector<std::uint32_t> cellWords;         // per item: its cells, packed (see .cpp)
     std::vector<std::uint32_t> start;             // cell c's entries are [start[c], start[c + 1])
-    // The entries, cell after cell: each box's edges and its item word (index and flags) in
-    // two arrays, so an entry's edges are 16 aligned bytes. The last two entries are spares
-    // the two fill threads write to instead of branching (forEachCell in the .cpp).
-    std::vector<Edges> cellEdges;
+    // The entries, cell after cell: each box's item word (index and flags; its edges are in
+    // `edges`). The last two entries are spares the two fill threads write to instead of
+    // branching (forEachCell in the .cpp).
     std::vector<std::uint32_t> cellItems;
     std::vector<Pair> cellOrderPairs;     // PairOrder::Sorted: the pairs before sorting
     std::vector<std::uint32_t> pairStart; // counting sort of the pairs by `first`
