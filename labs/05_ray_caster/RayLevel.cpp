@@ -344,19 +344,7 @@ std::string RayLevel::describeState() const
            ", ray " + (ray.hit ? "hits box " + std::to_string(ray.boxIndex) : "hits nothing");
 }
 
-namespace
-{
-
-struct RaySnapshot : hitbox::LevelState
-{
-    RaySnapshot(const RayLevel& level, std::size_t held) : level(level), held(held) {}
-    std::size_t bytes() const override { return held; }
-
-    RayLevel level;
-    std::size_t held;
-};
-
-} // namespace
+using RaySnapshot = hitbox::WholeLevelCopy<RayLevel>; // Level.h: a copy of the whole level
 
 std::unique_ptr<hitbox::LevelState> RayLevel::saveState() const
 {

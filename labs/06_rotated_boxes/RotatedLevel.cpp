@@ -470,19 +470,7 @@ std::string RotatedLevel::describeState() const
            (frameworkSat ? " (framework's SAT)" : "");
 }
 
-namespace
-{
-
-struct RotatedSnapshot : hitbox::LevelState
-{
-    RotatedSnapshot(const RotatedLevel& level, std::size_t held) : level(level), held(held) {}
-    std::size_t bytes() const override { return held; }
-
-    RotatedLevel level;
-    std::size_t held;
-};
-
-} // namespace
+using RotatedSnapshot = hitbox::WholeLevelCopy<RotatedLevel>; // Level.h: a copy of the whole level
 
 std::unique_ptr<hitbox::LevelState> RotatedLevel::saveState() const
 {

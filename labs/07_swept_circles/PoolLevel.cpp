@@ -409,19 +409,7 @@ std::string PoolLevel::describeState() const
            " moving";
 }
 
-namespace
-{
-
-struct PoolSnapshot : hitbox::LevelState
-{
-    PoolSnapshot(const PoolLevel& level, std::size_t held) : level(level), held(held) {}
-    std::size_t bytes() const override { return held; }
-
-    PoolLevel level;
-    std::size_t held;
-};
-
-} // namespace
+using PoolSnapshot = hitbox::WholeLevelCopy<PoolLevel>; // Level.h: a copy of the whole level
 
 std::unique_ptr<hitbox::LevelState> PoolLevel::saveState() const
 {

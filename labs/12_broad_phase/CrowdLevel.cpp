@@ -136,19 +136,7 @@ const PairSearch& CrowdLevel::getLastSearch() const
     return lastSearch;
 }
 
-namespace
-{
-
-struct CrowdSnapshot : hitbox::LevelState
-{
-    CrowdSnapshot(const CrowdLevel& level, std::size_t held) : level(level), held(held) {}
-    std::size_t bytes() const override { return held; }
-
-    CrowdLevel level;
-    std::size_t held;
-};
-
-} // namespace
+using CrowdSnapshot = hitbox::WholeLevelCopy<CrowdLevel>; // Level.h: a copy of the whole level
 
 std::unique_ptr<hitbox::LevelState> CrowdLevel::saveState() const
 {

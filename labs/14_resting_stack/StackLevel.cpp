@@ -196,19 +196,7 @@ int StackLevel::getPasses(int stack) const
     return passes[stack];
 }
 
-namespace
-{
-
-struct StackSnapshot : hitbox::LevelState
-{
-    StackSnapshot(const StackLevel& level, std::size_t held) : level(level), held(held) {}
-    std::size_t bytes() const override { return held; }
-
-    StackLevel level;
-    std::size_t held;
-};
-
-} // namespace
+using StackSnapshot = hitbox::WholeLevelCopy<StackLevel>; // Level.h: a copy of the whole level
 
 std::unique_ptr<hitbox::LevelState> StackLevel::saveState() const
 {

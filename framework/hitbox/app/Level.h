@@ -42,6 +42,19 @@ struct LevelState
     [[nodiscard]] virtual std::size_t bytes() const = 0;
 };
 
+// "Copy the whole level": the snapshot of a level whose state is all plain values (vectors,
+// numbers, no pointers into itself), so a copy of it is the state. saveState returns
+// std::make_unique<WholeLevelCopy<MyLevel>>(*this, bytes); restoreState copies `level` back.
+template <typename LevelType>
+struct WholeLevelCopy : LevelState
+{
+    WholeLevelCopy(const LevelType& level, std::size_t held) : level(level), held(held) {}
+    [[nodiscard]] std::size_t bytes() const override { return held; }
+
+    LevelType level;
+    std::size_t held; // what the copy holds, counted by the level (its vectors' elements too)
+};
+
 class Level
 {
 public:
