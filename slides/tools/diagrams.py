@@ -37,6 +37,9 @@ class Svg:
             'markerHeight': '6', 'orient': 'auto-start-reverse'})
         # context-stroke: the arrowhead takes each line's own colour (SVG 2).
         ET.SubElement(marker, 'path', {'d': 'M0,0 L10,5 L0,10 z', 'fill': 'context-stroke'})
+        # ElementTree writes a comment as given, and XML forbids '--' inside one.
+        if '--' in comment or comment.endswith('-'):
+            raise ValueError(f'diagrams.py: an SVG comment cannot hold "--": {comment}')
         self.root.append(ET.Comment(f' {comment} '))
 
     def add(self, tag, text=None, **attrs):
@@ -75,10 +78,14 @@ class Svg:
         """Writes FIGURES/name whole or not at all (a temporary file renamed over it)."""
         ET.indent(self.root, space='')
         path = os.path.join(FIGURES, name)
-        with open(path + '.tmp', 'w', encoding='utf-8') as out:
-            ET.ElementTree(self.root).write(out, encoding='unicode')
-            out.write('\n')
-        os.replace(path + '.tmp', path)
+        try:
+            with open(path + '.tmp', 'w', encoding='utf-8') as out:
+                ET.ElementTree(self.root).write(out, encoding='unicode')
+                out.write('\n')
+            os.replace(path + '.tmp', path)
+        finally:
+            if os.path.exists(path + '.tmp'):
+                os.remove(path + '.tmp')
 
 
 def rect(cx, cy, w, h, ang):
@@ -97,7 +104,8 @@ def bbox(p):
 
 def sat_edge_normal():
     """Two turned boxes whose AABBs overlap, and their shadows on one box's edge normal."""
-    svg = Svg(620, 560, 'Two turned boxes whose AABBs overlap, separated on the normal of one of their edges.')
+    svg = Svg(620, 560,
+              'Two turned boxes whose AABBs overlap, separated on the normal of one of their edges.')
     a = rect(200, 170, 230, 60, math.radians(40))
     b = rect(330, 170, 230, 60, math.radians(40))
     ba, bb = bbox(a), bbox(b)
@@ -145,7 +153,8 @@ def sat_edge_normal():
 
 def minkowski_rounded():
     """A circle cast at a box, drawn as its centre cast at the box grown by r."""
-    svg = Svg(620, 520, 'A moving circle against a box = its centre (a point) against the box grown by r: a rounded box.')
+    svg = Svg(620, 520,
+              'A moving circle against a box = its centre (a point) against the box grown by r: a rounded box.')
     bx, by, bw, bh, r = 260, 170, 220, 140, 60
     svg.box(bx - r, by - r, bw + 2 * r, bh + 2 * r, '#d07a1f', rx=r, ry=r, fill_opacity=0.12,
             stroke='#d07a1f', stroke_width=3, stroke_dasharray='10 6')
@@ -166,7 +175,8 @@ def minkowski_rounded():
     hit = (start[0] + d[0] * t, start[1] + d[1] * t)
     svg.circle(start[0], start[1], r, '#2f6fd0', fill_opacity=0.15, stroke='#2f6fd0', stroke_width=3)
     svg.circle(start[0], start[1], 6, '#2f6fd0')
-    svg.line(start, (start[0] + d[0] * (t + 90), start[1] + d[1] * (t + 90)), '#2f6fd0', 3, '10 6', arrow=True)
+    svg.line(start, (start[0] + d[0] * (t + 90), start[1] + d[1] * (t + 90)), '#2f6fd0', 3, '10 6',
+             arrow=True)
     svg.circle(hit[0], hit[1], r, 'none', 1, stroke='#2f6fd0', stroke_width=3)
     svg.circle(hit[0], hit[1], 8, '#c0392b', 1)
     svg.text((hit[0] - 40, hit[1] + 95), 'first touch: t', '#c0392b')
@@ -177,7 +187,8 @@ def minkowski_rounded():
 
 def swept_false_positive():
     """The bounds of a diagonal move's start and end cover a target the path misses."""
-    svg = Svg(620, 520, 'The box around the start and end of a diagonal move covers a target the path never touches.')
+    svg = Svg(620, 520,
+              'The box around the start and end of a diagonal move covers a target the path never touches.')
     s0, e0, w = (60, 330), (420, 90), 70
     svg.box(s0[0], e0[1], e0[0] - s0[0] + w, s0[1] - e0[1] + w, '#c0392b', fill_opacity=0.08,
             stroke='#c0392b', stroke_width=3, stroke_dasharray='10 6')
@@ -185,7 +196,8 @@ def swept_false_positive():
               (s0[0] + w, s0[1] + w), (s0[0], s0[1] + w)], '#2f6fd0', 0.12, 2)
     svg.box(s0[0], s0[1], w, w, '#2f6fd0', fill_opacity=0.4, stroke='#2f6fd0', stroke_width=4)
     svg.box(e0[0], e0[1], w, w, 'none', stroke='#2f6fd0', stroke_width=4, stroke_dasharray='8 6')
-    svg.line((s0[0] + w / 2, s0[1] + w / 2), (e0[0] + w / 2 - 6, e0[1] + w / 2 + 4), '#2f6fd0', 3, arrow=True)
+    svg.line((s0[0] + w / 2, s0[1] + w / 2), (e0[0] + w / 2 - 6, e0[1] + w / 2 + 4), '#2f6fd0', 3,
+             arrow=True)
     svg.box(385, 290, 90, 90, '#d07a1f', fill_opacity=0.4, stroke='#d07a1f', stroke_width=4)
     svg.text((385, 430), 'target', '#b35900')
     svg.text((20, 45), 'dashed red: the swept bounds', '#c0392b')
