@@ -11,6 +11,8 @@ standard library only; Linux, macOS and Windows).
     python3 scripts/lab.py exercise IN OUT [--solved 1,2]   write a solution file's exercise version
     python3 scripts/lab.py check-exercises | check-handout     the course's checks of its labs (labchecks.py)
     python3 scripts/lab.py check WHAT ARG...   CI: check the grader's output (check-grading.sh)
+    python3 scripts/lab.py check-course-labs [--screenshots DIR] [FOLDER...]   old course lab folders
+                                               build on Hitbox and run (check-course-labs.sh; courselabs.py)
     python3 scripts/lab.py handout OUT         write the student handout (instructor; needs PyYAML)
 
 Exit status: 0 success, 1 a test failed (grade) or the mark is missing (mark), 2 bad input.
@@ -130,6 +132,11 @@ def command_check_handout(options):
     return labchecks.check_handout(options)
 
 
+def command_check_course_labs(options):
+    from labtool import courselabs
+    return courselabs.run(options.words)
+
+
 def command_handout(options):
     from labtool import handout
     return handout.run(options)
@@ -234,6 +241,12 @@ def main(argv=None):
     handout.add_argument("--out", default=str(lablist.REPO / "build" / "handout-check"),
                          help="where to write the handout (default build/handout-check; replaced)")
     handout.set_defaults(run=command_check_handout)
+    # Its words are read as check-course-labs.sh always read them (a folder may start with "-"),
+    # so argparse treats none of them as an option.
+    course = commands.add_parser("check-course-labs", add_help=False, prefix_chars="+",
+                                 help="old course lab folders build on Hitbox and run (-h: how)")
+    course.add_argument("words", nargs="*", metavar="[--screenshots DIR] [FOLDER...]")
+    course.set_defaults(run=command_check_course_labs)
     handout = commands.add_parser("handout", help="write the student handout into OUT (new or empty)")
     handout.add_argument("out", metavar="OUT", help="a relative OUT is taken from the folder you are in")
     handout.set_defaults(run=command_handout)

@@ -359,7 +359,7 @@ function(hitbox_add_course_lab lab_folder)
                    "${compiled_from} -> target course_lab, runs in ${run_folder}")
 endfunction()
 
-# Script mode, for scripts/check-course-labs.sh: prints a folder's generation (2019 or 2025).
+# Script mode, for check-course-labs (scripts/labtool/courselabs.py): prints a folder's generation (2019 or 2025).
 #   cmake -DHITBOX_PRINT_GENERATION_OF=<folder> -P HitboxCourseLab.cmake
 if(CMAKE_SCRIPT_MODE_FILE AND HITBOX_PRINT_GENERATION_OF)
     hitbox_find_course_lab_generation("${HITBOX_PRINT_GENERATION_OF}")

@@ -40,6 +40,7 @@ KEEP = (
     ("scripts/grade.sh", True), ("scripts/lab-tests.sh", True), ("scripts/install-deps.sh", True),
     ("scripts/labtool/tricks.py", False),  # (check-grading's class of tricks)
     ("scripts/labtool/handout.py", False),  # (this writer: the instructor's)
+    ("scripts/labtool/courselab*.py", False),  # (check-course-labs: needs tests/course/, left out)
     ("scripts/lab.py", True), ("scripts/labtool/*.py", True),  # the lab tool: self-check, Classroom
     ("labs/CMakeLists.txt", True), ("labs/[0-9][0-9]_*/*", True),
 )
