@@ -23,7 +23,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
-from labtool.cmakeapi import link_command  # noqa: E402
+from labtool.cmakeapi import LinkError, link_command  # noqa: E402
 # Variants: (lab folder, [(file, the line's start, its new value)...]), what each sheet says to
 # play with. Lab 11's sheet suggests ballSpeed = 6000; the slow ball and the smaller court are
 # the other way a student plays with Court.h "as you like".
@@ -99,7 +99,11 @@ def main():
         subprocess.run(["cmake", "--build", str(build), "--target", f"{lab}_tests", "--parallel", "2"],
                        check=True, stdout=subprocess.DEVNULL)
         with tempfile.TemporaryDirectory(prefix="sheet-numbers-") as scratch:
-            ok, output = check_lab(build, folder, lab, changes, Path(scratch))
+            try:
+                ok, output = check_lab(build, folder, lab, changes, Path(scratch))
+            except LinkError as error:
+                print(f"check-sheet-numbers: {error}", file=sys.stderr)
+                return 2
         described = ", ".join(f"{start.split()[-2] if start.endswith('=') else start.split()[-1]} {value}"
                               for _, start, value in changes)
         print(f"check-sheet-numbers: {folder} with {described} {'every test passes' if ok else 'FAILS'}")

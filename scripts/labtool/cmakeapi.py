@@ -49,7 +49,7 @@ class LinkCommand:
             if not word.startswith("-") and self.path(word) == archive:
                 libraries = (*self.libraries[:index], *replacement, *self.libraries[index + 1:])
                 return replace(self, libraries=libraries)
-        raise LinkError(f"the link command of the test program does not name {archive}")
+        raise LinkError(f"the link command does not name {archive}")
 
 
 def link_command(build, target):
@@ -130,6 +130,8 @@ def objects_of(build, model, directory, source_root):
     outputs = {}
     for command in commands:
         words = command.get("arguments") or shlex.split(command["command"])
+        if "-o" not in words:
+            continue  # (cl.exe names its object with /Fo: the tools relink GCC and Clang objects)
         output = Path(command["directory"]) / words[words.index("-o") + 1]
         if f"{model['name']}.dir" in output.parts:
             outputs[Path(command["directory"], command["file"]).resolve()] = output
