@@ -49,10 +49,12 @@ import sys
 import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
+from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "scripts"))
+from labtool.cmakeapi import LinkError, link_command  # noqa: E402
 from labtool.markers import SOURCE_SUFFIXES, MarkerError, task_of_test, task_regions  # noqa: E402
 from labtool.mutate import Mutant, mutants_of_region  # noqa: E402
 
@@ -179,22 +181,17 @@ def option_value(words, option):
 
 
 class LabRig:
-    """What grading one lab's mutants needs: its test program, link line and test names."""
+    """What grading one lab's mutants needs: its test program, link command and test names."""
 
     def __init__(self, build, folder, lab, timeout):
         self.build, self.folder, self.lab, self.timeout = build, folder, lab, timeout
-        self.test_dir = build / "tests/labs" / folder
-        link_file = self.test_dir / f"CMakeFiles/{lab}_tests.dir/link.txt"
-        if not link_file.exists():
-            raise Refusal(f"{link_file} is missing: check-mutants needs a Makefile build "
-                          f"(cmake --preset debug) with {lab}_tests built")
-        self.link = shlex.split(link_file.read_text(encoding="utf-8").strip())
-        self.archive = (build / "labs" / folder / f"lib{lab}_level.a").resolve()
-        self.archive_index = next((i for i, word in enumerate(self.link)
-                                   if (self.test_dir / word).resolve() == self.archive), None)
-        if self.archive_index is None:
-            raise Refusal(f"the link line of {lab}_tests does not name {self.archive}")
-        self.program = self.test_dir / f"{lab}_tests"
+        try:
+            self.link = link_command(build, f"{lab}_tests")
+            self.archive = (build / "labs" / folder / f"lib{lab}_level.a").resolve()
+            self.link.swap_library(self.archive, [])  # (refused here if the archive is not linked)
+        except LinkError as error:
+            raise Refusal(f"{lab}_tests: {error}") from error
+        self.program = self.link.path(self.link.output)
         listing = run([str(self.program), "--gtest_list_tests"], timeout=60).stdout
         self.tests, suite = [], ""
         for line in listing.splitlines():
@@ -274,11 +271,9 @@ def grade_mutant(rig, mutant, entry, stripped_archive, scratch_root):
         try:
             if run(words, timeout=120, cwd=entry["directory"]).returncode != 0:
                 return "did-not-compile", {}
-            link = list(rig.link)
-            link[rig.archive_index:rig.archive_index + 1] = [str(obj), str(stripped_archive)]
             program = scratch / "tests"
-            link[link.index("-o") + 1] = str(program)
-            if run(link, timeout=120, cwd=rig.test_dir).returncode != 0:
+            link = replace(rig.link.swap_library(rig.archive, [str(obj), str(stripped_archive)]), output=str(program))
+            if run(link.words(), timeout=120, cwd=link.directory).returncode != 0:
                 return "did-not-compile", {}
         except subprocess.TimeoutExpired:
             return "did-not-compile", {}

@@ -5,7 +5,8 @@ that lab's solution and grading tests with them, and run every test: all must st
 
 The lab's sources and tests are copied to a scratch folder with the numbers changed there,
 compiled with the commands in compile_commands.json (the lab's folder replaced by the copy)
-and linked with the lab's own link line; the source tree is never written.
+and linked with the lab's own link command (read from CMake's file API by scripts/labtool/
+cmakeapi.py); the source tree is never written.
 
 Usage: scripts/check-sheet-numbers.py [--build build/debug]     exit 1 naming what failed
 """
@@ -17,9 +18,12 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from dataclasses import replace
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "scripts"))
+from labtool.cmakeapi import LinkError, link_command  # noqa: E402
 # Variants: (lab folder, [(file, the line's start, its new value)...]), what each sheet says to
 # play with. Lab 11's sheet suggests ballSpeed = 6000; the slow ball and the smaller court are
 # the other way a student plays with Court.h "as you like".
@@ -69,16 +73,13 @@ def check_lab(build, folder, lab, changes, scratch):
         words[words.index("-o") + 1] = str(out)
         subprocess.run(words, cwd=entry["directory"], check=True)
         (objects if into_lab else test_objects).append(str(out))
-    link_dir = build / "tests/labs" / folder
-    link = shlex.split((link_dir / f"CMakeFiles/{lab}_tests.dir/link.txt").read_text(encoding="utf-8"))
-    archive = (build / "labs" / folder / f"lib{lab}_level.a").resolve()
-    own_tests = [w for w in link if w.endswith(".o")]
-    link = [w for w in link if w not in own_tests]
-    at = next(i for i, w in enumerate(link) if (link_dir / w).resolve() == archive)
-    link[at:at + 1] = test_objects + objects
+    # The test program's link command with the objects compiled here in place of its own
+    # objects and of the lab's archive.
+    link = link_command(build, f"{lab}_tests")
+    archive = build / "labs" / folder / f"lib{lab}_level.a"
     program = scratch / "grading-tests"
-    link[link.index("-o") + 1] = str(program)
-    subprocess.run(link, cwd=link_dir, check=True)
+    link = replace(link.swap_library(archive, test_objects + objects), objects=(), output=str(program))
+    subprocess.run(link.words(), cwd=link.directory, check=True)
     result = subprocess.run([str(program), "--gtest_brief=1", "--gtest_color=no"], capture_output=True,
                             text=True, timeout=300)
     return result.returncode == 0, result.stdout
@@ -98,7 +99,11 @@ def main():
         subprocess.run(["cmake", "--build", str(build), "--target", f"{lab}_tests", "--parallel", "2"],
                        check=True, stdout=subprocess.DEVNULL)
         with tempfile.TemporaryDirectory(prefix="sheet-numbers-") as scratch:
-            ok, output = check_lab(build, folder, lab, changes, Path(scratch))
+            try:
+                ok, output = check_lab(build, folder, lab, changes, Path(scratch))
+            except LinkError as error:
+                print(f"check-sheet-numbers: {error}", file=sys.stderr)
+                return 2
         described = ", ".join(f"{start.split()[-2] if start.endswith('=') else start.split()[-1]} {value}"
                               for _, start, value in changes)
         print(f"check-sheet-numbers: {folder} with {described} {'every test passes' if ok else 'FAILS'}")

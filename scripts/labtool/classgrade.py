@@ -26,7 +26,7 @@ import traceback
 import zipfile  # (BadZipFile: a broken upload)
 from pathlib import Path
 
-from . import engine, inspect, limits, procs, reports, sandbox
+from . import cmakeapi, engine, inspect, limits, procs, reports, sandbox
 from .submission import Refused, find, submission_name, unpack
 from .labs import REPO, BadInput, all_labs, find_lab, is_handout
 
@@ -80,10 +80,9 @@ def prepare(build_dir, labs, jobs):
         lab.hidden = lab.hidden_tests()
         lab.compile = [c for c in commands if f"CMakeFiles/{lab.name}_level.dir/" in c["command"]
                        or f"CMakeFiles/{lab.name}_tests.dir/" in c["command"]]
-        lab.link_dir = program.parent
-        lab.link = (program.parent / "CMakeFiles" / f"{lab.name}_tests.dir" / "link.txt").read_text().strip()
+        lab.link = cmakeapi.link_command(build_dir, f"{lab.name}_tests")
         lab.level_archive = f"lib{lab.name}_level.a"
-        archives = [lab.link_dir / a for a in shlex.split(lab.link)[1:]
+        archives = [lab.link.path(a) for a in lab.link.libraries
                     if a.endswith(".a") and not a.endswith(lab.level_archive)]
         lab.harness = inspect.harness_symbols(tuple(str(a) for a in archives if a.is_file()))
     return build_dir, launcher
@@ -201,18 +200,12 @@ def grade_lab(lab, files, root, work, used, launcher, shared_dir, slot, deadline
         return all_failed(f"refused: {refused}", notes)
     program = work / "run" / f"{lab.name}_tests"
     program.parent.mkdir(parents=True, exist_ok=True)
-    linked = [shlex.split(lab.link)[0], *FAST_LINKER, *test_objects]
-    link_arguments = shlex.split(lab.link)[1:]
-    for index, argument in enumerate(link_arguments):
-        if argument.endswith(lab.level_archive):
-            linked += level_objects
-        elif argument.startswith("CMakeFiles/") and argument.endswith(".o"):
-            continue
-        elif index > 0 and link_arguments[index - 1] == "-o":
-            linked.append(str(program))
-        else:
-            linked.append(argument)
-    outcome = procs.run_limited(linked, work / "link.log", limits.LINK_SECONDS, cwd=lab.link_dir)
+    # The instructor's link command with the objects built here: the test objects first (as
+    # before the flags), the lab's objects where its archive was, the program in the scratch.
+    linked = [lab.link.compiler, *FAST_LINKER, *test_objects, *lab.link.flags, "-o", str(program)]
+    for library in lab.link.libraries:
+        linked += level_objects if library.endswith(lab.level_archive) else [library]
+    outcome = procs.run_limited(linked, work / "link.log", limits.LINK_SECONDS, cwd=lab.link.directory)
     log.append(outcome.output)
     if outcome.status != 0 or outcome.timed_out:
         return failed_build(lab, "did not build", log, lab_copy, notes)

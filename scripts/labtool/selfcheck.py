@@ -18,7 +18,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from . import engine, inspect, limits, procs, reports
+from . import cmakeapi, engine, inspect, limits, procs, reports
 from .labs import REPO, BadInput, all_labs, find_lab, is_handout
 
 
@@ -94,8 +94,9 @@ BINUTILS = ("nm", "objdump", "c++filt")
 
 def object_check(lab, build, target):
     """(why the lab is refused or "", a note): inspect.py on the student's objects in `build`.
-    The harness is what the test program links besides them (its link.txt; without one, the
-    framework's archives). No binutils (Windows with Visual Studio): nothing refused, a note."""
+    The harness is what the test program links besides them (its link command from CMake's
+    file API, cmakeapi.py; where CMake cannot say, the framework's archives). No binutils
+    (Windows with Visual Studio): nothing refused, a note."""
     if os.name == "nt":
         return "", ("the object check reads GNU object files (nm, objdump): not done on Windows "
                     "(class grading does it)")
@@ -116,12 +117,11 @@ def object_check(lab, build, target):
             others.append(str(obj))
     test_dir = build / "tests" / lab.folder / "CMakeFiles" / f"{target}.dir"
     others += [str(o) for o in test_dir.rglob("*.o")]
-    link = test_dir / "link.txt"
-    if link.is_file():
-        words = link.read_text(encoding="utf-8").split()
-        archives = [(test_dir.parent.parent / w).resolve() for w in words if w.endswith(".a")]
+    try:
+        link = cmakeapi.link_command(build, target)
+        archives = [link.path(w) for w in link.libraries if w.endswith(".a")]
         others += [str(a) for a in archives if a.is_file() and not a.name.startswith(f"lib{lab.name}")]
-    else:
+    except cmakeapi.LinkError:
         others += [str(a) for a in sorted((build / "framework").glob("*.a"))]
     if not student:
         return "", f"no object files of {', '.join(sorted(own))} in {level_dir}: the object check was not done"
