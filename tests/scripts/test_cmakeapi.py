@@ -163,7 +163,10 @@ class AgainstRealCMake(unittest.TestCase):
         build = self.configure("Unix Makefiles")
         link_txt = (build / "CMakeFiles/tiny_tests.dir/link.txt").read_text(encoding="utf-8")
         link = cmakeapi.link_command(build, "tiny_tests")  # (re-runs cmake: no query was written)
-        self.assertEqual(link.words(), shlex.split(link_txt))
+        # CMake 3.27 and newer add the generator's own bookkeeping to link.txt (the linker
+        # writes link.d, which make reads to know when to relink): not part of what is linked.
+        linked = [word for word in shlex.split(link_txt) if not word.startswith("-Wl,--dependency-file=")]
+        self.assertEqual(link.words(), linked)
         self.assertEqual(link.directory, build)
 
     @unittest.skipUnless(shutil.which("ninja"), "needs Ninja")
