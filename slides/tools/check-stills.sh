@@ -7,11 +7,9 @@
 set -euo pipefail
 [[ $# -lt 1 ]] && { echo "usage: $0 NAME.apng..." >&2; exit 2; }
 
-# size FILE: "W H"
+# size FILE: "W H"; md5s INPUT [FILTER]: the md5 of every decoded frame (as rgb24), one a line.
 size() { ffprobe -v error -select_streams v:0 -show_entries stream=width,height -of csv=p=0 "$1" | tr , ' '; }
-# md5s INPUT [FILTER]: the md5 of every decoded frame (as rgb24), one a line.
 md5s() { ffmpeg -nostdin -loglevel error -i "$1" ${2:+-vf "$2"} -pix_fmt rgb24 -f framemd5 - | awk '!/^#/ { print $NF }'; }
-
 problems=0
 bad() { echo "check-stills: $*" >&2; problems=$((problems + 1)); }
 for animation in "$@"; do
