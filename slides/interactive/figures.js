@@ -325,7 +325,8 @@
         const x = s.from.x + (s.to.x - s.from.x) * answer[1];
         const y = s.from.y + (s.to.y - s.from.y) * answer[1];
         svg += rect(x, y, w, h, `fill="${colours.hit}" fill-opacity="0.3" stroke="${colours.hit}" stroke-width="4"`);
-        svg += label(x + 8, y - 12, `t = ${format(answer[1])}`, `class="name small" fill="${colours.hit}"`);
+        // Above the box, ending at its right edge: clear of the wall it touches and of the box.
+        svg += label(x + w, y - 20, `t = ${format(answer[1])}`, `class="name small" text-anchor="end" fill="${colours.hit}"`);
       }
       svg += label(s.from.x + 8, s.from.y + h + 36, 'start', 'class="name small"');
       svg += label(s.to.x + 8, s.to.y + h + 36, 'end', 'class="name small"');

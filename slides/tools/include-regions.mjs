@@ -11,7 +11,7 @@
 //
 // Part of a region must name its key line: the excerpt has to contain that text, so an
 // excerpt cut before the line the slide is about fails the build (lines count in the region
-// as written, marker lines and lab starter code left out). Parts with a gap between them
+// as written, marker lines and lab starter code left out). Parts with code between them
 // are joined by a `// ...` line.
 // A region is marked in a source file by a line `// [slide:NAME]` and a line `// [/slide]`.
 // The include line becomes a fenced code block of the region: marker lines left out, the
@@ -415,7 +415,10 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
           return;
         }
         partList.push([first, last]);
-        if (previous && first > previous + 1) parts.push(null); // the gap
+        // The gap, marked `// ...` when it leaves out code: a gap of comments alone is not
+        // "code left out", and a reader would look for the missing statements.
+        const gap = code.slice(previous, first - 1);
+        if (previous && gap.some((l) => !/^\s*(\/\/.*)?$/.test(l))) parts.push(null);
         for (let l = first; l <= last; l++) parts.push(code[l - 1]);
         previous = last;
       }
