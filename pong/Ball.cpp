@@ -75,9 +75,9 @@ void Ball::collisionResponse(hitbox::GameObject* other)
     if (other == nullptr)
         bounceOffWall();
     else if (lastContact.normal.x != 0.f)
-        bounceOffPaddleFace(*other); // the front of the paddle: a proper return
+        bounceOffPaddleFace(*other); // its front: a proper return
     else
-        bounceOffPaddleEnd(*other); // the top or bottom end: knocked away, still in play
+        bounceOffPaddleEnd(*other); // an end: knocked away, in play
 }
 
 void Ball::bounceOffWall()

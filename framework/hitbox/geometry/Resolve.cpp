@@ -104,9 +104,10 @@ MoveResult moveBoxAndSlide(const Box& box, Vec2 velocity, float dt, const std::v
         if (candidates.empty())
             break;
         // [slide:resolve-time-order]
-        // 2. Nearest first (javidx9's sort by time): the floor under the box (t = 0) is
-        //    resolved before the next tile's corner, so the seam between tiles never stops
-        //    the box. At the same time, a face touched along its length goes before a corner.
+        // 2. Nearest first (javidx9's sort by time): the floor under the box
+        //    (t = 0) is resolved before the next tile's corner, so the seam
+        //    between tiles never stops the box. At the same time, a face
+        //    touched along its length goes before a corner.
         if (sortByTime)
             std::stable_sort(candidates.begin(), candidates.end(),
                              [](const Candidate& a, const Candidate& b) {
