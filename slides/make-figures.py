@@ -41,6 +41,7 @@ FONT_FILE = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 SLIDE_W, SLIDE_H = 1168, 520
 LABEL_PX = 28  # the smallest label size on the slide
 ZOOMS = (1, 2)  # an animation still's frames: drawn as they are, or each pixel doubled (check-stills.sh)
+GUTTER = 24  # white pixels between frames side by side: dark frames would otherwise read as one picture
 LOOP_H = os.path.join(HERE, "..", "framework", "hitbox", "app", "Loop.h")
 FFMPEG = ["ffmpeg", "-nostdin", "-loglevel", "error", "-y"]
 
@@ -125,7 +126,8 @@ def strip_layout(w, h, n):
             font = 40
             for _ in range(4):
                 band = round(font * 1.5)
-                width, height = (n * w * zoom, h * zoom + band) if layout == "h" else (w * zoom, n * (h * zoom + band))
+                width, height = ((n * w * zoom + (n - 1) * GUTTER, h * zoom + band) if layout == "h"
+                                 else (w * zoom, n * (h * zoom + band)))
                 scale = min(SLIDE_W / width, SLIDE_H / height, 1.0)
                 font = max(LABEL_PX, math.ceil(LABEL_PX / scale))
             if best is None or zoom * scale > best[0] + 0.01:
@@ -153,8 +155,10 @@ def strip(folder, still, log, steps):
         with open(label, "w", encoding="utf-8") as text:
             text.write(f"{i + 1}   t = {steps[pick] / steps_per_second():.2f} s")
         inputs += ["-i", os.path.join(folder, f"{pick:03d}.png")]
+        gutter = GUTTER if layout == "h" and i < len(picks) - 1 else 0
         graph += (f"[{i}:v]format=rgb24,scale={w}:{h}:flags=neighbor,pad={w}:{h + band}:0:{band}:white,drawtext=fontfile={FONT_FILE}:"
-                  f"textfile={label}:fontsize={font}:fontcolor=black:x=(w-text_w)/2:y=({band}-text_h)/2[p{i}];")
+                  f"textfile={label}:fontsize={font}:fontcolor=black:x=(w-text_w)/2:y=({band}-text_h)/2,"
+                  f"pad={w + gutter}:{h + band}:0:0:white[p{i}];")
         labels += f"[p{i}]"
     if len(picks) > 1:
         graph += labels + ("hstack" if layout == "h" else "vstack") + f"=inputs={len(picks)}[out]"

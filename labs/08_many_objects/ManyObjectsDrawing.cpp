@@ -225,7 +225,7 @@ void ManyObjectsLevel::drawPairTable(sf::RenderTarget& target) const
                               labelFont, 18, sf::Color::White);
     title.setPosition({tableArea.left, tableArea.top - 40.f});
     target.draw(title);
-    sf::Text key = makeText("grey tested   red overlapping   dark skipped by the rules   "
+    sf::Text key = makeText("grey tested   vermillion overlapping   dark skipped by the rules   "
                             "purple wasted",
                             labelFont, 13, sf::Color(200, 200, 200));
     key.setPosition({tableArea.left, tableArea.top - 16.f});

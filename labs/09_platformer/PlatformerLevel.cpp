@@ -548,8 +548,8 @@ void PlatformerLevel::renderDebug(hitbox::DebugRenderer& debug) const
     debug.box(box, contacts.empty() ? hitbox::DebugState::Free : hitbox::DebugState::Overlapping);
     debug.arrow(hitbox::centerOf(box), hitbox::centerOf(box) + player.getVelocity() * 0.25f,
                 DebugRenderer::velocityColor);
-    // The collision points: red if the point was inside a solid tile this step. Small crosses:
-    // the points are half the player's width apart, and bigger ones run into each other.
+    // The collision points: vermillion if the point was inside a solid tile this step. Small
+    // crosses: the points are half the player's width apart, and bigger ones run into each other.
     for (std::size_t index = 0; index < collisionPoints.size(); ++index)
         debug.cross(pointOn(box, collisionPoints[index]), 4.f,
                     pointWasInside[index] ? DebugRenderer::overlappingColor

@@ -101,7 +101,8 @@ void CrowdLevel::renderDebug(hitbox::DebugRenderer& debug) const
         for (float y = 0.f; y <= world.y; y += cellSize)
             debug.line({0.f, y}, {world.x, y}, hitbox::DebugRenderer::hintColor);
     }
-    // The sweep line and the boxes open where it is, in yellow; other boxes red or green.
+    // The sweep line and the boxes open where it is in pink (velocityColor, reddish purple);
+    // other boxes vermillion (overlapping) or sky blue (free).
     const bool sweeping = method == Method::SortAndSweep;
     if (sweeping)
         debug.line({sweepLineX, 0.f}, {sweepLineX, world.y}, hitbox::DebugRenderer::velocityColor);

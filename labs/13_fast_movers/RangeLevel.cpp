@@ -144,7 +144,7 @@ void RangeLevel::renderDebug(hitbox::DebugRenderer& debug) const
                        hitbox::DebugRenderer::normalColor);
     }
     debug.panel(
-        {"F1: purple arrow = the next step's move (" + std::to_string(std::lround(move)) + " px)",
+        {"F1: pink arrow = the next step's move (" + std::to_string(std::lround(move)) + " px)",
          "middle lane: ticks = where its sub-steps end (at most " + subStepLimit + " apart)",
          "bottom lane: green line = the gap measured ahead of the bullet"});
 }

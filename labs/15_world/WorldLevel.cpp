@@ -193,7 +193,7 @@ void WorldLevel::render(sf::RenderTarget& target) const
 void WorldLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
     // What the broadphase built (grid cells, quadtree nodes or sweep bars), then every
-    // object in the shape its exact test uses, red when it collided this step.
+    // object in the shape its exact test uses, hatched vermillion when it collided this step.
     hitbox::drawBroadphase(debug, world.getBroadphaseLayout());
     // The panel: why the pair under the mouse (else the last pair that met or parted) does
     // or does not collide.

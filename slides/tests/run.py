@@ -341,6 +341,23 @@ def format_case(results, work, root):
                    f"expected `box.height * scale.y` in {deck}, got (exit {status}): {output}\n{shown}")
 
 
+def pdf_links_case(results, work):
+    """A handout PDF links no page of the build machine: the links to the other lectures become
+    their titles and PDF names as text (Chromium would print a file:// link to the build's disk)."""
+    folder = os.path.join(work, "pdf-links")
+    os.makedirs(os.path.join(folder, "in"))
+    write(os.path.join(folder, "in", "01-test.md"), "# Next lecture\n\n**Next:** [Two](02-two.html)\n\n"
+          "Previous: [Zero](00-zero.html#3)\n\n[All lectures](index.html)\n")
+    status, output = run(["node", os.path.join(SLIDES, "tools", "inline-images.mjs"), "--in", folder + "/in",
+                          "--out", folder + "/out"])
+    made = os.path.join(folder, "out", "01-test.md")
+    printed = open(made, encoding="utf-8").read() if os.path.exists(made) else ""
+    results.report("pdf-deck-links-no-local-page",
+                   status == 0 and "Two (02-two.pdf)" in printed and "Zero (00-zero.pdf)" in printed
+                   and ".html)" not in printed and "index.html" in printed,
+                   f"expected the links as text in {made}, got (exit {status}): {output}\n{printed}")
+
+
 def figure_case(results, work, name, expected, line):
     write(os.path.join(work, name + ".txt"), line + "\n")
     environment = dict(os.environ, DISPLAY=os.environ.get("DISPLAY") or ":none")
@@ -478,6 +495,7 @@ def main():
             deck_case(results, work, root, *case)
         notes_deck_case(results, work)
         format_case(results, work, root)
+        pdf_links_case(results, work)
         os.makedirs(work + "/programs")
         for name, source in STAND_INS.items():
             write(os.path.join(work, "programs", name), source, 0o755)

@@ -8,7 +8,9 @@
 // each image written into the deck as a data: URL there is nothing local to read, no flag
 // and no warning; a missing image fails here, naming it. <script src> lines (the
 // interactive figures) and the animations (<img class="anim">) are left out: the PDF shows
-// each one's still.
+// each one's still. A link to another lecture's page (`[Title](02-name.html)`) becomes its
+// title and PDF file name as plain text: Chromium would print it as a file:// link to the build
+// machine's disk, dead in a student's handout.
 import fs from 'node:fs';
 import path from 'node:path';
 
@@ -36,6 +38,8 @@ function inline(markdown, folder) {
     .join('\n')
     .replace(/(!\[[^\]]*\]\()(figures\/[^)\s]+)/g, (_, head, file) => head + dataUrl(path.join(folder, file)))
     .replace(/<img\b[^>]*\bclass="anim"[^>]*>/g, '') // the PDF shows the still
+    .replace(/(?<!!)\[([^\]]+)\]\(([\w-]+)\.html(#[^)]*)?\)/g, (_, text, name) =>
+      name === 'index' ? `${text} (index.html, beside the PDFs)` : `${text} (${name}.pdf)`)
     .replace(/(<img\b[^>]*\bsrc=")(figures\/[^"]+)/g, (_, head, file) => head + dataUrl(path.join(folder, file)))
     .replace(/(<image\b[^>]*\bhref=")(figures\/[^"]+)/g, (_, head, file) => head + dataUrl(path.join(folder, file)));
 }

@@ -23,13 +23,15 @@ public:
 
 } // namespace
 
-TEST(HelpLine, SharedKeysThenTheLevelsThenTheFrameRate)
+// The level's text (its score, its keys) before the shared keys: a narrow window cuts the end
+// of the line, and the shared keys are the same in every program.
+TEST(HelpLine, TheLevelsTextThenTheSharedKeysThenTheFrameRate)
 {
     KeysLevel level;
     EXPECT_EQ(hitbox::helpLine(level, false, 0), hitbox::sharedKeysHelp());
     level.keys = "W/S move";
     EXPECT_EQ(hitbox::helpLine(level, false, 59),
-              hitbox::sharedKeysHelp() + "   |   W/S move   |   59 fps");
+              "W/S move   |   " + hitbox::sharedKeysHelp() + "   |   59 fps");
 }
 
 TEST(HelpLine, TheDebugLegendComesFirstWhereItIsNeverCutOff)

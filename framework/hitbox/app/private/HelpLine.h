@@ -8,9 +8,9 @@
 namespace hitbox
 {
 
-// The shared keys, then the level's own (Level::getHelpText), then the frame rate when
-// `framesPerSecond` > 0. With `showDebug`, the debug cues' legend comes first, where a narrow
-// window never cuts it off.
+// The level's own text (Level::getHelpText: its keys and score), then the shared keys, then the
+// frame rate when `framesPerSecond` > 0. With `showDebug`, the debug cues' legend comes first.
+// A window too narrow for the line cuts its end: the shared keys, the same in every program.
 [[nodiscard]] std::string helpLine(const Level& level, bool showDebug, int framesPerSecond);
 
 } // namespace hitbox
