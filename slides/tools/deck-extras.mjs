@@ -94,8 +94,8 @@ function main() {
     const navigation = ['', '<!-- _class: lead -->', '<!-- _paginate: false -->', '',
       `# ${next ? 'Next lecture' : 'End of the unit'}`, '', ...links.map((l) => `${l}\n`),
       '<!--', next
-        ? 'Before the class leaves, say in one sentence what the next lecture adds to this one; the links open the next and the previous lecture and the list of all lectures.'
-        : 'The end of the unit: the links open the previous lecture and the list of all lectures, each with its outline, for revision.', '-->', ''];
+        ? 'Before the class leaves, say in one sentence what the next lecture adds to this one, and show where the decks are: the list of all lectures, each with its outline.'
+        : 'The end of the unit: point the class to the list of all lectures, each with its outline, for revision, and to the previous lecture.', '-->', ''];
     fs.writeFileSync(path.join(options.decks, deck.file), `${deck.markdown.replace(/\s*$/, '\n')}\n---\n${navigation.join('\n')}`);
 
     writeNotes(deck, options);
