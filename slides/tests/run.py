@@ -91,6 +91,16 @@ float halfSpeedOf(float vx, float vy)
 }
 // [/slide]
 
+// [slide:product]
+float smallerSide()
+{
+    const Box box = makeBox();
+    const Vec2 scale = makeScale();
+    const float radius = std::fmin(box.width * scale.x, box.height * scale.y) / 2.f + 0.f;
+    return radius;
+}
+// [/slide]
+
 // [slide:tall]
 void tall()
 {
@@ -314,6 +324,23 @@ def notes_deck_case(results, work):
                    f"expected the note in {notes_file}, got (exit {status}): {output}")
 
 
+def format_case(results, work, root):
+    """Statements from a function body, formatted to fit the slide, keep their spaces: alone at
+    file scope clang-format read `box.height * scale.y` as a pointer type (`box.height* scale.y`)."""
+    folder = os.path.join(work, "format")
+    for sub in ("src", "decks"):
+        os.makedirs(os.path.join(folder, sub))
+    write(os.path.join(folder, "src", "01-test.md"), '---\nmarp: true\ntitle: "Test"\n---\n\n# Test\n\n'
+          + include("product", ' lines 3-6 key "std::fmin"') + f"\n\n<!--\n{NOTES}\n-->\n")
+    status, output = run(["node", os.path.join(SLIDES, "tools", "include-regions.mjs"), "--root", root,
+                          "--src", folder + "/src", "--out", folder + "/decks"])
+    deck = os.path.join(folder, "decks", "01-test.md")
+    shown = open(deck, encoding="utf-8").read() if os.path.exists(deck) else ""
+    results.report("excerpt-from-a-body-formatted-as-statements",
+                   status == 0 and "box.height * scale.y" in shown and "box.height*" not in shown,
+                   f"expected `box.height * scale.y` in {deck}, got (exit {status}): {output}\n{shown}")
+
+
 def pdf_links_case(results, work):
     """A handout PDF links no page of the build machine: the links to the other lectures become
     their titles and PDF names as text (Chromium would print a file:// link to the build's disk)."""
@@ -467,6 +494,7 @@ def main():
         for case in DECK_CASES:
             deck_case(results, work, root, *case)
         notes_deck_case(results, work)
+        format_case(results, work, root)
         pdf_links_case(results, work)
         os.makedirs(work + "/programs")
         for name, source in STAND_INS.items():

@@ -64,8 +64,9 @@ function writeNotes(deck, options) {
     .filter((page) => page.heading || page.notes.length);
   const notes = [
     '---', 'marp: true', 'theme: hitbox', 'size: notes', 'paginate: false', `title: "${deck.title} · speaker notes"`, '---', '',
+    // The title goes on the first slide's page, not on a page of its own.
     `<!-- _class: notes -->`, '', `# ${deck.title}: speaker notes`, '',
-    ...pages.flatMap((page) => ['---', '', '<!-- _class: notes -->', '',
+    ...pages.flatMap((page, index) => [...(index ? ['---', '', '<!-- _class: notes -->', ''] : []),
       `## ${page.number}. ${plain(page.heading) || '(no heading)'}`, '', ...pictureOf(page.number),
       ...page.notes.map((n) => escapeHtml(n).replace(/\n(?!\n)/g, ' ') + '\n')]),
   ];
@@ -92,7 +93,9 @@ function main() {
     links.push('[All lectures](index.html)');
     const navigation = ['', '<!-- _class: lead -->', '<!-- _paginate: false -->', '',
       `# ${next ? 'Next lecture' : 'End of the unit'}`, '', ...links.map((l) => `${l}\n`),
-      '<!--', 'The links to the neighbouring lectures and the index (made by the build).', '-->', ''];
+      '<!--', next
+        ? 'Before the class leaves, say in one sentence what the next lecture adds to this one, and show where the decks are: the list of all lectures, each with its outline.'
+        : 'The end of the unit: point the class to the list of all lectures, each with its outline, for revision, and to the previous lecture.', '-->', ''];
     fs.writeFileSync(path.join(options.decks, deck.file), `${deck.markdown.replace(/\s*$/, '\n')}\n---\n${navigation.join('\n')}`);
 
     writeNotes(deck, options);

@@ -131,23 +131,46 @@ function dedent(lines) {
   return result;
 }
 
-// The repository's .clang-format with the slide's column limit, in a folder of its own.
+// An excerpt is formatted inside a function of its own (see fitToSlide), one indent deep.
+const wrapperIndent = '    ';
+// The repository's .clang-format with the slide's column limit, in a folder of its own; in
+// its subfolder `body`, the limit plus the wrapper's indent.
 function slideStyleFolder(root) {
   const style = fs.readFileSync(path.join(root, '.clang-format'), 'utf8');
   const folder = fs.mkdtempSync(path.join(os.tmpdir(), 'hitbox-slide-style-'));
-  fs.writeFileSync(path.join(folder, '.clang-format'),
-    style.replace(/^ColumnLimit:.*$/m, `ColumnLimit: ${slideColumns}`));
+  fs.mkdirSync(path.join(folder, 'body'));
+  fs.writeFileSync(path.join(folder, '.clang-format'), style.replace(/^ColumnLimit:.*$/m, `ColumnLimit: ${slideColumns}`));
+  fs.writeFileSync(path.join(folder, 'body', '.clang-format'),
+    style.replace(/^ColumnLimit:.*$/m, `ColumnLimit: ${slideColumns + wrapperIndent.length}`));
   return folder;
 }
 
 // An excerpt formatted to fit the slide (C++ only; lines that already fit stay as they are).
-function fitToSlide(code, language, styleFolder) {
+// Statements from inside a function body (`inBody`) go inside a function of their own before
+// clang-format reads them: alone at file scope they are parsed as declarations, and
+// `box.height * scale.y` came out as `box.height* scale.y` (a pointer type). Declarations
+// (a whole function, a class's members) are formatted as they are.
+function fitToSlide(code, language, styleFolder, inBody) {
   if (language !== 'cpp' || code.every((line) => line.length <= slideColumns)) return code;
   // Only the lines that are too long are formatted (--lines): the others stay as written.
-  const tooLong = code.flatMap((line, index) => (line.length > slideColumns ? [`--lines=${index + 1}:${index + 1}`] : []));
-  const formatted = execFileSync('clang-format', [`--assume-filename=${path.join(styleFolder, 'excerpt.cpp')}`, ...tooLong],
-    { input: code.join('\n') + '\n', encoding: 'utf8' });
-  return dedent(formatted.split('\n'));
+  const shift = inBody ? 3 : 1;
+  const tooLong = code.flatMap((line, index) => (line.length > slideColumns ? [`--lines=${index + shift}:${index + shift}`] : []));
+  const indent = inBody ? wrapperIndent : '';
+  const wrapped = [...(inBody ? ['void slideExcerpt()', '{'] : []), ...code.map((line) => (line ? indent + line : line)), ...(inBody ? ['}'] : [])];
+  const formatted = execFileSync('clang-format', [`--assume-filename=${path.join(styleFolder, inBody ? 'body' : '', 'excerpt.cpp')}`, ...tooLong],
+    { input: wrapped.join('\n') + '\n', encoding: 'utf8' }).replace(/\n+$/, '').split('\n');
+  if (!inBody) return dedent(formatted);
+  if (formatted[0] !== wrapped[0] || formatted[1] !== '{' || formatted[formatted.length - 1] !== '}')
+    throw new Error(`clang-format changed the wrapper around an excerpt:\n${formatted.join('\n')}`);
+  return dedent(formatted.slice(2, -1));
+}
+
+// Are the shown lines statements inside a function body? In a .cpp file, lines that are all
+// indented (the project does not indent namespaces) are.
+function shownInBody(file, lines, partList) {
+  if (!file.endsWith('.cpp')) return false;
+  const shown = partList.flatMap(([first, last]) => lines.slice(first - 1, last)).filter((l) => l.trim() !== '');
+  return shown.length > 0 && shown.every((l) => /^[ \t]/.test(l));
 }
 
 function languageOf(file) {
@@ -456,7 +479,8 @@ function processDeck(deckPath, deckLabel, index, options, problems, listing) {
       problems.push(`${where}: the excerpt of ${name} does not contain its key line "${key}" (cut too early?)`);
       return;
     }
-    code = fitToSlide(code, languageOf(found.file), options.styleFolder);
+    const inBody = shownInBody(found.file, withoutTaskMarkers(found.region.lines), partList);
+    code = fitToSlide(code, languageOf(found.file), options.styleFolder, inBody);
     if (code.length > maxLinesPerSlide)
       console.warn(`${where}: warning: region ${name} shows ${code.length} lines (more than ${maxLinesPerSlide} fit a slide)`);
     listing.push(`${where} ${name} ${found.file}:${found.region.startLine}`);
