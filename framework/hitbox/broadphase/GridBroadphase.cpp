@@ -79,13 +79,6 @@ inline std::uint32_t selectWithoutBranch(std::uint32_t oneOrZero, std::uint32_t 
     return (ifOne & keep) | (ifZero & ~keep);
 }
 
-// The same for cell numbers.
-inline std::size_t pickWithoutBranch(std::size_t oneOrZero, std::size_t ifOne, std::size_t ifZero)
-{
-    const std::size_t keep = std::size_t(0) - oneOrZero;
-    return (ifOne & keep) | (ifZero & ~keep);
-}
-
 // Resizes `buffer` to `size`, growing its memory by a quarter more than asked when it must
 // grow, so boxes that crowd a little more each frame do not make it copy itself every frame.
 template <typename T>
@@ -135,16 +128,19 @@ double runHalves(bool twoThreads, Work work)
 
 // The four calls of a box that covers one cell, two or 2 x 2: `cell` its top-left cell,
 // right / down 1 if it reaches the next column / row.
+// Counting with covered: each call names the neighbour cell whether the box reaches it or not,
+// and the caller adds `covered` (0 or 1) to that cell's counter, so no call has to pick a
+// target first (three selects less per box in the preparation and in the fill). A neighbour
+// can lie past the grid's last cell (cell + width + 1 at most): the counters have
+// counterCount's few more, which only ever get 0 added.
 template <typename Visit>
 inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, std::size_t width,
-                         std::size_t dummies, std::uint32_t firstColumn, std::uint32_t firstRow,
-                         Visit visit)
+                         std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
 {
-    const std::size_t both = right & down;
     // The cell below and to the right is covered only if the box reaches both.
-    visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
-    visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
-    visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
+    visit(cell + width + 1, std::uint32_t(right & down), 0u);
+    visit(cell + width, std::uint32_t(down), firstColumn);
+    visit(cell + 1, std::uint32_t(right), firstRow);
     visit(cell, 1u, firstColumn | firstRow);
 }
 
@@ -152,16 +148,14 @@ inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, 
 // column, flags = the entry's kFirstColumnFlag / kFirstRowFlag.
 // Loop-free listing: small boxes get four calls. Most boxes cover one cell, two (side by side
 // or one above the other) or 2 x 2, and all of them get the same four calls, so the caller
-// needs no branch: a call for a column or row the box does not reach has covered = 0 and a
-// target of its own, a dummy counter past the grid's cells (dummies + 0, 1 or 2; the caller
-// keeps three spare counters there). Why: whether the next box crosses a column border (one
-// time in three for an average box) or a row border is unpredictable, and the CPU's wrong
-// guesses cost more than the extra calls. Why dummies rather than naming the box's own cell
-// again: four read-modify-writes of one counter in a row each wait for the one before.
-// Bigger boxes get one call per cell they cover. Measured: docs/performance.md.
+// needs no branch: a call for a column or row the box does not reach has covered = 0 (and
+// names the neighbour cell all the same, see forFourCells). Why: whether the next box crosses
+// a column border (one time in three for an average box) or a row border is unpredictable,
+// and the CPU's wrong guesses cost more than the extra calls. Bigger boxes get one call per
+// cell they cover. Measured: docs/performance.md.
 template <typename Range, typename Visit>
-inline void forEachCell(const Range& range, std::size_t width, std::size_t dummies,
-                        std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
+inline void forEachCell(const Range& range, std::size_t width, std::uint32_t firstColumn,
+                        std::uint32_t firstRow, Visit visit)
 {
     // 1 if the box reaches the next column (row), 0 if not. Empty-range wrap-around: for an
     // empty range (x1 = x0 - 1) the unsigned -1 is the largest size_t, so it fails `<= 1` and
@@ -171,7 +165,7 @@ inline void forEachCell(const Range& range, std::size_t width, std::size_t dummi
     const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
     if (right <= 1 && down <= 1)
     {
-        forFourCells(cell, right, down, width, dummies, firstColumn, firstRow, visit);
+        forFourCells(cell, right, down, width, firstColumn, firstRow, visit);
         return;
     }
     for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
@@ -248,8 +242,12 @@ bool cpuHasAvx(); // below, with the eight-wide tests
 constexpr std::uint32_t kFourAtATimeFrom = 5;
 #endif
 
-// The three dummy counters forEachCell uses, after the grid's cells.
-constexpr std::size_t kDummyCounters = 3;
+// Counters a half keeps per cell: the grid's cells, then room for forFourCells' neighbours of
+// the last row (past the last cell by up to width + 1), which are only ever given 0.
+inline std::size_t counterCount(std::size_t columns, std::size_t rows)
+{
+    return columns * rows + columns + 1;
+}
 
 } // namespace
 
@@ -268,13 +266,12 @@ GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(sett
 struct GridBroadphase::CellFinder
 {
     float originX, originY, scale, lastColumn, lastRow;
-    std::size_t width, cellCount;
+    std::size_t width;
 
     explicit CellFinder(const Shape& shape)
         : originX(shape.originX), originY(shape.originY), scale(1.f / shape.cell),
           lastColumn(static_cast<float>(shape.columns - 1)),
-          lastRow(static_cast<float>(shape.rows - 1)), width(std::size_t(shape.columns)),
-          cellCount(width * std::size_t(shape.rows))
+          lastRow(static_cast<float>(shape.rows - 1)), width(std::size_t(shape.columns))
     {
     }
     // [slide:grid-cells]
@@ -303,9 +300,9 @@ struct GridBroadphase::CellFinder
     // cell's boxes back to back, reused every frame.
     void count(const CellRange& range, std::uint32_t* counts) const
     {
-        forEachCell(range, width, cellCount, 0u, 0u,
-                    [counts](std::size_t target, std::uint32_t, std::uint32_t)
-                    { ++counts[target]; });
+        forEachCell(range, width, 0u, 0u,
+                    [counts](std::size_t target, std::uint32_t covered, std::uint32_t)
+                    { counts[target] += covered; });
     }
     // [/slide]
 };
@@ -320,8 +317,7 @@ void GridBroadphase::prepare(Half& half)
     const CellFinder finder(shape);
     const bool count = hasShape;
     if (count)
-        half.cursor.assign(std::size_t(shape.columns) * std::size_t(shape.rows) + kDummyCounters,
-                           0);
+        half.cursor.assign(counterCount(std::size_t(shape.columns), std::size_t(shape.rows)), 0);
     std::uint32_t* counts = half.cursor.data();
     const float inf = std::numeric_limits<float>::infinity();
     // A box edge can be +-infinity when left + width overflowed; the grid only needs finite
@@ -458,7 +454,7 @@ void GridBroadphase::prepare(Half& half)
 void GridBroadphase::countCells(Half& half)
 {
     // The grid changed: the cells again, with the new grid.
-    half.cursor.assign(std::size_t(shape.columns) * std::size_t(shape.rows) + kDummyCounters, 0);
+    half.cursor.assign(counterCount(std::size_t(shape.columns), std::size_t(shape.rows)), 0);
     std::uint32_t* counts = half.cursor.data();
     const CellFinder finder(shape);
     for (std::size_t i = half.begin; i < half.end; ++i)
@@ -594,7 +590,6 @@ void GridBroadphase::fillCells(Half& half)
     // places (each write a cache miss); the words are 0.7 MB, which a core's 1 MB cache holds
     // while they are written. The tests fetch each busy cell's edges from the per-item array.
     const std::size_t width = std::size_t(shape.columns);
-    const std::size_t cellCount = width * std::size_t(shape.rows);
     std::uint32_t* cursor = half.cursor.data();
     std::uint32_t* entries = cellItems.data();
     const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
@@ -609,16 +604,15 @@ void GridBroadphase::fillCells(Half& half)
         auto put = [cursor, entries, spare, item](std::size_t target, std::uint32_t covered,
                                                   std::uint32_t flags)
         {
-            const std::uint32_t slot = --cursor[target];
+            const std::uint32_t slot = cursor[target] -= covered;
             entries[selectWithoutBranch(covered, slot, spare)] = item | flags;
         };
         const std::uint32_t word = words[i];
         if (word != kWideBox)
-            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
-                         kFirstColumnFlag, kFirstRowFlag, put);
+            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, kFirstColumnFlag,
+                         kFirstRowFlag, put);
         else
-            forEachCell(finder.cellsOf(edges[i]), width, cellCount, kFirstColumnFlag, kFirstRowFlag,
-                        put);
+            forEachCell(finder.cellsOf(edges[i]), width, kFirstColumnFlag, kFirstRowFlag, put);
     }
     // [/slide]
 }
