@@ -236,6 +236,23 @@ bool cpuHasAvx(); // below, with the eight-wide tests
 #endif
 
 #if defined(HITBOX_GRID_SSE)
+// Counted places: for the four hit bits of one four-wide step (bit k: the pair with lane k is
+// a hit), where lanes 1, 2 and 3 are written (2 bits each: the hits in the lanes before them)
+// and, from bit 6, how many hits there are. With it the write position moves once per step
+// instead of after each of the four writes, each of which waited for the one before.
+constexpr std::uint16_t placesFor(unsigned hits)
+{
+    const unsigned one = hits & 1u;
+    const unsigned two = one + ((hits >> 1) & 1u);
+    const unsigned three = two + ((hits >> 2) & 1u);
+    const unsigned all = three + ((hits >> 3) & 1u);
+    return std::uint16_t(one | two << 2 | three << 4 | all << 6);
+}
+constexpr std::uint16_t kHitPlaces[16] = {
+    placesFor(0),  placesFor(1),  placesFor(2),  placesFor(3), placesFor(4),  placesFor(5),
+    placesFor(6),  placesFor(7),  placesFor(8),  placesFor(9), placesFor(10), placesFor(11),
+    placesFor(12), placesFor(13), placesFor(14), placesFor(15)};
+
 // Few-box cells one at a time: cells of fewer boxes than this test each pair on its own, not
 // four at a time (lab 8's cells hold 2-3 balls, the benchmark's about 12 boxes; 5 and 8
 // measured the same there, docs/performance.md).
@@ -848,14 +865,15 @@ std::size_t GridBroadphase::testCellRangeFourWide(Half& half, Pair* out) const
                 const __m128i seconds = _mm_and_si128(others, indexMask);
                 const __m128i low = _mm_unpacklo_epi32(first, seconds);
                 const __m128i high = _mm_unpackhi_epi32(first, seconds);
-                _mm_storel_epi64(reinterpret_cast<__m128i*>(out + found), low);
-                found += std::size_t(hits & 1);
-                _mm_storeh_pd(reinterpret_cast<double*>(out + found), _mm_castsi128_pd(low));
-                found += std::size_t((hits >> 1) & 1);
-                _mm_storel_epi64(reinterpret_cast<__m128i*>(out + found), high);
-                found += std::size_t((hits >> 2) & 1);
-                _mm_storeh_pd(reinterpret_cast<double*>(out + found), _mm_castsi128_pd(high));
-                found += std::size_t(hits >> 3);
+                // Counted places: each pair's place from a table, one addition per step.
+                const std::uint32_t places = kHitPlaces[hits];
+                Pair* const at = out + found;
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(at), low);
+                _mm_storeh_pd(reinterpret_cast<double*>(at + (places & 3u)), _mm_castsi128_pd(low));
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(at + ((places >> 2) & 3u)), high);
+                _mm_storeh_pd(reinterpret_cast<double*>(at + ((places >> 4) & 3u)),
+                              _mm_castsi128_pd(high));
+                found += places >> 6;
             }
         }
     };
