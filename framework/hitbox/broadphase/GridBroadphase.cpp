@@ -4,6 +4,10 @@
 //     where SSE is missing (ARM, 32-bit x86 without SSE2).
 //   - Four at a time: the tests copy a busy cell into five columns (the four edges and the
 //     item words) and compare one box with four others per SSE step, flags and all.
+//   - Transposed copy: four entries' edges are copied into the columns with one SSE 4 x 4
+//     transpose instead of sixteen single floats.
+//   - Counted places: a 16-entry table gives the write places of a step's four pairs, so the
+//     write position moves once per step, not after every write.
 //   - Few-box cells one at a time: cells of fewer than kFourAtATimeFrom boxes skip the column
 //     copy and test each pair straight from the per-item edges.
 //   - One preparation pass: loading a box, its share of the grid's bounds and average size,
@@ -14,6 +18,8 @@
 //   - Last frame's grid: the cells are worked out with last frame's grid and only worked out
 //     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
+//   - Counting with covered: those visits name the real neighbour cells and add 0 or 1 to
+//     their counters, so no visit picks a target first (forFourCells).
 //   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
 //   - Item-word entries: a cell entry is the box's 4-byte item word only (4 bytes a
 //     box-in-a-cell, which stay in the cache while written in scattered places); the tests
@@ -824,7 +830,25 @@ std::size_t GridBroadphase::testCellRangeFourWide(Half& half, Pair* out) const
             }
             return;
         }
-        for (std::uint32_t j = 0; j < n; ++j)
+        std::uint32_t j = 0;
+        // Transposed copy: four entries' edges are four rows; one 4 x 4 transpose (SSE
+        // shuffles) turns them into four column pieces, stored four floats at a time.
+        for (; j + 4 <= n; j += 4)
+        {
+            const std::uint32_t* const four = items + begin + j;
+            __m128 r0 = _mm_load_ps(&itemEdges[four[0] & kItemIndexMask].minX);
+            __m128 r1 = _mm_load_ps(&itemEdges[four[1] & kItemIndexMask].minX);
+            __m128 r2 = _mm_load_ps(&itemEdges[four[2] & kItemIndexMask].minX);
+            __m128 r3 = _mm_load_ps(&itemEdges[four[3] & kItemIndexMask].minX);
+            _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+            _mm_storeu_ps(minXs + j, r0);
+            _mm_storeu_ps(minYs + j, r1);
+            _mm_storeu_ps(negMaxXs + j, r2);
+            _mm_storeu_ps(negMaxYs + j, r3);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(words + j),
+                             _mm_loadu_si128(reinterpret_cast<const __m128i*>(four)));
+        }
+        for (; j < n; ++j)
         {
             const std::uint32_t word = items[begin + j];
             const Edges& box = itemEdges[word & kItemIndexMask];
