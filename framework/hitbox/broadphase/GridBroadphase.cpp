@@ -4,6 +4,10 @@
 //     where SSE is missing (ARM, 32-bit x86 without SSE2).
 //   - Four at a time: the tests copy a busy cell into five columns (the four edges and the
 //     item words) and compare one box with four others per SSE step, flags and all.
+//   - Transposed copy: four entries' edges are copied into the columns with one SSE 4 x 4
+//     transpose instead of sixteen single floats.
+//   - Counted places: a 16-entry table gives the write places of a step's four pairs, so the
+//     write position moves once per step, not after every write.
 //   - Few-box cells one at a time: cells of fewer than kFourAtATimeFrom boxes skip the column
 //     copy and test each pair straight from the per-item edges.
 //   - One preparation pass: loading a box, its share of the grid's bounds and average size,
@@ -14,6 +18,8 @@
 //   - Last frame's grid: the cells are worked out with last frame's grid and only worked out
 //     again when the boxes outgrew it or their size changed (any grid gives the right pairs).
 //   - Loop-free listing: every small box makes the same four cell visits (forEachCell).
+//   - Counting with covered: those visits name the real neighbour cells and add 0 or 1 to
+//     their counters, so no visit picks a target first (forFourCells).
 //   - Packed cell words: the fill reads each box's cells from 4 bytes, not a 16-byte range.
 //   - Item-word entries: a cell entry is the box's 4-byte item word only (4 bytes a
 //     box-in-a-cell, which stay in the cache while written in scattered places); the tests
@@ -79,13 +85,6 @@ inline std::uint32_t selectWithoutBranch(std::uint32_t oneOrZero, std::uint32_t 
     return (ifOne & keep) | (ifZero & ~keep);
 }
 
-// The same for cell numbers.
-inline std::size_t pickWithoutBranch(std::size_t oneOrZero, std::size_t ifOne, std::size_t ifZero)
-{
-    const std::size_t keep = std::size_t(0) - oneOrZero;
-    return (ifOne & keep) | (ifZero & ~keep);
-}
-
 // Resizes `buffer` to `size`, growing its memory by a quarter more than asked when it must
 // grow, so boxes that crowd a little more each frame do not make it copy itself every frame.
 template <typename T>
@@ -135,16 +134,19 @@ double runHalves(bool twoThreads, Work work)
 
 // The four calls of a box that covers one cell, two or 2 x 2: `cell` its top-left cell,
 // right / down 1 if it reaches the next column / row.
+// Counting with covered: each call names the neighbour cell whether the box reaches it or not,
+// and the caller adds `covered` (0 or 1) to that cell's counter, so no call has to pick a
+// target first (three selects less per box in the preparation and in the fill). A neighbour
+// can lie past the grid's last cell (cell + width + 1 at most): the counters have
+// counterCount's few more, which only ever get 0 added.
 template <typename Visit>
 inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, std::size_t width,
-                         std::size_t dummies, std::uint32_t firstColumn, std::uint32_t firstRow,
-                         Visit visit)
+                         std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
 {
-    const std::size_t both = right & down;
     // The cell below and to the right is covered only if the box reaches both.
-    visit(pickWithoutBranch(both, cell + width + 1, dummies), std::uint32_t(both), 0u);
-    visit(pickWithoutBranch(down, cell + width, dummies + 1), std::uint32_t(down), firstColumn);
-    visit(pickWithoutBranch(right, cell + 1, dummies + 2), std::uint32_t(right), firstRow);
+    visit(cell + width + 1, std::uint32_t(right & down), 0u);
+    visit(cell + width, std::uint32_t(down), firstColumn);
+    visit(cell + 1, std::uint32_t(right), firstRow);
     visit(cell, 1u, firstColumn | firstRow);
 }
 
@@ -152,16 +154,14 @@ inline void forFourCells(std::size_t cell, std::size_t right, std::size_t down, 
 // column, flags = the entry's kFirstColumnFlag / kFirstRowFlag.
 // Loop-free listing: small boxes get four calls. Most boxes cover one cell, two (side by side
 // or one above the other) or 2 x 2, and all of them get the same four calls, so the caller
-// needs no branch: a call for a column or row the box does not reach has covered = 0 and a
-// target of its own, a dummy counter past the grid's cells (dummies + 0, 1 or 2; the caller
-// keeps three spare counters there). Why: whether the next box crosses a column border (one
-// time in three for an average box) or a row border is unpredictable, and the CPU's wrong
-// guesses cost more than the extra calls. Why dummies rather than naming the box's own cell
-// again: four read-modify-writes of one counter in a row each wait for the one before.
-// Bigger boxes get one call per cell they cover. Measured: docs/performance.md.
+// needs no branch: a call for a column or row the box does not reach has covered = 0 (and
+// names the neighbour cell all the same, see forFourCells). Why: whether the next box crosses
+// a column border (one time in three for an average box) or a row border is unpredictable,
+// and the CPU's wrong guesses cost more than the extra calls. Bigger boxes get one call per
+// cell they cover. Measured: docs/performance.md.
 template <typename Range, typename Visit>
-inline void forEachCell(const Range& range, std::size_t width, std::size_t dummies,
-                        std::uint32_t firstColumn, std::uint32_t firstRow, Visit visit)
+inline void forEachCell(const Range& range, std::size_t width, std::uint32_t firstColumn,
+                        std::uint32_t firstRow, Visit visit)
 {
     // 1 if the box reaches the next column (row), 0 if not. Empty-range wrap-around: for an
     // empty range (x1 = x0 - 1) the unsigned -1 is the largest size_t, so it fails `<= 1` and
@@ -171,7 +171,7 @@ inline void forEachCell(const Range& range, std::size_t width, std::size_t dummi
     const std::size_t cell = std::size_t(range.y0) * width + std::size_t(range.x0);
     if (right <= 1 && down <= 1)
     {
-        forFourCells(cell, right, down, width, dummies, firstColumn, firstRow, visit);
+        forFourCells(cell, right, down, width, firstColumn, firstRow, visit);
         return;
     }
     for (int cy = range.y0; cy <= range.y1; ++cy) // nothing for an empty range (x0 > x1)
@@ -242,14 +242,35 @@ bool cpuHasAvx(); // below, with the eight-wide tests
 #endif
 
 #if defined(HITBOX_GRID_SSE)
+// Counted places: for the four hit bits of one four-wide step (bit k: the pair with lane k is
+// a hit), where lanes 1, 2 and 3 are written (2 bits each: the hits in the lanes before them)
+// and, from bit 6, how many hits there are. With it the write position moves once per step
+// instead of after each of the four writes, each of which waited for the one before.
+constexpr std::uint16_t placesFor(unsigned hits)
+{
+    const unsigned one = hits & 1u;
+    const unsigned two = one + ((hits >> 1) & 1u);
+    const unsigned three = two + ((hits >> 2) & 1u);
+    const unsigned all = three + ((hits >> 3) & 1u);
+    return std::uint16_t(one | two << 2 | three << 4 | all << 6);
+}
+constexpr std::uint16_t kHitPlaces[16] = {
+    placesFor(0),  placesFor(1),  placesFor(2),  placesFor(3), placesFor(4),  placesFor(5),
+    placesFor(6),  placesFor(7),  placesFor(8),  placesFor(9), placesFor(10), placesFor(11),
+    placesFor(12), placesFor(13), placesFor(14), placesFor(15)};
+
 // Few-box cells one at a time: cells of fewer boxes than this test each pair on its own, not
 // four at a time (lab 8's cells hold 2-3 balls, the benchmark's about 12 boxes; 5 and 8
 // measured the same there, docs/performance.md).
 constexpr std::uint32_t kFourAtATimeFrom = 5;
 #endif
 
-// The three dummy counters forEachCell uses, after the grid's cells.
-constexpr std::size_t kDummyCounters = 3;
+// Counters a half keeps per cell: the grid's cells, then room for forFourCells' neighbours of
+// the last row (past the last cell by up to width + 1), which are only ever given 0.
+inline std::size_t counterCount(std::size_t columns, std::size_t rows)
+{
+    return columns * rows + columns + 1;
+}
 
 } // namespace
 
@@ -268,13 +289,12 @@ GridBroadphase::GridBroadphase(const GridSettings& settings) : gridSettings(sett
 struct GridBroadphase::CellFinder
 {
     float originX, originY, scale, lastColumn, lastRow;
-    std::size_t width, cellCount;
+    std::size_t width;
 
     explicit CellFinder(const Shape& shape)
         : originX(shape.originX), originY(shape.originY), scale(1.f / shape.cell),
           lastColumn(static_cast<float>(shape.columns - 1)),
-          lastRow(static_cast<float>(shape.rows - 1)), width(std::size_t(shape.columns)),
-          cellCount(width * std::size_t(shape.rows))
+          lastRow(static_cast<float>(shape.rows - 1)), width(std::size_t(shape.columns))
     {
     }
     // [slide:grid-cells]
@@ -303,9 +323,9 @@ struct GridBroadphase::CellFinder
     // cell's boxes back to back, reused every frame.
     void count(const CellRange& range, std::uint32_t* counts) const
     {
-        forEachCell(range, width, cellCount, 0u, 0u,
-                    [counts](std::size_t target, std::uint32_t, std::uint32_t)
-                    { ++counts[target]; });
+        forEachCell(range, width, 0u, 0u,
+                    [counts](std::size_t target, std::uint32_t covered, std::uint32_t)
+                    { counts[target] += covered; });
     }
     // [/slide]
 };
@@ -320,8 +340,7 @@ void GridBroadphase::prepare(Half& half)
     const CellFinder finder(shape);
     const bool count = hasShape;
     if (count)
-        half.cursor.assign(std::size_t(shape.columns) * std::size_t(shape.rows) + kDummyCounters,
-                           0);
+        half.cursor.assign(counterCount(std::size_t(shape.columns), std::size_t(shape.rows)), 0);
     std::uint32_t* counts = half.cursor.data();
     const float inf = std::numeric_limits<float>::infinity();
     // A box edge can be +-infinity when left + width overflowed; the grid only needs finite
@@ -458,7 +477,7 @@ void GridBroadphase::prepare(Half& half)
 void GridBroadphase::countCells(Half& half)
 {
     // The grid changed: the cells again, with the new grid.
-    half.cursor.assign(std::size_t(shape.columns) * std::size_t(shape.rows) + kDummyCounters, 0);
+    half.cursor.assign(counterCount(std::size_t(shape.columns), std::size_t(shape.rows)), 0);
     std::uint32_t* counts = half.cursor.data();
     const CellFinder finder(shape);
     for (std::size_t i = half.begin; i < half.end; ++i)
@@ -594,7 +613,6 @@ void GridBroadphase::fillCells(Half& half)
     // places (each write a cache miss); the words are 0.7 MB, which a core's 1 MB cache holds
     // while they are written. The tests fetch each busy cell's edges from the per-item array.
     const std::size_t width = std::size_t(shape.columns);
-    const std::size_t cellCount = width * std::size_t(shape.rows);
     std::uint32_t* cursor = half.cursor.data();
     std::uint32_t* entries = cellItems.data();
     const std::uint32_t spare = start.back() + std::uint32_t(&half - halves);
@@ -609,16 +627,15 @@ void GridBroadphase::fillCells(Half& half)
         auto put = [cursor, entries, spare, item](std::size_t target, std::uint32_t covered,
                                                   std::uint32_t flags)
         {
-            const std::uint32_t slot = --cursor[target];
+            const std::uint32_t slot = cursor[target] -= covered;
             entries[selectWithoutBranch(covered, slot, spare)] = item | flags;
         };
         const std::uint32_t word = words[i];
         if (word != kWideBox)
-            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, cellCount,
-                         kFirstColumnFlag, kFirstRowFlag, put);
+            forFourCells(word & 0x3FFFFFFFu, (word >> 30) & 1u, word >> 31, width, kFirstColumnFlag,
+                         kFirstRowFlag, put);
         else
-            forEachCell(finder.cellsOf(edges[i]), width, cellCount, kFirstColumnFlag, kFirstRowFlag,
-                        put);
+            forEachCell(finder.cellsOf(edges[i]), width, kFirstColumnFlag, kFirstRowFlag, put);
     }
     // [/slide]
 }
@@ -813,7 +830,25 @@ std::size_t GridBroadphase::testCellRangeFourWide(Half& half, Pair* out) const
             }
             return;
         }
-        for (std::uint32_t j = 0; j < n; ++j)
+        std::uint32_t j = 0;
+        // Transposed copy: four entries' edges are four rows; one 4 x 4 transpose (SSE
+        // shuffles) turns them into four column pieces, stored four floats at a time.
+        for (; j + 4 <= n; j += 4)
+        {
+            const std::uint32_t* const four = items + begin + j;
+            __m128 r0 = _mm_load_ps(&itemEdges[four[0] & kItemIndexMask].minX);
+            __m128 r1 = _mm_load_ps(&itemEdges[four[1] & kItemIndexMask].minX);
+            __m128 r2 = _mm_load_ps(&itemEdges[four[2] & kItemIndexMask].minX);
+            __m128 r3 = _mm_load_ps(&itemEdges[four[3] & kItemIndexMask].minX);
+            _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+            _mm_storeu_ps(minXs + j, r0);
+            _mm_storeu_ps(minYs + j, r1);
+            _mm_storeu_ps(negMaxXs + j, r2);
+            _mm_storeu_ps(negMaxYs + j, r3);
+            _mm_storeu_si128(reinterpret_cast<__m128i*>(words + j),
+                             _mm_loadu_si128(reinterpret_cast<const __m128i*>(four)));
+        }
+        for (; j < n; ++j)
         {
             const std::uint32_t word = items[begin + j];
             const Edges& box = itemEdges[word & kItemIndexMask];
@@ -854,14 +889,15 @@ std::size_t GridBroadphase::testCellRangeFourWide(Half& half, Pair* out) const
                 const __m128i seconds = _mm_and_si128(others, indexMask);
                 const __m128i low = _mm_unpacklo_epi32(first, seconds);
                 const __m128i high = _mm_unpackhi_epi32(first, seconds);
-                _mm_storel_epi64(reinterpret_cast<__m128i*>(out + found), low);
-                found += std::size_t(hits & 1);
-                _mm_storeh_pd(reinterpret_cast<double*>(out + found), _mm_castsi128_pd(low));
-                found += std::size_t((hits >> 1) & 1);
-                _mm_storel_epi64(reinterpret_cast<__m128i*>(out + found), high);
-                found += std::size_t((hits >> 2) & 1);
-                _mm_storeh_pd(reinterpret_cast<double*>(out + found), _mm_castsi128_pd(high));
-                found += std::size_t(hits >> 3);
+                // Counted places: each pair's place from a table, one addition per step.
+                const std::uint32_t places = kHitPlaces[hits];
+                Pair* const at = out + found;
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(at), low);
+                _mm_storeh_pd(reinterpret_cast<double*>(at + (places & 3u)), _mm_castsi128_pd(low));
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(at + ((places >> 2) & 3u)), high);
+                _mm_storeh_pd(reinterpret_cast<double*>(at + ((places >> 4) & 3u)),
+                              _mm_castsi128_pd(high));
+                found += places >> 6;
             }
         }
     };
