@@ -12,7 +12,7 @@ namespace
 {
 const sf::Vector2f cursorSize{90.f, 90.f};
 const sf::Color obstacleColor{70, 90, 140};
-const sf::Color touchedColor{170, 70, 80};
+const sf::Color overlappedColor{170, 70, 80};
 } // namespace
 
 SandboxLevel::SandboxLevel()
@@ -64,7 +64,7 @@ bool SandboxLevel::edgesMeetAnother(const Obstacle& obstacle) const
 // Overlapping the cursor shape; else touching another obstacle; else free.
 hitbox::DebugState SandboxLevel::stateOf(const Obstacle& obstacle) const
 {
-    if (obstacle.touching)
+    if (obstacle.overlapping)
         return hitbox::DebugState::Overlapping;
     return edgesMeetAnother(obstacle) ? hitbox::DebugState::Touching : hitbox::DebugState::Free;
 }
@@ -101,7 +101,7 @@ void SandboxLevel::update(float)
     for (Obstacle& obstacle : obstacles)
     {
         obstacle.contact = testCursorAgainst(obstacle);
-        obstacle.touching = obstacle.contact.hit;
+        obstacle.overlapping = obstacle.contact.hit;
     }
 }
 
@@ -109,7 +109,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
 {
     for (const Obstacle& obstacle : obstacles)
     {
-        const sf::Color fill = obstacle.touching ? touchedColor : obstacleColor;
+        const sf::Color fill = obstacle.overlapping ? overlappedColor : obstacleColor;
         if (obstacle.isCircle)
         {
             const hitbox::Circle circle = obstacle.shape.getBoundingCircle();
@@ -142,7 +142,7 @@ void SandboxLevel::render(sf::RenderTarget& target) const
 // [slide:debug-render]
 void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
 {
-    bool cursorTouching = false;
+    bool cursorOverlapping = false;
     for (const Obstacle& obstacle : obstacles)
     {
         if (obstacle.isCircle)
@@ -151,12 +151,12 @@ void SandboxLevel::renderDebug(hitbox::DebugRenderer& debug) const
             debug.objectBox(obstacle.shape, stateOf(obstacle));
         // The normal says which way the cursor shape would be pushed out.
         debug.contact(obstacle.contact);
-        cursorTouching = cursorTouching || obstacle.touching;
+        cursorOverlapping = cursorOverlapping || obstacle.overlapping;
     }
     if (cursorIsCircle)
-        debug.objectCircle(cursor, cursorTouching);
+        debug.objectCircle(cursor, cursorOverlapping);
     else
-        debug.objectBox(cursor, cursorTouching);
+        debug.objectBox(cursor, cursorOverlapping);
 }
 // [/slide]
 
@@ -167,9 +167,9 @@ std::string SandboxLevel::getHelpText() const
 
 std::string SandboxLevel::describeState() const
 {
-    int touching = 0;
+    int overlapping = 0;
     for (const Obstacle& obstacle : obstacles)
-        touching += obstacle.touching ? 1 : 0;
-    return std::string("cursor ") + (cursorIsCircle ? "circle" : "box") + " touching " +
-           std::to_string(touching) + " of " + std::to_string(obstacles.size()) + " shapes";
+        overlapping += obstacle.overlapping ? 1 : 0;
+    return std::string("cursor ") + (cursorIsCircle ? "circle" : "box") + " overlapping " +
+           std::to_string(overlapping) + " of " + std::to_string(obstacles.size()) + " shapes";
 }

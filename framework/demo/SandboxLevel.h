@@ -27,8 +27,8 @@ private:
     {
         hitbox::GameObject shape;
         bool isCircle = false;
-        bool touching = false;
-        hitbox::Contact contact; // how the cursor shape touches it
+        bool overlapping = false;
+        hitbox::Contact contact; // how the cursor shape overlaps it (hit, normal, depth)
     };
 
     void addObstacle(sf::Vector2f position, sf::Vector2f size, bool isCircle);
