@@ -19,13 +19,15 @@ DEBIAN_PYTHON = "/usr/bin/python3"
 
 
 def pillow_image():
-    """PIL.Image; restarts the running script under Debian's python3 when this one lacks Pillow."""
+    """PIL.Image; restarts the running command under Debian's python3 when this one lacks Pillow.
+    The command as python3 was given it (sys.orig_argv, Python 3.10+), so a script and
+    `python3 -m unittest ...` both restart whole: call this before the command does anything."""
     try:
         from PIL import Image
         return Image
     except ImportError:
         if os.path.exists(DEBIAN_PYTHON) and os.path.realpath(sys.executable) != os.path.realpath(DEBIAN_PYTHON):
-            os.execv(DEBIAN_PYTHON, [DEBIAN_PYTHON, *sys.argv])
+            os.execv(DEBIAN_PYTHON, [DEBIAN_PYTHON, *sys.orig_argv[1:]])
         print(f"{Path(sys.argv[0]).name}: needs Pillow (Debian: python3-pil; scripts/install-deps.sh installs it)",
               file=sys.stderr)
         sys.exit(2)
@@ -46,14 +48,19 @@ def write_png(path, width, height, rgba):
 TOLERANCE_PERCENT = 4.0
 
 
-def differing_percent(first, second):
-    """The share of pixels, in percent, whose colour differs; None if the sizes differ."""
+def differing_pixels(first, second):
+    """(how many pixels differ in colour, how many there are) in two pictures; None if the sizes differ."""
     width, height, a = pixels(first)
     other_width, other_height, b = pixels(second)
     if (width, height) != (other_width, other_height):
         return None
-    differing = sum(1 for i in range(0, len(a), 4) if a[i:i + 4] != b[i:i + 4])
-    return 100.0 * differing / (width * height)
+    return sum(1 for i in range(0, len(a), 4) if a[i:i + 4] != b[i:i + 4]), width * height
+
+
+def differing_percent(first, second):
+    """The share of pixels, in percent, whose colour differs; None if the sizes differ."""
+    counted = differing_pixels(first, second)
+    return None if counted is None else 100.0 * counted[0] / counted[1]
 
 
 def main():

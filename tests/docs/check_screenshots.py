@@ -18,24 +18,23 @@ per picture whose caption names no such command; exit 1 if any, 0 when all match
 lines and exit status stay those of the check, so a re-taken picture is a change to look at).
 Programs draw, so this needs a display: run it under `xvfb-run -a`. Exit 2 on bad usage.
 Usage: xvfb-run -a check_screenshots.py [--update] [--root ROOT] BUILD_DIR
-PNG files are read and written with zlib (the standard library), for 8-bit RGB and RGBA.
+Pictures are read with Pillow through scripts/compare-png.py, their one reader: Debian's
+python3-pil (scripts/install-deps.sh). Under a python3 without it the check restarts under
+Debian's /usr/bin/python3 as it starts; exit 2 when neither has Pillow.
 """
 import argparse
+import importlib.util
 import os
 import pathlib
 import re
 import shlex
-import struct
 import subprocess
 import sys
 import tempfile
-import zlib
 
 PROGRAM_SECONDS = 300  # the slowest picture (lab 13, 1300 steps, debug build) takes ~10 s
 PICTURE = re.compile(r"^!\[[^\]]*\]\(([^)\s:]+\.png)\)\s*$")  # a local picture on its own line
 CODE = re.compile(r"`([^`]+)`")  # may run over a line break, as Markdown allows
-PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-CHANNELS = {2: 3, 6: 4}  # PNG colour type: RGB, RGBA (what SFML writes)
 
 
 def sheets(root):
@@ -70,6 +69,22 @@ def caption_command(caption, picture):
     return None
 
 
+def load_compare_png():
+    """scripts/compare-png.py (beside this file's repository, whatever --root says): pixels(),
+    differing_pixels(), write_png(). Under a python3 without Pillow, this restarts the command."""
+    path = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "compare-png.py"
+    spec = importlib.util.spec_from_file_location("compare_png", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.pillow_image()
+    return module
+
+
+# Loaded on import, before anything runs, so a restart under Debian's python3 repeats nothing
+# (test_check_screenshots.py imports this file under unittest).
+compare_png = load_compare_png()
+
+
 def find_program(build, name):
     """The program NAME in BUILD (labs/NN_*/NAME, pong/NAME), or None."""
     for pattern in (f"*/{name}", f"*/*/{name}"):
@@ -77,76 +92,6 @@ def find_program(build, name):
             if path.is_file() and os.access(path, os.X_OK):
                 return path
     return None
-
-
-def read_png(path):
-    """(width, height, RGBA bytes row by row) of an 8-bit, non-interlaced RGB or RGBA PNG."""
-    data = pathlib.Path(path).read_bytes()
-    if not data.startswith(PNG_SIGNATURE):
-        raise ValueError(f"{path} is not a PNG file")
-    position, header, compressed = len(PNG_SIGNATURE), None, bytearray()
-    while position + 8 <= len(data):
-        length, kind = struct.unpack(">I4s", data[position:position + 8])
-        body = data[position + 8:position + 8 + length]
-        position += 12 + length
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            compressed += body
-    if header is None or header[2] != 8 or header[3] not in CHANNELS or header[6] != 0:
-        raise ValueError(f"{path}: only 8-bit, non-interlaced RGB or RGBA PNG files are read here")
-    width, height, channels = header[0], header[1], CHANNELS[header[3]]
-    raw, stride = zlib.decompress(bytes(compressed)), width * channels
-    pixels, previous = bytearray(), bytearray(stride)
-    for row in range(height):
-        start = row * (stride + 1)
-        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
-        unfilter(kind, line, previous, channels)
-        pixels += line
-        previous = line
-    if channels == 3:  # as RGBA, so an RGB and an RGBA file of the same picture compare equal
-        pixels = bytearray(b"".join(pixels[i:i + 3] + b"\xff" for i in range(0, len(pixels), 3)))
-    return width, height, bytes(pixels)
-
-
-def unfilter(kind, line, above, step):
-    """Undoes one row's PNG filter in place (PNG specification, section 9: Filtering)."""
-    for i in range(len(line)):
-        left = line[i - step] if i >= step else 0
-        up, corner = above[i], above[i - step] if i >= step else 0
-        if kind == 1:
-            line[i] = (line[i] + left) & 0xFF
-        elif kind == 2:
-            line[i] = (line[i] + up) & 0xFF
-        elif kind == 3:
-            line[i] = (line[i] + (left + up) // 2) & 0xFF
-        elif kind == 4:
-            guess = left + up - corner
-            near = min((abs(guess - left), 0, left), (abs(guess - up), 1, up), (abs(guess - corner), 2, corner))
-            line[i] = (line[i] + near[2]) & 0xFF
-        elif kind != 0:
-            raise ValueError(f"PNG row filter {kind} is not one of 0-4")
-
-
-def write_png(path, width, height, rgba):
-    """Writes RGBA bytes, row by row, as a PNG (every row unfiltered)."""
-    def chunk(kind, body):
-        return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
-    rows = b"".join(b"\x00" + rgba[row * width * 4:(row + 1) * width * 4] for row in range(height))
-    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
-    pathlib.Path(path).write_bytes(PNG_SIGNATURE + chunk(b"IHDR", header) +
-                                   chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
-
-
-def differing_pixels(first, second):
-    """How many pixels differ between two PNG files; None when their sizes differ."""
-    if pathlib.Path(first).read_bytes() == pathlib.Path(second).read_bytes():
-        return 0  # the usual case, and fast: the same program writes the same bytes
-    width, height, a = read_png(first)
-    other_width, other_height, b = read_png(second)
-    if (width, height) != (other_width, other_height):
-        return None
-    return sum(1 for i in range(0, len(a), 4) if a[i:i + 4] != b[i:i + 4])
 
 
 def draw(program, words, picture_path, folder):
@@ -185,11 +130,12 @@ def check_picture(root, build, page, picture, caption, update, scratch):
         return f"{sheet}: {words[0]} failed to draw {picture}: {failed}"
     if not committed.is_file():
         return f"{sheet}: {picture} is not committed; take it: {retake}"
-    differing = differing_pixels(committed, fresh)
-    if differing == 0:
+    if committed.read_bytes() == fresh.read_bytes():
+        return None  # the usual case, and fast: the same program writes the same bytes
+    counted = compare_png.differing_pixels(committed, fresh)  # (an RGB file of the same picture matches)
+    if counted is not None and counted[0] == 0:
         return None
-    width, height, _ = read_png(fresh)
-    amount = "another size" if differing is None else f"{differing} of {width * height} pixels differ"
+    amount = "another size" if counted is None else f"{counted[0]} of {counted[1]} pixels differ"
     if update:  # the caption's own command, in the sheet's folder, as a reader would run it
         failed = draw(program, words, picture, folder)
         return f"{sheet}: {words[0]} failed to re-take {picture}: {failed}" if failed else \

@@ -14,11 +14,12 @@ import pathlib
 import sys
 import tempfile
 import unittest
-import zlib
 from unittest import mock
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import check_screenshots  # noqa: E402 (found through the line above)
+
+PNG = check_screenshots.compare_png  # the pictures' one reader and writer (Pillow)
 
 WIDTH, HEIGHT = 7, 5
 # Draws the picture named by --from (beside this stand-in) into --screenshot's file.
@@ -35,17 +36,9 @@ def picture():
 
 
 def write_rgb_png(path, rgba):
-    """The same pixels as an RGB PNG with Sub-filtered rows: other bytes, the same picture."""
-    rows = bytearray()
-    for row in range(HEIGHT):
-        line = bytearray(b for i in range(WIDTH) for b in rgba[(row * WIDTH + i) * 4:(row * WIDTH + i) * 4 + 3])
-        rows += b"\x01" + bytes((line[i] - (line[i - 3] if i >= 3 else 0)) & 0xFF for i in range(len(line)))
-    chunk = check_screenshots.struct.pack
-    header = chunk(">IIBBBBB", WIDTH, HEIGHT, 8, 2, 0, 0, 0)
-    body = b""
-    for kind, data in ((b"IHDR", header), (b"IDAT", zlib.compress(bytes(rows), 9)), (b"IEND", b"")):
-        body += chunk(">I", len(data)) + kind + data + chunk(">I", zlib.crc32(kind + data))
-    pathlib.Path(path).write_bytes(check_screenshots.PNG_SIGNATURE + body)
+    """The same pixels as an RGB PNG (every alpha is 255): other bytes, the same picture."""
+    image = PNG.pillow_image().frombytes("RGBA", (WIDTH, HEIGHT), bytes(rgba))
+    image.convert("RGB").save(path, format="PNG")
 
 
 def sheet(caption):
@@ -80,7 +73,7 @@ class PlantedMistakes(unittest.TestCase):
         (self.build / "CMakeCache.txt").write_text("")
         program.write_text(STAND_IN)
         program.chmod(0o755)
-        check_screenshots.write_png(program.parent / "drawn.png", WIDTH, HEIGHT, picture())
+        PNG.write_png(program.parent / "drawn.png", WIDTH, HEIGHT, picture())
         for folder, (text, committed) in SHEETS.items():
             (self.root / folder).mkdir(parents=True)
             (self.root / folder / "README.md").write_text(text)
@@ -90,7 +83,7 @@ class PlantedMistakes(unittest.TestCase):
                 continue
             if committed == "one pixel":
                 pixels[4 * 17 + 1] ^= 0x01  # one channel of one pixel, one step
-            check_screenshots.write_png(self.root / folder / "screenshot.png", WIDTH, HEIGHT, bytes(pixels))
+            PNG.write_png(self.root / folder / "screenshot.png", WIDTH, HEIGHT, bytes(pixels))
         (self.root / "pong").mkdir()
         (self.root / "pong" / "README.md").write_text("# Pong\n\nNo picture here.\n")
 
@@ -112,7 +105,7 @@ class PlantedMistakes(unittest.TestCase):
         self.assertIn("5 pictures on 6 sheets, 2 match", output.splitlines()[-1])
 
     def test_the_rgb_picture_is_read_as_the_same_pixels(self):
-        rgb = check_screenshots.read_png(self.root / "labs/02_as_rgb/screenshot.png")
+        rgb = PNG.pixels(self.root / "labs/02_as_rgb/screenshot.png")
         self.assertEqual(rgb, (WIDTH, HEIGHT, picture()))
 
     def test_update_retakes_the_stale_picture_and_then_it_matches(self):
