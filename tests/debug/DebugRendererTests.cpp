@@ -19,6 +19,23 @@ TEST(DebugRenderer, ABoxIsFourLinesInOneArray)
     EXPECT_EQ(debug.getVertices()[0].color, hitbox::DebugRenderer::freeColor);
 }
 
+// Opaque lines skip blending (same pixels, less work): one see-through line turns it off for
+// the whole array until clear().
+TEST(DebugRenderer, DrawsWithoutBlendingOnlyWhileEveryLineIsOpaque)
+{
+    hitbox::DebugRenderer debug;
+    EXPECT_TRUE(debug.isOpaque());
+    debug.box({0.f, 0.f, 10.f, 10.f}, hitbox::DebugRenderer::hintColor);
+    debug.circle({{40.f, 40.f}, 5.f}, hitbox::DebugState::Overlapping);
+    EXPECT_TRUE(debug.isOpaque());
+    debug.line({0.f, 0.f}, {5.f, 5.f}, sf::Color(255, 255, 255, 254));
+    EXPECT_FALSE(debug.isOpaque());
+    debug.box({0.f, 0.f, 10.f, 10.f}, hitbox::DebugRenderer::hintColor);
+    EXPECT_FALSE(debug.isOpaque());
+    debug.clear();
+    EXPECT_TRUE(debug.isOpaque());
+}
+
 TEST(BroadphaseDrawing, EachMethodsStructureIsDrawn)
 {
     std::vector<hitbox::BroadphaseItem> items(20, hitbox::BroadphaseItem{{0.f, 0.f, 30.f, 30.f}});

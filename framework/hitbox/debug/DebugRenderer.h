@@ -93,7 +93,12 @@ public:
     [[nodiscard]] const std::vector<std::string>& getPanel() const;
 
     // Draw everything collected, in one call, then keep it (call clear() to start again).
+    // Opaque lines skip blending: while isOpaque(), the call draws without blending.
     void draw(sf::RenderTarget& target) const;
+    // True while every line collected is fully opaque (alpha 255; also when there are none).
+    // Blending an opaque colour writes that colour, so draw() skips it and the same pixels
+    // cost the renderer less: a software renderer need not read each pixel back first.
+    [[nodiscard]] bool isOpaque() const;
     // Forgets everything collected.
     void clear();
     // Everything collected so far (two triangles a line): tests read it without a window.
@@ -103,6 +108,7 @@ private:
     void dashed(Vec2 from, Vec2 to, sf::Color color);
 
     sf::VertexArray vertices{sf::PrimitiveType::Triangles};
+    bool opaque = true; // every vertex so far has alpha 255
     std::vector<std::string> panelLines;
 };
 
