@@ -9,7 +9,6 @@
 #include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
-#include <SFML/Graphics/BlendMode.hpp>
 #include <SFML/Graphics/PrimitiveType.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <SFML/Graphics/RenderStates.hpp>
@@ -24,7 +23,7 @@
 
 namespace
 {
-// The balls' colours: all opaque (alpha 255), so drawBalls draws them without blending.
+// The balls' colours.
 const sf::Color plainColor{90, 160, 230};
 const sf::Color shipColors[] = {{80, 210, 255}, {255, 160, 60}};
 const sf::Color bulletColors[] = {{170, 235, 255}, {255, 215, 150}};
@@ -159,17 +158,18 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
     // Every ball goes into ONE vertex array and ONE draw call. 10,000 sf::CircleShape draws
     // would cost more than all the collision detection. The array is last frame's, refilled.
     ballVertices.clear();
+    bool allOpaque = true; // opaque colours can skip blending (renderStatesFor)
     for (const Ball& ball : balls)
     {
+        const sf::Color color = colorOf(ball);
+        allOpaque = allOpaque && color.a == 255;
         if (ball.radius < squareBelowRadius)
-            addSquare(ballVertices, ball.box(), colorOf(ball));
+            addSquare(ballVertices, ball.box(), color);
         else
-            addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, colorOf(ball));
+            addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, color);
     }
-    // Every ball colour is opaque, so the draw skips blending: the same pixels, and a software
-    // renderer need not read each one back first (DebugRenderer::isOpaque).
     target.draw(ballVertices.data(), ballVertices.size(), sf::PrimitiveType::Triangles,
-                sf::RenderStates(sf::BlendNone));
+                hitbox::renderStatesFor(allOpaque));
 }
 // [/slide]
 

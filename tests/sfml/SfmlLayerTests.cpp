@@ -5,6 +5,7 @@
 #include "hitbox/sfml/Conversions.h"
 #include "hitbox/sfml/Graphics.h"
 
+#include <SFML/Graphics/BlendMode.hpp>
 #include <SFML/Graphics/Image.hpp>
 #include <SFML/Graphics/RectangleShape.hpp>
 #include <gtest/gtest.h>
@@ -27,6 +28,14 @@ TEST(SfmlConversions, ABoxKeepsItsCornerAndSizeInAnSfmlRect)
     EXPECT_EQ(hitbox::rectPosition(rect), sf::Vector2f(10.f, -20.f));
     EXPECT_EQ(hitbox::rectSize(rect), sf::Vector2f(30.f, 40.f));
     EXPECT_EQ(hitbox::toBox(rect), box);
+}
+
+TEST(SfmlGraphics, OnlyOpaqueColoursSkipBlending)
+{
+    // Opaque: drawn as they are, no blending (the same pixels, cheaper to draw).
+    EXPECT_EQ(hitbox::renderStatesFor(true).blendMode, sf::BlendNone);
+    // Anything see-through: SFML's usual alpha blending, so it still shows what lies beneath.
+    EXPECT_EQ(hitbox::renderStatesFor(false).blendMode, sf::BlendAlpha);
 }
 
 TEST(SfmlGraphics, RotationIsInDegreesClockwiseOnBothVersions)

@@ -1,8 +1,8 @@
 #include "hitbox/debug/DebugRenderer.h"
 
 #include "hitbox/objects/GameObject.h"
+#include "hitbox/sfml/Graphics.h"
 
-#include <SFML/Graphics/BlendMode.hpp>
 #include <SFML/Graphics/RenderStates.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 
@@ -276,10 +276,7 @@ void DebugRenderer::draw(sf::RenderTarget& target) const
     // Opaque lines skip blending: lab 8's grid lines at 10,000 balls cover about 40 % of the
     // arena, and Xvfb's software renderer drew about 6 % more frames a second when it need not
     // read those pixels back (docs/performance.md, "Sixth round").
-    sf::RenderStates states;
-    if (opaque)
-        states.blendMode = sf::BlendNone;
-    target.draw(vertices, states);
+    target.draw(vertices, renderStatesFor(opaque));
 }
 
 bool DebugRenderer::isOpaque() const

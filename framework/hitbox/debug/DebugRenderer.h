@@ -93,7 +93,7 @@ public:
     [[nodiscard]] const std::vector<std::string>& getPanel() const;
 
     // Draw everything collected, in one call, then keep it (call clear() to start again).
-    // Opaque lines skip blending: while isOpaque(), the call draws without blending.
+    // Opaque lines skip blending: the call's render states are renderStatesFor(isOpaque()).
     void draw(sf::RenderTarget& target) const;
     // True while every line collected is fully opaque (alpha 255; also when there are none).
     // Blending an opaque colour writes that colour, so draw() skips it and the same pixels

@@ -1,5 +1,6 @@
 #include "hitbox/sfml/Graphics.h"
 
+#include <SFML/Graphics/BlendMode.hpp>
 #include <SFML/Graphics/Image.hpp>
 #include <SFML/Graphics/RenderTexture.hpp>
 #include <SFML/Graphics/RenderWindow.hpp>
@@ -7,6 +8,11 @@
 
 namespace hitbox
 {
+
+sf::RenderStates renderStatesFor(bool allOpaque)
+{
+    return allOpaque ? sf::RenderStates(sf::BlendNone) : sf::RenderStates::Default;
+}
 
 #if SFML_VERSION_MAJOR >= 3
 

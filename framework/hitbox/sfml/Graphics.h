@@ -6,6 +6,7 @@
 
 #include <SFML/Graphics/Font.hpp>
 #include <SFML/Graphics/Rect.hpp>
+#include <SFML/Graphics/RenderStates.hpp>
 #include <SFML/Graphics/Text.hpp>
 #include <SFML/Graphics/Transformable.hpp>
 #include <SFML/Window/VideoMode.hpp>
@@ -45,6 +46,12 @@ namespace hitbox
 
 // What `window` shows now, as an image (for screenshots).
 [[nodiscard]] sf::Image captureWindow(const sf::RenderWindow& window);
+
+// How to draw vertices whose colours are all opaque (`allOpaque`: every alpha is 255) or not.
+// Opaque colours skip blending: blending an opaque colour writes that same colour, so the
+// pixels do not change, and a software renderer need not read each one back first. Anything
+// see-through is blended as usual (SFML's default, sf::BlendAlpha).
+[[nodiscard]] sf::RenderStates renderStatesFor(bool allOpaque);
 
 // Rotation in degrees, clockwise (SFML 3 uses sf::Angle, SFML 2 a float in degrees).
 void setRotationDegrees(sf::Transformable& shape, float degrees);
