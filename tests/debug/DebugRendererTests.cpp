@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,45 @@ TEST(DebugRenderer, DrawsWithoutBlendingOnlyWhileEveryLineIsOpaque)
     EXPECT_FALSE(debug.isOpaque());
     debug.clear();
     EXPECT_TRUE(debug.isOpaque());
+}
+
+TEST(DebugRenderer, AHairlineIsOnePixelAcrossALineTwo)
+{
+    hitbox::DebugRenderer debug;
+    debug.line({0.f, 5.f}, {10.f, 5.f}, hitbox::DebugRenderer::hintColor);
+    debug.hairline({0.f, 5.f}, {10.f, 5.f}, hitbox::DebugRenderer::hintColor);
+    const sf::VertexArray& lines = debug.getVertices();
+    ASSERT_EQ(lines.getVertexCount(), 2u * 6u);
+    // The first two corners of each quad lie either side of `from`, the width apart.
+    EXPECT_EQ(lines[0].position, sf::Vector2f(0.f, 4.f));
+    EXPECT_EQ(lines[1].position, sf::Vector2f(0.f, 6.f));
+    EXPECT_EQ(lines[6].position, sf::Vector2f(0.f, 4.5f));
+    EXPECT_EQ(lines[7].position, sf::Vector2f(0.f, 5.5f));
+    EXPECT_EQ(lines[6].color, hitbox::DebugRenderer::hintColor);
+}
+
+// A grid of small cells is drawn in hairlines, so it does not hide the boxes in its cells.
+TEST(BroadphaseDrawing, GridLinesAreOnePixelWideBelowSixteenPixelCellsAndTwoFromThere)
+{
+    for (const float cell : {4.f, 10.f, 15.9f, 16.f, 40.f})
+    {
+        hitbox::BroadphaseLayout layout;
+        layout.cellSize = cell;
+        layout.columns = 2;
+        layout.rows = 2;
+        layout.boxesPerCell.assign(4, 0u); // no busy cells: the lines only
+        hitbox::DebugRenderer debug;
+        hitbox::drawBroadphase(debug, layout);
+        const sf::VertexArray& lines = debug.getVertices();
+        ASSERT_EQ(lines.getVertexCount(), 6u * 6u) << cell; // 3 columns' and 3 rows' lines
+        const float expectedWidth = cell < 16.f ? 1.f : 2.f;
+        for (std::size_t line = 0; line < 6; ++line)
+        {
+            const sf::Vector2f across = lines[line * 6 + 1].position - lines[line * 6].position;
+            EXPECT_FLOAT_EQ(std::abs(across.x) + std::abs(across.y), expectedWidth)
+                << "cell " << cell << ", line " << line;
+        }
+    }
 }
 
 TEST(BroadphaseDrawing, EachMethodsStructureIsDrawn)

@@ -8,6 +8,12 @@ namespace hitbox
 namespace
 {
 
+// Cells narrower than this get 1-pixel grid lines. 2-pixel lines every 10 pixels (lab 8's
+// grid at 10,000 balls) cover about 40 % of the picture and hide the boxes in the cells; 1-pixel
+// lines show the same grid, and Xvfb's software renderer drew about 8 % more frames a second
+// (docs/performance.md, "Seventh round").
+const float hairlinesBelowCell = 16.f; // pixels
+
 void drawGrid(DebugRenderer& debug, const BroadphaseLayout& layout)
 {
     // Too many cells drawn one by one would hide everything else: past these sizes only the
@@ -17,17 +23,25 @@ void drawGrid(DebugRenderer& debug, const BroadphaseLayout& layout)
     const float cell = layout.cellSize;
     if (layout.columns <= 400 && layout.rows <= 400)
     {
+        const bool fine = cell < hairlinesBelowCell;
+        const auto gridLine = [&debug, fine](Vec2 from, Vec2 to)
+        {
+            if (fine)
+                debug.hairline(from, to, DebugRenderer::hintColor);
+            else
+                debug.line(from, to, DebugRenderer::hintColor);
+        };
         const float right = origin.x + cell * static_cast<float>(layout.columns);
         const float bottom = origin.y + cell * static_cast<float>(layout.rows);
         for (int column = 0; column <= layout.columns; ++column)
         {
             const float x = origin.x + cell * static_cast<float>(column);
-            debug.line({x, origin.y}, {x, bottom}, DebugRenderer::hintColor);
+            gridLine({x, origin.y}, {x, bottom});
         }
         for (int row = 0; row <= layout.rows; ++row)
         {
             const float y = origin.y + cell * static_cast<float>(row);
-            debug.line({origin.x, y}, {right, y}, DebugRenderer::hintColor);
+            gridLine({origin.x, y}, {right, y});
         }
     }
     if (cellCount > 20000)

@@ -28,8 +28,9 @@ namespace
 {
 const float arrowSeconds = 0.25f; // velocity arrows show a quarter of a second of motion
 const float normalLength = 24.f;
-const float lineWidth = 2.f;  // pixels
-const float dashLength = 6.f; // touching: 6 px drawn, 4 px gap
+const float lineWidth = 2.f;     // pixels
+const float hairlineWidth = 1.f; // pixels
+const float dashLength = 6.f;    // touching: 6 px drawn, 4 px gap
 const float dashGap = 4.f;
 const float hatchSpacing = 7.f; // overlapping: a 45-degree stripe every 7 px
 const int circleSegments = 32;
@@ -59,10 +60,20 @@ void DebugRenderer::line(Vec2 from, Vec2 to, sf::Color color)
 {
     // Each line is a thin quad (two triangles) rather than a 1-pixel sf::PrimitiveType::Lines
     // segment, so outlines stay visible on a lecture-hall projector.
+    quad(from, to, lineWidth, color);
+}
+
+void DebugRenderer::hairline(Vec2 from, Vec2 to, sf::Color color)
+{
+    quad(from, to, hairlineWidth, color);
+}
+
+void DebugRenderer::quad(Vec2 from, Vec2 to, float width, sf::Color color)
+{
     const Vec2 along = to - from;
     const float length = std::sqrt(along.x * along.x + along.y * along.y);
-    const Vec2 side = length > 0.f ? Vec2(-along.y, along.x) * (lineWidth / 2.f / length)
-                                   : Vec2(lineWidth / 2.f, 0.f);
+    const Vec2 side =
+        length > 0.f ? Vec2(-along.y, along.x) * (width / 2.f / length) : Vec2(width / 2.f, 0.f);
     const sf::Vertex corners[4] = {{toSfml(from - side), color},
                                    {toSfml(from + side), color},
                                    {toSfml(to + side), color},

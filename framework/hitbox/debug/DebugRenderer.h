@@ -57,6 +57,9 @@ public:
 
     // A line 2 pixels wide, in world coordinates (one of zero length shows nothing).
     void line(Vec2 from, Vec2 to, sf::Color color);
+    // The same 1 pixel wide: for patterns so fine (a grid of small cells) that 2-pixel lines
+    // would cover much of the picture and hide what lies under them.
+    void hairline(Vec2 from, Vec2 to, sf::Color color);
     // A line with an arrowhead at `to`.
     void arrow(Vec2 from, Vec2 to, sf::Color color);
     // The outline of `box` (a negative size is drawn as the box it spans).
@@ -106,6 +109,8 @@ public:
 
 private:
     void dashed(Vec2 from, Vec2 to, sf::Color color);
+    // A line as a quad `width` pixels across (two triangles).
+    void quad(Vec2 from, Vec2 to, float width, sf::Color color);
 
     sf::VertexArray vertices{sf::PrimitiveType::Triangles};
     bool opaque = true; // every vertex so far has alpha 255
