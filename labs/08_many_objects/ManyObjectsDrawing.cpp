@@ -245,8 +245,7 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
                         "    balls: " + withCommas(balls.size()) +
                         "    method: " + methodLabel(method) + "  (M)";
     if (method == hitbox::BroadphaseMethod::Grid)
-        lines += "    grid cell: " + fixed(gridCellSize, 0) +
-                 " px = " + fixed(float(hitbox::kGridCellPerAverageSide) * gridCellScale, 2) +
+        lines += "    grid cell: " + fixed(gridCellSize, 0) + " px = " + fixed(gridCellWidths, 2) +
                  " ball widths  ([ ])";
     lines += "\n";
     sf::Color color = sf::Color::White;

@@ -103,15 +103,19 @@ void ManyObjectsLevel::rebuildBroadphase()
         broadphase = std::make_unique<TimedBroadphase>(hitbox::makeBroadphase(method));
         return;
     }
-    // The grid's cell follows the balls' size (the framework's rule, gridCellSizeFor), so a
-    // cell holds about the same number of balls at 100 or 100,000 and the cost per ball stays
-    // flat. The lab lets you scale it ([ and ]) to see the trade-off: small cells, many cells
-    // to fill; big cells, many pairs per cell.
+    // The grid's cell follows the balls' size and how crowded they are (the framework's rule,
+    // GridCellRule.h), so a cell holds about the same number of balls at 100 or 100,000 and
+    // the cost per ball stays flat. The lab lets you scale it ([ and ]) to see the trade-off:
+    // small cells, many cells to fill; big cells, many pairs per cell.
     float widths = 0.f;
     for (const Ball& ball : balls)
         widths += 2.f * ball.radius;
     const float averageWidth = balls.empty() ? 10.f : widths / static_cast<float>(balls.size());
-    gridCellSize = static_cast<float>(hitbox::gridCellSizeFor(averageWidth)) * gridCellScale;
+    const hitbox::Box arena = getArena();
+    const double coverage =
+        hitbox::gridCoverage(double(balls.size()), averageWidth, arena.width, arena.height);
+    gridCellWidths = static_cast<float>(hitbox::gridCellPerAverageSide(coverage)) * gridCellScale;
+    gridCellSize = gridCellWidths * averageWidth;
     // Pairs in cell order: the lab responds to each pair once and needs no particular order,
     // and the grid skips sorting them (docs/performance.md).
     hitbox::GridSettings grid;

@@ -92,7 +92,8 @@ struct ManyObjectsState
     bool bruteForceSkipped = false;
     std::size_t ownShipHits = 0;
     std::size_t pickupBumps = 0;
-    float gridCellScale = 1.f; // grid cell = hitbox::gridCellSizeFor(average ball width) * this
+    float gridCellScale = 1.f;  // grid cell = the framework's cell rule (GridCellRule.h) * this
+    float gridCellWidths = 0.f; // the grid's cell in average ball widths (for the readout)
     float fireTimer = 0.f;
     float fireAngle = 0.f;
     float secondsSincePrint = 0.f; // simulated

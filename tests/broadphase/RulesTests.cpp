@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <random>
 
@@ -189,16 +190,72 @@ TEST(BroadphaseStats, TheGridTestsFarFewerPairsThanBruteForceOnASpreadOutScene)
 
 TEST(GridBroadphase, PicksACellSizeFromTheBoxesWhenNotGivenOne)
 {
+    // 50 boxes of 16 x 16 in a row, 40 apart: they spread over 1,976 x 16 pixels.
     std::vector<BroadphaseItem> items(50, BroadphaseItem{{0.f, 0.f, 16.f, 16.f}});
     for (std::size_t i = 0; i < items.size(); ++i)
         items[i].box.left = 40.f * static_cast<float>(i);
     hitbox::GridBroadphase grid;
     std::vector<Pair> pairs;
     grid.findPairs(items, pairs);
-    EXPECT_FLOAT_EQ(grid.layout().cellSize, float(hitbox::gridCellSizeFor(16.0))); // the rule
+    const double coverage = 50.0 * 16.0 * 16.0 / (1976.0 * 16.0); // about 0.40
+    EXPECT_DOUBLE_EQ(hitbox::gridCoverage(50.0, 16.0, 1976.0, 16.0), coverage);
+    EXPECT_FLOAT_EQ(grid.layout().cellSize, float(hitbox::gridCellSizeFor(16.0, coverage)));
+    // Sparser than crowded boxes, so a bigger cell than 3 sides; not the sparse limit, 6.
+    EXPECT_GT(grid.layout().cellSize, 3.f * 16.f);
+    EXPECT_LT(grid.layout().cellSize, 6.f * 16.f);
     hitbox::GridBroadphase fixedGrid(25.f);
     fixedGrid.findPairs(items, pairs);
     EXPECT_FLOAT_EQ(fixedGrid.layout().cellSize, 25.f);
+}
+
+// The cell rule's cost model (GridCellRule.h): per box, 12 x the cells it is listed in, plus
+// the pair tests it takes part in, for a cell k average sides wide.
+double cellRuleCost(double coverage, double k)
+{
+    return hitbox::kEntryCostInPairTests * (1.0 + 1.0 / k) * (1.0 + 1.0 / k) +
+           coverage * std::pow(1.0 + k, 4.0) / (2.0 * k * k);
+}
+
+TEST(GridCellRule, CrowdedBoxesGetThreeSidesSparseOnesUpToSix)
+{
+    // Crowded: the benchmark's boxes (0.75) and anything denser, or boxes with no area.
+    for (const double coverage : {0.75, 1.0, 40.0, std::numeric_limits<double>::infinity()})
+        EXPECT_DOUBLE_EQ(hitbox::gridCellPerAverageSide(coverage), 3.0) << coverage;
+    // Sparse: 6 from about 0.098 down to nothing at all.
+    for (const double coverage : {0.09, 0.01, 0.0})
+        EXPECT_DOUBLE_EQ(hitbox::gridCellPerAverageSide(coverage), 6.0) << coverage;
+    // Lab 8's crowd: balls covering 12 % of the arena, their squares 4 / pi times that.
+    EXPECT_NEAR(hitbox::gridCellPerAverageSide(0.12 * 4.0 / 3.14159265358979), 5.15, 0.01);
+    // Not a number, or below nothing: the crowded rule, never a NaN cell.
+    EXPECT_DOUBLE_EQ(hitbox::gridCellPerAverageSide(std::nan("")), 3.0);
+    EXPECT_DOUBLE_EQ(hitbox::gridCellPerAverageSide(-1.0), 3.0);
+    EXPECT_DOUBLE_EQ(hitbox::gridCellSizeFor(16.0, 0.75), 48.0);
+}
+
+TEST(GridCellRule, PicksTheCheapestCellOfTheCostModel)
+{
+    double previous = 6.0;
+    for (double coverage = 0.09; coverage <= 0.8; coverage += 0.01)
+    {
+        const double k = hitbox::gridCellPerAverageSide(coverage);
+        // Thinner boxes never get a smaller cell.
+        EXPECT_LE(k, previous) << coverage;
+        previous = k;
+        // Within [3, 6] the model's cost is lowest at k: a little bigger or smaller costs more.
+        if (k > 3.0 && k < 6.0)
+        {
+            EXPECT_LT(cellRuleCost(coverage, k), cellRuleCost(coverage, k - 0.05)) << coverage;
+            EXPECT_LT(cellRuleCost(coverage, k), cellRuleCost(coverage, k + 0.05)) << coverage;
+        }
+    }
+}
+
+TEST(GridCellRule, CoverageIsTheBoxesAreaOverTheAreaTheySpreadOver)
+{
+    EXPECT_DOUBLE_EQ(hitbox::gridCoverage(100.0, 2.0, 20.0, 20.0), 1.0);
+    EXPECT_DOUBLE_EQ(hitbox::gridCoverage(25.0, 2.0, 20.0, 20.0), 0.25);
+    EXPECT_EQ(hitbox::gridCoverage(3.0, 2.0, 0.0, 20.0), std::numeric_limits<double>::infinity());
+    EXPECT_DOUBLE_EQ(hitbox::gridCoverage(0.0, 2.0, 20.0, 20.0), 0.0);
 }
 
 TEST(Broadphase, DrawsItsStructureForTheDebugView)

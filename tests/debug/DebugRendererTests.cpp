@@ -54,9 +54,9 @@ TEST(DebugRenderer, AHairlineIsOnePixelAcrossALineTwo)
 }
 
 // A grid of small cells is drawn in hairlines, so it does not hide the boxes in its cells.
-TEST(BroadphaseDrawing, GridLinesAreOnePixelWideBelowSixteenPixelCellsAndTwoFromThere)
+TEST(BroadphaseDrawing, GridLinesAreOnePixelWideBelowTwentyFourPixelCellsAndTwoFromThere)
 {
-    for (const float cell : {4.f, 10.f, 15.9f, 16.f, 40.f})
+    for (const float cell : {4.f, 10.f, 23.9f, 24.f, 40.f})
     {
         hitbox::BroadphaseLayout layout;
         layout.cellSize = cell;
@@ -67,7 +67,7 @@ TEST(BroadphaseDrawing, GridLinesAreOnePixelWideBelowSixteenPixelCellsAndTwoFrom
         hitbox::drawBroadphase(debug, layout);
         const sf::VertexArray& lines = debug.getVertices();
         ASSERT_EQ(lines.getVertexCount(), 6u * 6u) << cell; // 3 columns' and 3 rows' lines
-        const float expectedWidth = cell < 16.f ? 1.f : 2.f;
+        const float expectedWidth = cell < 24.f ? 1.f : 2.f;
         for (std::size_t line = 0; line < 6; ++line)
         {
             const sf::Vector2f across = lines[line * 6 + 1].position - lines[line * 6].position;

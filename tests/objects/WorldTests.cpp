@@ -56,7 +56,8 @@ TEST(World, UsesTheGridByDefaultAndALevelCanPickAnother)
     EXPECT_EQ(world.getMethod(), BroadphaseMethod::Quadtree);
 }
 
-// The grid's cell size as the World was given it, or the rule's (3 x the boxes' average side).
+// The grid's cell size as the World was given it, or the rule's (GridCellRule.h: here four
+// 20 px boxes spread over 420 x 220 px, so sparse: 6 x their average side).
 TEST(World, TakesTheGridsCellSizeAndKeepsItAcrossMethodChanges)
 {
     Recorder a(0.f, 0.f), b(10.f, 10.f), c(200.f, 200.f), d(400.f, 90.f);
@@ -64,7 +65,7 @@ TEST(World, TakesTheGridsCellSizeAndKeepsItAcrossMethodChanges)
     for (Recorder* object : {&a, &b, &c, &d})
         world.add(*object);
     ASSERT_EQ(world.checkCollisions(), 1u);
-    EXPECT_FLOAT_EQ(world.getBroadphaseLayout().cellSize, 60.f) << "the rule: 3 x 20 px";
+    EXPECT_FLOAT_EQ(world.getBroadphaseLayout().cellSize, 120.f) << "the rule: 6 x 20 px";
 
     hitbox::GridSettings grid;
     grid.cellSize = 100.f;
@@ -90,7 +91,7 @@ TEST(World, TakesTheGridsCellSizeAndKeepsItAcrossMethodChanges)
         grid.cellSize = none;
         moved.setGridSettings(grid);
         EXPECT_EQ(moved.checkCollisions(), 1u);
-        EXPECT_FLOAT_EQ(moved.getBroadphaseLayout().cellSize, 60.f) << none;
+        EXPECT_FLOAT_EQ(moved.getBroadphaseLayout().cellSize, 120.f) << none;
     }
 }
 

@@ -81,7 +81,7 @@ public:
     [[nodiscard]] virtual BroadphaseLayout layout() const { return {}; }
 };
 
-// A broadphase with good defaults (the grid's cell size: gridCellSizeFor, GridBroadphase.h).
+// A broadphase with good defaults (the grid's cell size: the rule in GridCellRule.h).
 [[nodiscard]] std::unique_ptr<Broadphase> makeBroadphase(BroadphaseMethod method);
 // "BruteForce", "SortAndSweep", "Grid", "Quadtree".
 [[nodiscard]] const char* toString(BroadphaseMethod method);

@@ -506,9 +506,12 @@ GridBroadphase::Shape GridBroadphase::idealShape(std::size_t count) const
     const double width = double(right) - left;
     const double height = double(bottom) - top;
     const float fixedCellSize = gridSettings.cellSize;
-    double cell = fixedCellSize > 0.f ? fixedCellSize
-                  : usable > 0        ? gridCellSizeFor(sideSum / double(usable))
-                                      : 1.0;
+    const double averageSide = usable > 0 ? sideSum / double(usable) : 0.0;
+    double cell =
+        fixedCellSize > 0.f ? fixedCellSize
+        : usable > 0
+            ? gridCellSizeFor(averageSide, gridCoverage(double(usable), averageSide, width, height))
+            : 1.0;
     if (!(cell > 0.0) || !std::isfinite(cell))
         cell = std::max({width, height, 1.0}); // every box has zero size: one big cell
     // Cells are found by multiplying by 1 / cell size. For cells below about 1e-38 that is

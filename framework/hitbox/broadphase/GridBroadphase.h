@@ -10,6 +10,7 @@
 #pragma once
 
 #include "hitbox/broadphase/Broadphase.h"
+#include "hitbox/broadphase/GridCellRule.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,18 +19,6 @@
 
 namespace hitbox
 {
-
-// THE GRID'S CELL RULE, in one place: a cell is this many times the boxes' average side.
-// Smaller cells list each box in more cells, bigger ones test more pairs per cell; 2.5x to 4x
-// measured fastest (docs/performance.md, the cell-size rows).
-constexpr double kGridCellPerAverageSide = 3.0;
-
-// The cell size the rule gives for boxes whose sides average `averageSide` pixels (a ball's
-// side is its diameter). GridBroadphase uses it when given no cell size; lab 8 starts from it.
-[[nodiscard]] constexpr double gridCellSizeFor(double averageSide)
-{
-    return kGridCellPerAverageSide * averageSide;
-}
 
 // The order GridBroadphase::findPairs reports its pairs in.
 enum class PairOrder
@@ -48,7 +37,7 @@ constexpr std::size_t kGridTwoThreadsFromItems = 20000;
 
 struct GridSettings
 {
-    float cellSize = 0.f; // <= 0: gridCellSizeFor(the items' average side), every frame
+    float cellSize = 0.f; // <= 0: the cell rule (GridCellRule.h) for the items, every frame
     PairOrder order = PairOrder::Sorted;
     // 1 or 2 (other values: 1 below 2, 2 above). Two threads split the work in halves from
     // twoThreadsFromItems boxes; the pairs and their order are the same as with one.
@@ -66,9 +55,10 @@ struct GridSettings
 class GridBroadphase : public Broadphase
 {
 public:
-    // cellSize <= 0: gridCellSizeFor(the items' average side). Worked out every frame, but
-    // last frame's grid is kept while the rule's cell is within 1.25x of it and the boxes stay
-    // within a cell of it (any grid finds the same pairs; this one saves a pass).
+    // cellSize <= 0: the cell rule (GridCellRule.h) for the items' average side and coverage.
+    // Worked out every frame, but last frame's grid is kept while the rule's cell is within
+    // 1.25x of it and the boxes stay within a cell of it (any grid finds the same pairs; this
+    // one saves a pass).
     explicit GridBroadphase(float cellSize = 0.f);
     explicit GridBroadphase(const GridSettings& settings);
 

@@ -8,11 +8,10 @@ namespace hitbox
 namespace
 {
 
-// Cells narrower than this get 1-pixel grid lines. 2-pixel lines every 10 pixels (lab 8's
-// grid at 10,000 balls) cover about 40 % of the picture and hide the boxes in the cells; 1-pixel
-// lines show the same grid, and Xvfb's software renderer drew about 8 % more frames a second
-// (docs/performance.md, "Seventh round").
-const float hairlinesBelowCell = 16.f; // pixels
+// Cells narrower than this get 1-pixel grid lines: 2-pixel lines would cover more than a sixth
+// of the picture and hide the boxes in the cells (every 10 pixels, about 40 %). The software
+// renderer draws them faster too (docs/performance.md, "Seventh round").
+const float hairlinesBelowCell = 24.f; // pixels
 
 void drawGrid(DebugRenderer& debug, const BroadphaseLayout& layout)
 {

@@ -101,7 +101,7 @@ public:
     [[nodiscard]] BroadphaseMethod getMethod() const { return method; }
     // The grid's settings (GridBroadphase.h: cell size, threads, pair order), used whenever
     // the method is Grid, now and after a later setMethod(Grid). The default cell size, 0,
-    // works it out from the boxes every step (gridCellSizeFor); a cell size that is 0 or
+    // works it out from the boxes every step (GridCellRule.h); a cell size that is 0 or
     // less, or NaN, does the same; one too small for the boxes' spread is grown by the grid
     // (never more than a few cells per box). Same pairs whatever the settings, other speed.
     void setGridSettings(const GridSettings& settings);
