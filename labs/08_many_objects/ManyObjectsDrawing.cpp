@@ -3,7 +3,7 @@
 #include "ManyObjectsLevel.h"
 
 #include "hitbox/app/Assets.h"
-#include "hitbox/broadphase/GridBroadphase.h"
+#include "hitbox/broadphase/Broadphase.h"
 #include "hitbox/debug/BroadphaseDrawing.h"
 #include "hitbox/debug/DebugRenderer.h"
 #include "hitbox/sfml/Conversions.h"
@@ -23,7 +23,8 @@
 
 namespace
 {
-// The balls' colours.
+// The balls' colours, all opaque, so the batch draws without blending (renderStatesFor); a
+// see-through one would turn blending on and still draw right.
 const sf::Color plainColor{90, 160, 230};
 const sf::Color shipColors[] = {{80, 210, 255}, {255, 160, 60}};
 const sf::Color bulletColors[] = {{170, 235, 255}, {255, 215, 150}};

@@ -4,6 +4,7 @@
 
 #include "hitbox/app/Input.h"
 #include "hitbox/broadphase/GridBroadphase.h"
+#include "hitbox/broadphase/GridCellRule.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/platform/Platform.h"
 

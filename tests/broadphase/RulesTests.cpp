@@ -5,6 +5,7 @@
 
 #include "hitbox/broadphase/Broadphase.h"
 #include "hitbox/broadphase/GridBroadphase.h"
+#include "hitbox/broadphase/GridCellRule.h"
 
 #include <gtest/gtest.h>
 
@@ -208,8 +209,8 @@ TEST(GridBroadphase, PicksACellSizeFromTheBoxesWhenNotGivenOne)
     EXPECT_FLOAT_EQ(fixedGrid.layout().cellSize, 25.f);
 }
 
-// The cell rule's cost model (GridCellRule.h): per box, 12 x the cells it is listed in, plus
-// the pair tests it takes part in, for a cell k average sides wide.
+// The cell rule's cost model (GridCellRule.h), per box, for a cell k average sides wide:
+// kEntryCostInPairTests x the cells it is listed in, plus its share of the pair tests.
 double cellRuleCost(double coverage, double k)
 {
     return hitbox::kEntryCostInPairTests * (1.0 + 1.0 / k) * (1.0 + 1.0 / k) +
@@ -235,8 +236,9 @@ TEST(GridCellRule, CrowdedBoxesGetThreeSidesSparseOnesUpToSix)
 TEST(GridCellRule, PicksTheCheapestCellOfTheCostModel)
 {
     double previous = 6.0;
-    for (double coverage = 0.09; coverage <= 0.8; coverage += 0.01)
+    for (int percent = 9; percent <= 80; ++percent)
     {
+        const double coverage = percent / 100.0;
         const double k = hitbox::gridCellPerAverageSide(coverage);
         // Thinner boxes never get a smaller cell.
         EXPECT_LE(k, previous) << coverage;
@@ -256,6 +258,14 @@ TEST(GridCellRule, CoverageIsTheBoxesAreaOverTheAreaTheySpreadOver)
     EXPECT_DOUBLE_EQ(hitbox::gridCoverage(25.0, 2.0, 20.0, 20.0), 0.25);
     EXPECT_EQ(hitbox::gridCoverage(3.0, 2.0, 0.0, 20.0), std::numeric_limits<double>::infinity());
     EXPECT_DOUBLE_EQ(hitbox::gridCoverage(0.0, 2.0, 20.0, 20.0), 0.0);
+    // Two negative sides are no area either (not a positive one).
+    EXPECT_EQ(hitbox::gridCoverage(3.0, 2.0, -10.0, -10.0),
+              std::numeric_limits<double>::infinity());
+    // A NaN side stays NaN, and the rule answers it with the crowded cell.
+    EXPECT_TRUE(std::isnan(hitbox::gridCoverage(3.0, std::nan(""), 20.0, 20.0)));
+    EXPECT_DOUBLE_EQ(
+        hitbox::gridCellPerAverageSide(hitbox::gridCoverage(3.0, std::nan(""), 20.0, 20.0)),
+        hitbox::kGridCellPerAverageSideCrowded);
 }
 
 TEST(Broadphase, DrawsItsStructureForTheDebugView)

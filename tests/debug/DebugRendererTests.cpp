@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,31 @@ TEST(DebugRenderer, AHairlineIsOnePixelAcrossALineTwo)
     EXPECT_EQ(lines[6].position, sf::Vector2f(0.f, 4.5f));
     EXPECT_EQ(lines[7].position, sf::Vector2f(0.f, 5.5f));
     EXPECT_EQ(lines[6].color, hitbox::DebugRenderer::hintColor);
+}
+
+// A window shrunk to fit the screen shows 1.5 world units in a pixel: a hairline 1 unit wide
+// would miss pixel centres and drop out, so it grows to one pixel; zoomed in it stays 1 unit.
+TEST(DebugRenderer, AHairlineIsNeverThinnerThanAScreenPixel)
+{
+    const auto widthAt = [](float worldUnitsPerPixel)
+    {
+        hitbox::DebugRenderer debug;
+        debug.setScreenPixel(worldUnitsPerPixel);
+        debug.hairline({0.f, 5.f}, {10.f, 5.f}, hitbox::DebugRenderer::hintColor);
+        return debug.getVertices()[1].position.y - debug.getVertices()[0].position.y;
+    };
+    EXPECT_FLOAT_EQ(widthAt(1.5f), 1.5f);
+    EXPECT_FLOAT_EQ(widthAt(1.f), 1.f);
+    EXPECT_FLOAT_EQ(widthAt(0.5f), 1.f);
+    // Nonsense is ignored: the default, one unit.
+    for (const float nonsense : {0.f, -2.f, std::numeric_limits<float>::infinity(),
+                                 std::numeric_limits<float>::quiet_NaN()})
+        EXPECT_FLOAT_EQ(widthAt(nonsense), 1.f) << nonsense;
+    // Ordinary lines keep their 2 units whatever the pixel.
+    hitbox::DebugRenderer debug;
+    debug.setScreenPixel(1.5f);
+    debug.line({0.f, 5.f}, {10.f, 5.f}, hitbox::DebugRenderer::hintColor);
+    EXPECT_FLOAT_EQ(debug.getVertices()[1].position.y - debug.getVertices()[0].position.y, 2.f);
 }
 
 // A grid of small cells is drawn in hairlines, so it does not hide the boxes in its cells.

@@ -34,6 +34,7 @@
 #include "hitbox/broadphase/GridBroadphase.h"
 
 #include "hitbox/broadphase/BoxArrays.h"
+#include "hitbox/broadphase/GridCellRule.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/platform/Platform.h"
 

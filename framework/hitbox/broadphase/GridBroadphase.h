@@ -10,7 +10,6 @@
 #pragma once
 
 #include "hitbox/broadphase/Broadphase.h"
-#include "hitbox/broadphase/GridCellRule.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -8,13 +8,13 @@ namespace hitbox
 double gridCellPerAverageSide(double coverage)
 {
     if (!(coverage >= 0.0))
-        return kGridCellPerAverageSide; // NaN or negative: the crowded rule, the safe one
+        return kGridCellPerAverageSideCrowded; // NaN or negative: the crowded rule, the safe one
     // The cost model's balance (GridCellRule.h): it grows with k, so the cheapest k lies where
     // it reaches the target, found by halving [3, 6].
     const auto balance = [coverage](double k)
     { return coverage * (1.0 + k) * (1.0 + k) * (k - 1.0); };
     const double target = 2.0 * kEntryCostInPairTests;
-    double low = kGridCellPerAverageSide;
+    double low = kGridCellPerAverageSideCrowded;
     double high = kGridCellPerAverageSideSparse;
     if (balance(low) >= target)
         return low;
@@ -40,10 +40,9 @@ double gridCoverage(double count, double averageSide, double width, double heigh
 {
     if (!(count > 0.0))
         return 0.0;
-    const double area = width * height;
-    if (!(area > 0.0))
+    if (!(width > 0.0 && height > 0.0))
         return std::numeric_limits<double>::infinity();
-    return count * averageSide * averageSide / area;
+    return count * averageSide * averageSide / (width * height);
 }
 
 } // namespace hitbox

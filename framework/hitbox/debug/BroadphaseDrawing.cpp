@@ -8,10 +8,11 @@ namespace hitbox
 namespace
 {
 
-// Cells narrower than this get 1-pixel grid lines: 2-pixel lines would cover more than a sixth
-// of the picture and hide the boxes in the cells (every 10 pixels, about 40 %). The software
-// renderer draws them faster too (docs/performance.md, "Seventh round").
-const float hairlinesBelowCell = 24.f; // pixels
+// Cells narrower than this get hairlines (DebugRenderer::hairline) for grid lines. 2-unit lines
+// cover 1 - (1 - 2 / cell)^2 of the picture: about a sixth at 24 units, more than a third at 10,
+// and they hide the boxes in the cells. Lab 8's grid at 10,000 balls has 16.5-unit cells. The
+// software renderer draws hairlines faster too (docs/performance.md, "Seventh round").
+const float hairlinesBelowCell = 24.f; // world units (pixels at 1:1)
 
 void drawGrid(DebugRenderer& debug, const BroadphaseLayout& layout)
 {
@@ -22,10 +23,10 @@ void drawGrid(DebugRenderer& debug, const BroadphaseLayout& layout)
     const float cell = layout.cellSize;
     if (layout.columns <= 400 && layout.rows <= 400)
     {
-        const bool fine = cell < hairlinesBelowCell;
-        const auto gridLine = [&debug, fine](Vec2 from, Vec2 to)
+        const bool hairlines = cell < hairlinesBelowCell;
+        const auto gridLine = [&debug, hairlines](Vec2 from, Vec2 to)
         {
-            if (fine)
+            if (hairlines)
                 debug.hairline(from, to, DebugRenderer::hintColor);
             else
                 debug.line(from, to, DebugRenderer::hintColor);

@@ -8,8 +8,8 @@
 namespace hitbox
 {
 
-// Grid lines (up to 400 by 400 cells; 1 pixel wide for cells under 24 pixels, else 2) and the
-// cells holding two or more boxes (up to 20,000 cells); every quadtree node; each sweep
+// Grid lines (up to 400 by 400 cells; hairlines for cells under 24 units, else 2 units wide) and
+// the cells holding two or more boxes (up to 20,000 cells); every quadtree node; each sweep
 // interval as a bar along the top of the world.
 void drawBroadphase(DebugRenderer& debug, const BroadphaseLayout& layout);
 

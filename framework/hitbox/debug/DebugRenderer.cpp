@@ -6,6 +6,7 @@
 #include <SFML/Graphics/RenderStates.hpp>
 #include <SFML/Graphics/RenderTarget.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -29,7 +30,7 @@ namespace
 const float arrowSeconds = 0.25f; // velocity arrows show a quarter of a second of motion
 const float normalLength = 24.f;
 const float lineWidth = 2.f;     // pixels
-const float hairlineWidth = 1.f; // pixels
+const float hairlineWidth = 1.f; // pixels at 1:1
 const float dashLength = 6.f;    // touching: 6 px drawn, 4 px gap
 const float dashGap = 4.f;
 const float hatchSpacing = 7.f; // overlapping: a 45-degree stripe every 7 px
@@ -65,7 +66,14 @@ void DebugRenderer::line(Vec2 from, Vec2 to, sf::Color color)
 
 void DebugRenderer::hairline(Vec2 from, Vec2 to, sf::Color color)
 {
-    quad(from, to, hairlineWidth, color);
+    // At least one screen pixel: thinner, a line misses the pixel centres and drops out.
+    quad(from, to, std::max(hairlineWidth, screenPixel), color);
+}
+
+void DebugRenderer::setScreenPixel(float worldUnits)
+{
+    if (worldUnits > 0.f && std::isfinite(worldUnits))
+        screenPixel = worldUnits;
 }
 
 void DebugRenderer::quad(Vec2 from, Vec2 to, float width, sf::Color color)
@@ -284,9 +292,9 @@ void DebugRenderer::contact(const Contact& found)
 
 void DebugRenderer::draw(sf::RenderTarget& target) const
 {
-    // Opaque lines skip blending: lab 8's grid lines at 10,000 balls cover about 40 % of the
-    // arena, and Xvfb's software renderer drew about 6 % more frames a second when it need not
-    // read those pixels back (docs/performance.md, "Sixth round").
+    // Opaque lines skip blending: with lab 8's grid lines at 10,000 balls (2 units wide every 10
+    // then), Xvfb's software renderer drew about 6 % more frames a second when it need not read
+    // those pixels back (docs/performance.md, "Sixth round").
     target.draw(vertices, renderStatesFor(opaque));
 }
 

@@ -57,9 +57,13 @@ public:
 
     // A line 2 pixels wide, in world coordinates (one of zero length shows nothing).
     void line(Vec2 from, Vec2 to, sf::Color color);
-    // The same 1 pixel wide: for patterns so fine (a grid of small cells) that 2-pixel lines
-    // would cover much of the picture and hide what lies under them.
+    // The same 1 unit wide, and never less than one screen pixel (setScreenPixel): for
+    // patterns so fine (a grid of small cells) that 2-unit lines would cover much of the
+    // picture and hide what lies under them.
     void hairline(Vec2 from, Vec2 to, sf::Color color);
+    // How many world units one screen pixel spans: 1 at 1:1 (the default), more when the
+    // window is shrunk to fit the screen. 0 or less, infinite or NaN: ignored.
+    void setScreenPixel(float worldUnits);
     // A line with an arrowhead at `to`.
     void arrow(Vec2 from, Vec2 to, sf::Color color);
     // The outline of `box` (a negative size is drawn as the box it spans).
@@ -113,7 +117,8 @@ private:
     void quad(Vec2 from, Vec2 to, float width, sf::Color color);
 
     sf::VertexArray vertices{sf::PrimitiveType::Triangles};
-    bool opaque = true; // every vertex so far has alpha 255
+    bool opaque = true;      // every vertex so far has alpha 255
+    float screenPixel = 1.f; // world units a screen pixel spans (setScreenPixel)
     std::vector<std::string> panelLines;
 };
 

@@ -93,6 +93,8 @@ void drawFrame(sf::RenderTarget& target, const Level& level, const sf::Font& fon
     if (settings.showDebug)
     {
         DebugRenderer debug;
+        // The window may be shrunk to fit the screen: hairlines stay one screen pixel wide.
+        debug.setScreenPixel(target.mapPixelToCoords({1, 0}).x - target.mapPixelToCoords({0, 0}).x);
         level.renderDebug(debug);
         debug.draw(target);
         drawPanel(target, font, debug.getPanel());
