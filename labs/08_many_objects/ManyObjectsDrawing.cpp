@@ -246,8 +246,13 @@ void ManyObjectsLevel::drawReadout(sf::RenderTarget& target) const
                         "    balls: " + withCommas(balls.size()) +
                         "    method: " + methodLabel(method) + "  (M)";
     if (method == hitbox::BroadphaseMethod::Grid)
-        lines += "    grid cell: " + fixed(gridCellSize, 0) + " px = " + fixed(gridCellWidths, 2) +
+    {
+        // The cell the grid used in the last step, in pixels and in the balls' average width.
+        const hitbox::BroadphaseLayout grid = broadphase->layout();
+        const float widths = grid.averageSide > 0.f ? grid.cellSize / grid.averageSide : 0.f;
+        lines += "    grid cell: " + fixed(grid.cellSize, 0) + " px = " + fixed(widths, 2) +
                  " ball widths  ([ ])";
+    }
     lines += "\n";
     sf::Color color = sf::Color::White;
     if (bruteForceSkipped)

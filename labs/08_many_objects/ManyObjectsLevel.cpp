@@ -1,10 +1,10 @@
 #include "ManyObjectsLevel.h"
 
+#include "BallOrder.h"
 #include "Rules.h"
 
 #include "hitbox/app/Input.h"
 #include "hitbox/broadphase/GridBroadphase.h"
-#include "hitbox/broadphase/GridCellRule.h"
 #include "hitbox/geometry/Overlap.h"
 #include "hitbox/platform/Platform.h"
 
@@ -108,19 +108,10 @@ void ManyObjectsLevel::rebuildBroadphase()
     // GridCellRule.h), so a cell holds about the same number of balls at 100 or 100,000 and
     // the cost per ball stays flat. The lab lets you scale it ([ and ]) to see the trade-off:
     // small cells, many cells to fill; big cells, many pairs per cell.
-    float widths = 0.f;
-    for (const Ball& ball : balls)
-        widths += 2.f * ball.radius;
-    const float averageWidth = balls.empty() ? 10.f : widths / static_cast<float>(balls.size());
-    const hitbox::Box arena = getArena();
-    const double coverage =
-        hitbox::gridCoverage(double(balls.size()), averageWidth, arena.width, arena.height);
-    gridCellWidths = static_cast<float>(hitbox::gridCellPerAverageSide(coverage)) * gridCellScale;
-    gridCellSize = gridCellWidths * averageWidth;
     // Pairs in cell order: the lab responds to each pair once and needs no particular order,
     // and the grid skips sorting them (docs/performance.md).
     hitbox::GridSettings grid;
-    grid.cellSize = gridCellSize;
+    grid.cellScale = gridCellScale;
     grid.order = hitbox::PairOrder::CellOrder;
     grid.threads = threads;
     broadphase = std::make_unique<TimedBroadphase>(std::make_unique<hitbox::GridBroadphase>(grid));
@@ -179,6 +170,9 @@ void ManyObjectsLevel::spawnCrowd(int count)
         balls.push_back(makeBall(position, fromAngle(angle(random), speed(random)), radius,
                                  BallKind::Plain, 0));
     }
+    // Data locality: balls that are neighbours in the arena become neighbours in memory
+    // (BallOrder.h), done once, as a game does while loading a level.
+    sortBallsByTile(balls, arena, crowdSortTile);
 }
 
 void ManyObjectsLevel::spawnPairTableBalls(int count)
@@ -492,10 +486,6 @@ std::size_t ManyObjectsLevel::getOwnShipHits() const
 std::size_t ManyObjectsLevel::getPickupBumps() const
 {
     return pickupBumps;
-}
-float ManyObjectsLevel::getGridCellSize() const
-{
-    return gridCellSize;
 }
 
 std::string ManyObjectsLevel::getHelpText() const

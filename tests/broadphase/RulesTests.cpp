@@ -204,9 +204,59 @@ TEST(GridBroadphase, PicksACellSizeFromTheBoxesWhenNotGivenOne)
     // Sparser than crowded boxes, so a bigger cell than 3 sides; not the sparse limit, 6.
     EXPECT_GT(grid.layout().cellSize, 3.f * 16.f);
     EXPECT_LT(grid.layout().cellSize, 6.f * 16.f);
+    EXPECT_FLOAT_EQ(grid.layout().averageSide, 16.f);
     hitbox::GridBroadphase fixedGrid(25.f);
     fixedGrid.findPairs(items, pairs);
     EXPECT_FLOAT_EQ(fixedGrid.layout().cellSize, 25.f);
+}
+
+TEST(GridBroadphase, CellScaleMultipliesTheRulesCellAndFindsTheSamePairs)
+{
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> position(0.f, 500.f);
+    std::uniform_real_distribution<float> side(4.f, 12.f);
+    std::vector<BroadphaseItem> items(600);
+    for (BroadphaseItem& item : items)
+        item.box = {position(random), position(random), side(random), side(random)};
+    auto asList = [](const std::vector<Pair>& pairs)
+    {
+        PairList list;
+        for (const Pair& pair : pairs)
+            list.emplace_back(pair.first, pair.second);
+        return list;
+    };
+    hitbox::GridBroadphase ruled;
+    std::vector<Pair> expected;
+    ruled.findPairs(items, expected);
+    const float ruleCell = ruled.layout().cellSize;
+    // (Not 0.25: that grid would need more cells than kMaxCellsPerItem allows, and grows them.)
+    for (float scale : {0.5f, 2.f, 4.f})
+    {
+        hitbox::GridSettings settings;
+        settings.cellScale = scale;
+        hitbox::GridBroadphase scaled(settings);
+        std::vector<Pair> pairs;
+        scaled.findPairs(items, pairs);
+        EXPECT_FLOAT_EQ(scaled.layout().cellSize, ruleCell * scale) << "scale " << scale;
+        EXPECT_EQ(asList(pairs), asList(expected)) << "scale " << scale;
+    }
+    // A scale that is not a positive number counts as 1; a fixed cell ignores the scale.
+    for (float scale : {0.f, -2.f, std::numeric_limits<float>::quiet_NaN(),
+                        std::numeric_limits<float>::infinity()})
+    {
+        hitbox::GridSettings settings;
+        settings.cellScale = scale;
+        hitbox::GridBroadphase scaled(settings);
+        std::vector<Pair> pairs;
+        scaled.findPairs(items, pairs);
+        EXPECT_FLOAT_EQ(scaled.layout().cellSize, ruleCell) << "scale " << scale;
+    }
+    hitbox::GridSettings fixedCell;
+    fixedCell.cellSize = 30.f;
+    fixedCell.cellScale = 2.f;
+    hitbox::GridBroadphase fixedGrid(fixedCell);
+    fixedGrid.findPairs(items, expected);
+    EXPECT_FLOAT_EQ(fixedGrid.layout().cellSize, 30.f);
 }
 
 // The cell rule's cost model (GridCellRule.h), per box, for a cell k average sides wide:

@@ -59,6 +59,7 @@ struct BroadphaseLayout
     // Grid: cell (column, row) is the square at gridOrigin + (column, row) * cellSize.
     Vec2 gridOrigin;
     float cellSize = 0.f;
+    float averageSide = 0.f; // the boxes' average side in that frame (0: no usable box)
     int columns = 0;
     int rows = 0;
     std::vector<std::uint32_t> boxesPerCell; // row by row; empty when there is no grid

@@ -507,11 +507,14 @@ GridBroadphase::Shape GridBroadphase::idealShape(std::size_t count) const
     const double width = double(right) - left;
     const double height = double(bottom) - top;
     const float fixedCellSize = gridSettings.cellSize;
+    const float scale = gridSettings.cellScale;
+    const double ruleScale = scale > 0.f && std::isfinite(scale) ? double(scale) : 1.0;
     const double averageSide = usable > 0 ? sideSum / double(usable) : 0.0;
     double cell =
         fixedCellSize > 0.f ? fixedCellSize
         : usable > 0
-            ? gridCellSizeFor(averageSide, gridCoverage(double(usable), averageSide, width, height))
+            ? ruleScale * gridCellSizeFor(averageSide,
+                                          gridCoverage(double(usable), averageSide, width, height))
             : 1.0;
     if (!(cell > 0.0) || !std::isfinite(cell))
         cell = std::max({width, height, 1.0}); // every box has zero size: one big cell
@@ -1043,6 +1046,10 @@ BroadphaseLayout GridBroadphase::layout() const
         return result; // no findPairs yet
     result.gridOrigin = {shape.originX, shape.originY};
     result.cellSize = shape.cell;
+    const std::size_t usable = halves[0].usable + halves[1].usable;
+    if (usable > 0)
+        result.averageSide =
+            static_cast<float>((halves[0].sideSum + halves[1].sideSum) / double(usable));
     result.columns = shape.columns;
     result.rows = shape.rows;
     result.boxesPerCell.resize(cellCount);

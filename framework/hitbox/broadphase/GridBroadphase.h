@@ -37,6 +37,9 @@ constexpr std::size_t kGridTwoThreadsFromItems = 20000;
 struct GridSettings
 {
     float cellSize = 0.f; // <= 0: the cell rule (GridCellRule.h) for the items, every frame
+    // With the rule: its cell times this, to try other sizes (lab 8's [ and ]). Not above 0, or
+    // not finite: 1.
+    float cellScale = 1.f;
     PairOrder order = PairOrder::Sorted;
     // 1 or 2 (other values: 1 below 2, 2 above). Two threads split the work in halves from
     // twoThreadsFromItems boxes; the pairs and their order are the same as with one.

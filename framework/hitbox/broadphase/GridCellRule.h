@@ -1,5 +1,5 @@
 // GridCellRule.h - THE GRID'S CELL RULE, in one place: how big GridBroadphase makes its cells
-// when not given a size (and what lab 8 starts from).
+// when not given a size (GridSettings::cellScale multiplies it: lab 8's [ and ]).
 //
 // Small cells list each box in more cells; big cells test more pairs in each. Which costs more
 // depends on how crowded the boxes are, so the rule weighs both with a cost model (measured in
@@ -9,7 +9,7 @@
 //     each box's share of the tests (a test counted once, not once per box) is
 //     coverage x (1 + k)^4 / (2 k^2);
 // where coverage = boxes x average side^2 / the area they spread over (the rectangle around
-// them in GridBroadphase, the arena in lab 8). Counting a listing as kEntryCostInPairTests
+// them, which in lab 8 is about the arena). Counting a listing as kEntryCostInPairTests
 // tests, a box costs the sum of the two; the cheapest k solves
 //   coverage x (1 + k)^2 x (k - 1) = 2 x kEntryCostInPairTests.
 #pragma once
