@@ -1,4 +1,4 @@
-// ManyObjectsDrawing.cpp - everything ManyObjectsLevel draws: the balls (one batched draw),
+// ManyObjectsDrawing.cpp - everything ManyObjectsLevel draws: the balls (one vertex array),
 // the pair table, the readout and the debug view. Reads the simulation, changes nothing.
 #include "ManyObjectsLevel.h"
 
@@ -156,8 +156,9 @@ void ManyObjectsLevel::render(sf::RenderTarget& target) const
 // [slide:lab08-batched-draw]
 void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
 {
-    // Every ball goes into ONE vertex array and ONE draw call. 10,000 sf::CircleShape draws
-    // would cost more than all the collision detection. The array is last frame's, refilled.
+    // Every ball goes into ONE vertex array, drawn in a few big calls (682 squares each:
+    // hitbox::drawTriangles says why). 10,000 sf::CircleShape draws would cost more than all
+    // the collision detection. The array is last frame's, refilled.
     ballVertices.clear();
     bool allOpaque = true; // opaque colours can skip blending (renderStatesFor)
     for (const Ball& ball : balls)
@@ -169,8 +170,8 @@ void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
         else
             addDisc(ballVertices, hitbox::toSfml(ball.position), ball.radius, color);
     }
-    target.draw(ballVertices.data(), ballVertices.size(), sf::PrimitiveType::Triangles,
-                hitbox::renderStatesFor(allOpaque));
+    hitbox::drawTriangles(target, ballVertices.data(), ballVertices.size(),
+                          hitbox::renderStatesFor(allOpaque));
 }
 // [/slide]
 

@@ -295,7 +295,8 @@ void DebugRenderer::draw(sf::RenderTarget& target) const
     // Opaque lines skip blending: with lab 8's grid lines at 10,000 balls (2 units wide every 10
     // then), Xvfb's software renderer drew about 6 % more frames a second when it need not read
     // those pixels back (docs/performance.md, "Sixth round").
-    target.draw(vertices, renderStatesFor(opaque));
+    if (vertices.getVertexCount() > 0)
+        drawTriangles(target, &vertices[0], vertices.getVertexCount(), renderStatesFor(opaque));
 }
 
 bool DebugRenderer::isOpaque() const

@@ -1,8 +1,9 @@
 // DebugRenderer.h - outlines of collision shapes, velocity arrows and contact normals.
 //
 // Levels describe what to draw in renderDebug(); the renderer collects every line (a 2-pixel
-// wide quad) into one vertex array and draws it with a single draw call. Building the lines needs
-// no window, so tests can check what would be drawn.
+// wide quad) into one vertex array and draws it in one call, or a few for thousands of lines
+// (drawTriangles in sfml/Graphics.h). Building the lines needs no window, so tests can check
+// what would be drawn.
 #pragma once
 
 #include "hitbox/geometry/Polygon.h"
@@ -99,7 +100,7 @@ public:
     void panel(const std::vector<std::string>& lines);
     [[nodiscard]] const std::vector<std::string>& getPanel() const;
 
-    // Draw everything collected, in one call, then keep it (call clear() to start again).
+    // Draw everything collected (drawTriangles), then keep it (call clear() to start again).
     // Opaque lines skip blending: the call's render states are renderStatesFor(isOpaque()).
     void draw(sf::RenderTarget& target) const;
     // True while every line collected is fully opaque (alpha 255; also when there are none).
