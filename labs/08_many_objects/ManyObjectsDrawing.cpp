@@ -156,9 +156,9 @@ void ManyObjectsLevel::render(sf::RenderTarget& target) const
 // [slide:lab08-batched-draw]
 void ManyObjectsLevel::drawBalls(sf::RenderTarget& target) const
 {
-    // Every ball goes into ONE vertex array, drawn in a few big calls (682 squares each:
-    // hitbox::drawTriangles says why). 10,000 sf::CircleShape draws would cost more than all
-    // the collision detection. The array is last frame's, refilled.
+    // Every ball goes into ONE vertex array, drawn in a few big calls (hitbox::drawTriangles
+    // says why). 10,000 sf::CircleShape draws would cost more than all the collision
+    // detection. The array is last frame's, refilled.
     ballVertices.clear();
     bool allOpaque = true; // opaque colours can skip blending (renderStatesFor)
     for (const Ball& ball : balls)

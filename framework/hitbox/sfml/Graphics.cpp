@@ -19,25 +19,15 @@ sf::RenderStates renderStatesFor(bool allOpaque)
     return allOpaque ? sf::RenderStates(sf::BlendNone) : sf::RenderStates::Default;
 }
 
-namespace
-{
-// Whole squares per draw call. Mesa's llvmpipe, the software renderer of Linux machines with
-// no graphics card (virtual machines, Xvfb), fills a square made of two triangles as one
-// rectangle, without testing each 4x4 block of pixels against its edges, when it finds the
-// six vertices together in the piece of a draw call it is working on. It cuts a call into
-// pieces of 4,096 vertices, which is not a whole number of squares, so after the first piece
-// every square would be split and drawn as two triangles. Cutting first, into pieces of 682
-// squares, keeps them whole (Mesa's sources: draw_pt_fetch_shade_pipeline_llvm.c makes the
-// pieces, lp_setup_vbuf.c finds the rectangles). Lab 8's 10,000 balls, squares at that size,
-// drew 79-83 frames a second with --debug under Xvfb instead of 56-63 (docs/performance.md,
-// "Ninth round"). The rectangles may round an edge to the next pixel where the triangles did
-// not: in that window, paused at step 120, 8 of the 1,310,720 pixels changed; the sheet
-// pictures, drawn into a texture, did not change at all. A graphics card draws what it drew
-// before, and 15 calls instead of 1 cost it nothing it would notice.
-const std::size_t verticesPerDrawCall = 4092;
-static_assert(verticesPerDrawCall % 6 == 0, "whole squares of two triangles");
+// Whole squares per draw call, a trick for Mesa's llvmpipe, the software renderer of Linux
+// machines without a graphics card (virtual machines, Xvfb). llvmpipe fills two triangles that
+// make an axis-aligned rectangle as one rectangle, skipping its per-pixel edge tests, but only
+// in a piece of a draw call whose vertex count is a multiple of six (Mesa's lp_setup_vbuf.c).
+// It cuts long calls into pieces of 4,096 vertices, which never are; ours always are. Lab 8's
+// 10,000 balls drew 31-43 % more frames a second; a few edge pixels may move
+// (docs/performance.md, "Ninth round").
+static_assert(verticesPerDrawCall % 6 == 0, "whole squares of two triangles each");
 static_assert(verticesPerDrawCall <= 4096, "no longer than llvmpipe's own pieces");
-} // namespace
 
 void drawTriangles(sf::RenderTarget& target, const sf::Vertex* vertices, std::size_t count,
                    const sf::RenderStates& states)

@@ -10,7 +10,8 @@
 #include <SFML/Graphics/RenderStates.hpp>
 #include <SFML/Graphics/Text.hpp>
 #include <SFML/Graphics/Transformable.hpp>
-#include <SFML/Graphics/Vertex.hpp> // a class in SFML 2, a struct in SFML 3: not declared here
+#include <SFML/Graphics/Vertex.hpp> // not declared ahead: a class in SFML 2, a struct in SFML 3
+                                    // (the mismatch is MSVC's warning C4099)
 #include <SFML/Window/VideoMode.hpp>
 
 #include <cstddef>
@@ -57,9 +58,12 @@ namespace hitbox
 // see-through is blended as usual (SFML's default, sf::BlendAlpha).
 [[nodiscard]] sf::RenderStates renderStatesFor(bool allOpaque);
 
-// Draws `count` vertices as sf::PrimitiveType::Triangles (three a triangle), in draw calls of
-// at most 4,092 vertices: the picture of one call, and faster on Mesa's software renderer (the
-// trick, and the odd pixel it may move, in Graphics.cpp: "whole squares per draw call"). A
+// How many vertices drawTriangles hands the renderer in one draw call: 682 squares of two
+// triangles (why: Graphics.cpp, "whole squares per draw call").
+inline constexpr std::size_t verticesPerDrawCall = 4092;
+
+// Draws `count` vertices as sf::PrimitiveType::Triangles (three a triangle), in calls of
+// verticesPerDrawCall vertices: the picture of one call, faster on Mesa's software renderer. A
 // count of 0 draws nothing.
 void drawTriangles(sf::RenderTarget& target, const sf::Vertex* vertices, std::size_t count,
                    const sf::RenderStates& states);
