@@ -39,7 +39,7 @@ def queries_without_nodiscard(header, relative):
         words = [w for w in re.split(r"[\s*&]+", match.group("head")) if w]
         name = match.group("name")
         ret = [w for w in words if w not in SPECIFIERS]
-        skip = (not ret or "explicit" in words or ret == ["void"] or ret[0] in {"else", "new", "delete", "case", "throw"}
+        skip = (not ret or "explicit" in words or ret == ["void"] or ret[0] in {"else", "new", "delete", "case", "throw", "__asm__"}
                 or re.match(r"operator\s*([-+*/|&^]?=|bool)$", name) or (relative, name) in ACTIONS
                 or "[[nodiscard]]" in line or previous.endswith("[[nodiscard]]"))
         if not skip:

@@ -37,6 +37,7 @@
 #include "hitbox/broadphase/GridCellRule.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/platform/Platform.h"
+#include "hitbox/platform/Prefetch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -203,17 +204,6 @@ inline std::uint32_t packCells(const Range& range, std::size_t width)
 // Prefetched edges: how many entries ahead the tests ask for the boxes' edges.
 constexpr std::uint32_t kFetchAhead = 24;
 
-// Asks the cache for the line at `where` without waiting for it (a hint; nothing where SSE is
-// not compiled).
-inline void prefetch(const void* where)
-{
-#if defined(HITBOX_GRID_SSE)
-    _mm_prefetch(static_cast<const char*>(where), _MM_HINT_T0);
-#else
-    (void)where;
-#endif
-}
-
 // Calls testCell(begin, end) for every cell in [firstCell, endCell) with two entries or more
 // (most cells have fewer: nothing to test, and no hashing to find that out). Prefetched edges:
 // first it asks for the edges of the next kFetchAhead entries, so they arrive while this cell
@@ -233,7 +223,7 @@ void forEachBusyCell(const std::uint32_t* start, const std::uint32_t* items, con
             continue;
         const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
         for (fetched = std::max(fetched, end); fetched < until; ++fetched)
-            prefetch(itemEdges + (items[fetched] & indexMask));
+            platform::prefetch(itemEdges + (items[fetched] & indexMask));
         testCell(begin, end);
     }
 }
@@ -494,8 +484,6 @@ GridBroadphase::Shape GridBroadphase::idealShape(std::size_t count) const
     const Half& a = halves[0];
     const Half& b = halves[1];
     const std::size_t usable = a.usable + b.usable;
-    // Both halves' sums added in the same order with one or two threads: the same grid.
-    const double sideSum = a.sideSum + b.sideSum;
     const float left = usable > 0 ? std::min(a.left, b.left) : 0.f;
     const float top = usable > 0 ? std::min(a.top, b.top) : 0.f;
     const float right = usable > 0 ? std::max(a.right, b.right) : 0.f;
@@ -509,7 +497,7 @@ GridBroadphase::Shape GridBroadphase::idealShape(std::size_t count) const
     const float fixedCellSize = gridSettings.cellSize;
     const float scale = gridSettings.cellScale;
     const double ruleScale = scale > 0.f && std::isfinite(scale) ? double(scale) : 1.0;
-    const double averageSide = usable > 0 ? sideSum / double(usable) : 0.0;
+    const double averageSide = averageSideOfLastFrame();
     double cell =
         fixedCellSize > 0.f ? fixedCellSize
         : usable > 0
@@ -538,6 +526,13 @@ GridBroadphase::Shape GridBroadphase::idealShape(std::size_t count) const
     ideal.rows = static_cast<int>(std::min(cellsY, std::floor(maxCells / ideal.columns) + 1.0));
     ideal.cell = static_cast<float>(std::min(cell, double(std::numeric_limits<float>::max())));
     return ideal;
+}
+
+double GridBroadphase::averageSideOfLastFrame() const
+{
+    const std::size_t usable = halves[0].usable + halves[1].usable;
+    // Both halves' sums added in the same order with one or two threads: the same grid.
+    return usable > 0 ? (halves[0].sideSum + halves[1].sideSum) / double(usable) : 0.0;
 }
 
 bool GridBroadphase::keepsShape(const Shape& ideal, std::size_t count) const
@@ -702,7 +697,7 @@ HITBOX_TARGET_AVX std::size_t testCellsEightWide(const WideCellTest& test, Pair*
         const float* boxes = test.gathered;
         const std::uint32_t until = std::min(end + kFetchAhead, lastEntry);
         for (fetched = std::max(fetched, end); fetched < until; ++fetched)
-            prefetch(test.itemEdges + 4 * std::size_t(items[fetched] & mask));
+            platform::prefetch(test.itemEdges + 4 * std::size_t(items[fetched] & mask));
         for (std::uint32_t p = begin; p < end; ++p)
             _mm_store_ps(test.gathered + 4 * std::size_t(p - begin),
                          _mm_load_ps(test.itemEdges + 4 * std::size_t(items[p] & mask)));
@@ -1046,10 +1041,7 @@ BroadphaseLayout GridBroadphase::layout() const
         return result; // no findPairs yet
     result.gridOrigin = {shape.originX, shape.originY};
     result.cellSize = shape.cell;
-    const std::size_t usable = halves[0].usable + halves[1].usable;
-    if (usable > 0)
-        result.averageSide =
-            static_cast<float>((halves[0].sideSum + halves[1].sideSum) / double(usable));
+    result.averageSide = static_cast<float>(averageSideOfLastFrame());
     result.columns = shape.columns;
     result.rows = shape.rows;
     result.boxesPerCell.resize(cellCount);

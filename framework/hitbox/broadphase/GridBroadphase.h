@@ -119,6 +119,8 @@ private:
     void prepare(Half& half);
     void countCells(Half& half);
     [[nodiscard]] Shape idealShape(std::size_t count) const;
+    // The usable boxes' mean side ((width + height) / 2) in the last prepare(); 0 if none.
+    [[nodiscard]] double averageSideOfLastFrame() const;
     [[nodiscard]] bool keepsShape(const Shape& ideal, std::size_t count) const;
     void startCells();
     void fillCells(Half& half);
