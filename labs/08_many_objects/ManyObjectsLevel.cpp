@@ -351,7 +351,7 @@ void ManyObjectsLevel::recordStepTime(double cpuSeconds)
         std::size_t touching = 0;
         for (std::size_t i = 0; i < candidatePairs.size(); ++i)
         {
-            prefetchBallsOfPair(i + pairsPrefetchedAhead); // as the step's loop does
+            prefetchBallsOfPair(i + pairsPrefetchedAhead); // as the finished lab's loop does
             const hitbox::Pair& pair = candidatePairs[i];
             touching += hitbox::circleVsCircleContact(balls[pair.first].circle(),
                                                       balls[pair.second].circle())
@@ -410,17 +410,17 @@ void ManyObjectsLevel::update(float dt)
     stoppedAsTooSlow = stopWhenTooSlow && collisionMilliseconds > slowStepMilliseconds;
 }
 
-// Prefetching (Prefetch.h): the grid hands over the pairs in cell order, and their balls lie
-// anywhere in the 4.4 MB of 100,000 balls. Without asking early, nearly every pair waits for
-// main memory; asked for pairsPrefetchedAhead pairs early, the balls are there when the loop
-// gets to them: the loop took 0.4 x the CPU time at 100,000 balls (docs/performance.md).
+// Prefetching (Prefetch.h): the grid hands over the pairs in cell order, which is not the order
+// of the balls in memory, and at 100,000 balls (4.4 MB) a ball the cache does not hold makes
+// the pair wait for main memory. Asked for pairsPrefetchedAhead pairs early, the balls are
+// there when the loop gets to them (measured: docs/performance.md, tenth round).
 void ManyObjectsLevel::prefetchBallsOfPair(std::size_t index) const
 {
     if (index >= candidatePairs.size())
         return;
     const hitbox::Pair& pair = candidatePairs[index];
-    hitbox::platform::prefetchSmallObject(&balls[pair.first], sizeof(Ball));
-    hitbox::platform::prefetchSmallObject(&balls[pair.second], sizeof(Ball));
+    hitbox::platform::prefetchObject(balls[pair.first]);
+    hitbox::platform::prefetchObject(balls[pair.second]);
 }
 
 void ManyObjectsLevel::findPairsAndRespond()

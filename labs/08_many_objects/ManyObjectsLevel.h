@@ -67,8 +67,8 @@ constexpr int maxBalls = 100000;
 constexpr float crowdSortTile = 16.f;
 
 // The pair loop asks for the balls of the pair this many places ahead (prefetching, Ericson's
-// Real-Time Collision Detection, 13.6): a wait for main memory lasts about as long as a dozen
-// pairs' tests, so they arrive as the loop gets there. Measured: docs/performance.md, tenth round.
+// Real-Time Collision Detection, 13.6): far enough ahead that they arrive before the loop gets
+// there. 6, 12 and 24 measured the same within the noise (docs/performance.md, tenth round).
 constexpr std::size_t pairsPrefetchedAhead = 12;
 
 // Above this many balls brute force is not run: 3,000 balls already mean 4.5 million box

@@ -22,14 +22,14 @@
 namespace hitbox::platform
 {
 
-// Asks for the cache line (64 bytes) holding `address`.
+// Asks for the cache line holding `address` (64 bytes on x86, 128 on Apple's M chips).
 inline void prefetch(const void* address)
 {
 #if defined(__GNUC__) || defined(__clang__)
     __builtin_prefetch(address);
     // Kept calls: an empty asm statement the compiler must keep (it emits no instruction).
-    // Without it g++ 12 sees a function that only prefetches as one without any effect, and at
-    // -O3 dropped every call to lab 8's prefetchBallsOfPair (seen in the disassembly).
+    // Without it g++ 12 at -O3 judged a function that does nothing but prefetch to have no
+    // effect, and dropped every call to it (seen in the disassembly).
     __asm__ __volatile__("" : : "r"(address));
 #elif defined(HITBOX_PREFETCH_SSE)
     _mm_prefetch(static_cast<const char*>(address), _MM_HINT_T0);
@@ -38,12 +38,15 @@ inline void prefetch(const void* address)
 #endif
 }
 
-// Asks for an object of 1 to 64 bytes, which can lie across two cache lines (lab 8's 44-byte
-// balls do five times in eight): the lines of its first and its last byte.
-inline void prefetchSmallObject(const void* first, std::size_t size)
+// Asks for the lines of a small object, which can lie across two of them: the line of its first
+// byte and the line of its last.
+template <typename Object>
+void prefetchObject(const Object& object)
 {
+    static_assert(sizeof(Object) <= 64, "more than two cache lines: prefetch each line");
+    const char* first = reinterpret_cast<const char*>(&object);
     prefetch(first);
-    prefetch(static_cast<const char*>(first) + (size > 0 ? size - 1 : 0));
+    prefetch(first + sizeof(Object) - 1);
 }
 
 } // namespace hitbox::platform
