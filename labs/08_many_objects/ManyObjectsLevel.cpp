@@ -426,7 +426,6 @@ void ManyObjectsLevel::prefetchBallsOfPair(std::size_t index) const
 void ManyObjectsLevel::findPairsAndRespond()
 {
     // BEGIN TASK 2: ask the broadphase for candidate pairs; respond to those that really touch
-    // [slide:lab08-respond]
     broadphase->findPairs(items, candidatePairs);
     for (std::size_t i = 0; i < candidatePairs.size(); ++i)
     {
@@ -440,7 +439,6 @@ void ManyObjectsLevel::findPairsAndRespond()
         if (contact.hit)
             respond(a, b, contact);
     }
-    // [/slide]
     // STARTER TASK 2
     // candidatePairs.clear(); // no pairs asked for yet: every ball passes through the others
     // END TASK 2
