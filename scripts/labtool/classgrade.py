@@ -27,7 +27,7 @@ import zipfile  # (BadZipFile: a broken upload)
 from pathlib import Path
 
 from . import cmakeapi, engine, inspect, limits, procs, reports, sandbox
-from .submission import Refused, find, submission_name, unpack
+from .submission import Refused, find, printable_name, submission_name, unpack
 from .labs import REPO, BadInput, all_labs, find_lab, is_handout
 
 FAST_LINKER = next(([f"-fuse-ld={name}"] for name in ("lld", "gold") if shutil.which(f"ld.{name}")), [])
@@ -90,6 +90,22 @@ def prepare(build_dir, labs, jobs):
 
 # --- One submission ------------------------------------------------------------------------
 
+HEADER_SUFFIXES = (".h", ".hpp", ".inl")
+
+
+def headers_only(folder, lab_copy):
+    """A copy of folder's headers (nothing else) beside the submission's lab copy."""
+    copy = lab_copy.parent.parent / "headers-only" / folder.name
+    if not copy.is_dir():
+        for header in folder.rglob("*"):
+            if header.suffix in HEADER_SUFFIXES and header.is_file() and not header.is_symlink():
+                target = copy / header.relative_to(folder)
+                target.parent.mkdir(parents=True, exist_ok=True)
+                shutil.copyfile(header, target)
+        copy.mkdir(parents=True, exist_ok=True)
+    return copy
+
+
 def compile_caged(arguments, lab, lab_copy, output, cwd, log, caged, what, tests_visible):
     """One compiler run (caged unless caged is False); returns "" or why it failed."""
     if caged:
@@ -101,13 +117,16 @@ def compile_caged(arguments, lab, lab_copy, output, cwd, log, caged, what, tests
             if folder and Path(folder).is_dir() and not Path(folder).resolve() == (REPO / lab.folder).resolve():
                 read_only.add(Path(folder).resolve())
         read_only = {f for f in read_only if tests_visible or not str(f).startswith(str(REPO / "tests"))}
+        # Another lab's folder (labs 02 and 03 include lab 0's header) holds the instructor's
+        # solutions: the cage gets a copy of its headers only, at the same path.
+        read_only = {(headers_only(f, lab_copy), f) if f.is_relative_to(REPO / "labs") else f for f in read_only}
         writable = {output.parent}
         ccache_dir = os.environ.get("CCACHE_DIR") or str(Path.home() / ".cache" / "ccache")
         if arguments[0] == "ccache" and Path(ccache_dir).is_dir():
             writable.add(Path(ccache_dir))
         source = Path(arguments[arguments.index("-c") + 1])
         read_only.add(source.parent)
-        command = sandbox.compile_command(arguments, sorted(read_only), sorted(writable), cwd)
+        command = sandbox.compile_command(arguments, sorted(read_only, key=str), sorted(writable), cwd)
     else:
         command = procs.prlimit_prefix(limits.COMPILE_MEMORY, limits.COMPILE_FILE_BYTES, limits.COMPILE_SECONDS) + arguments
     out = output.parent / (output.name + ".log")
@@ -266,7 +285,7 @@ def grade_submission(source, labs, scratch_root, launcher, shared_dir, slots, ca
                                                  shared_dir, slot, deadline, caged)
         report["ignored"] = [f for f in listed if f not in used]
     except (Refused, OSError, subprocess.CalledProcessError, zipfile.BadZipFile, ValueError) as error:
-        reason = str(error) if isinstance(error, Refused) else f"not graded: {error}"
+        reason = str(error) if isinstance(error, Refused) else f"not graded: {printable_name(str(error))}"
         report["error"] = reason
         for lab in labs:
             report["labs"][lab.name] = {"results": [engine.TestResult(t, False, reason) for t in lab.tests],
@@ -364,6 +383,13 @@ def run(options):
             sources += sorted(p.resolve() for p in given.iterdir() if not p.name.startswith("."))
     if not sources:
         raise BadInput("no submissions found")
+    named = {}
+    for source in sources:
+        named.setdefault(submission_name(source), []).append(source.name)
+    clashes = [names for names in named.values() if len(names) > 1]
+    if clashes:
+        raise BadInput(f"two submissions would be graded under one name ({' and '.join(clashes[0])}): "
+                       "rename one; nothing was graded")
     try:
         grade(sources, labs, build, Path(options.out).resolve(), jobs, caged=not options.no_cage)
     except sandbox.SandboxUnavailable as error:

@@ -1,7 +1,11 @@
 """The one meaning of "passed": how one grading test is run and judged, on every path.
 
 A test runs in a process of its own (program --gtest_filter=Suite.Name) with GoogleTest's XML
-report written to a fresh folder the engine chose, under the limits of limits.py. It passes
+report written to a fresh folder the engine chose, under the limits of limits.py. On Linux and
+macOS the report's path is never on the command line: it goes through a pipe the test program
+reads before any lab code runs (tests/support/TestMain.cpp), into a folder of a random name;
+caged (class grading), inside a folder the test's user cannot list. So lab code cannot learn
+where the report goes, and cannot write one of its own there. It passes
 only when the process (and everything it started) is gone, it exited with status 0, no limit
 stopped it, and the report parses, names exactly that one test, says it ran and completed,
 and records no failure. Nothing it printed is read for the verdict. A task earns its mark when
@@ -12,6 +16,7 @@ import re
 import shutil
 import tempfile
 import xml.etree.ElementTree as ET
+import secrets
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,6 +31,10 @@ class TestResult:
     reason: str  # one line: "" when passed, else e.g. "failed", "took longer than 10 s"
     message: str = ""  # the failure's details (assertion messages)
     seconds: float = 0.0
+
+
+# The variable naming the report pipe's descriptor (tests/support/TestMain.cpp reads it).
+REPORT_PIPE = "HITBOX_GRADING_REPORT_FD"
 
 
 def test_environment():
@@ -53,14 +62,23 @@ def run_test(program, test, work, slot=None, threaded=False):
     """Runs one test and judges it (see the module's description). slot: run caged as that
     grading slot's user (Linux class grading); None: run here with the same limits."""
     report_dir = Path(tempfile.mkdtemp(prefix="test-", dir=work))
-    report = report_dir / "report.xml"
-    arguments = [f"--gtest_filter={test}", f"--gtest_output=xml:{report}", "--gtest_color=no",
-                 "--gtest_also_run_disabled_tests=0"]
+    hidden = report_dir / secrets.token_hex(16)  # a name lab code cannot guess
+    hidden.mkdir(mode=0o700)
+    report = hidden / "report.xml"
+    arguments = [f"--gtest_filter={test}", "--gtest_color=no", "--gtest_also_run_disabled_tests=0"]
     output = Path(work) / f"{report_dir.name}.out"
+    env, pipe = test_environment(), None
+    if os.name == "posix":  # the path through a pipe (TestMain.cpp), never on the command line
+        pipe = os.pipe()
+        os.write(pipe[1], str(report).encode())
+        os.close(pipe[1])
+        env[REPORT_PIPE] = str(pipe[0])
+    else:  # the self-check on Windows: a student's own run, nothing to hide
+        arguments.append(f"--gtest_output=xml:{report}")
     if slot is not None:
         from . import sandbox  # (Linux only: class grading; the self-check runs on Windows too)
-        report_dir.chmod(0o700)
-        sandbox.give_to_slot(report_dir, slot)
+        report_dir.chmod(0o711)  # the test's user may pass through, not list
+        sandbox.give_to_slot(hidden, slot)
         assets = [REPO / "assets"] if (REPO / "assets").is_dir() else []
         command = sandbox.test_command(program, arguments, report_dir, slot, assets)
     elif threaded:  # (limits from a thread: set by prlimit, not in the child)
@@ -69,9 +87,10 @@ def run_test(program, test, work, slot=None, threaded=False):
         command = [str(program), *arguments]
     try:
         outcome = procs.run_limited(command, output, limits.TEST_WALL_SECONDS + (2 if slot is not None else 0),
-                                    cwd=report_dir, env=test_environment(), memory=limits.TEST_MEMORY,
+                                    cwd=report_dir, env=env, memory=limits.TEST_MEMORY,
                                     file_bytes=limits.OUTPUT_BYTES, cpu_seconds=limits.TEST_SECONDS,
-                                    set_limits_here=slot is None and not threaded)
+                                    set_limits_here=slot is None and not threaded,
+                                    pass_fds=(pipe[0],) if pipe else ())
         if slot is not None:
             if outcome.status > 128:
                 outcome.status = 128 - outcome.status  # the cage reports a signal as 128 + n
@@ -79,6 +98,8 @@ def run_test(program, test, work, slot=None, threaded=False):
                 return TestResult(test, False, "a process of the test would not end", seconds=outcome.seconds)
         return judge(test, outcome, report)
     finally:
+        if pipe:
+            os.close(pipe[0])
         shutil.rmtree(report_dir, ignore_errors=True)
         output.unlink(missing_ok=True)
 

@@ -6,9 +6,13 @@ Refused when a student object
 - defines main, anything of GoogleTest (testing::, gtest), or a strong symbol the harness
   already defines (the tests, the lab's other files, the framework, GoogleTest, the C and C++
   libraries): replacing one changes what the tests see;
-- calls a function that ends or leaves the process, starts processes, or writes, renames or
-  deletes files (the ways to forge or hide a report; reading a file, as lab 9's level loader
-  does, is allowed);
+- calls a function of the C library that is not on its short list of computing functions
+  (maths, memory, text, printing, time, threads: C_LIBRARY_ALLOWED): a list of what may be
+  called, not of what may not, so a function nobody thought of (dlvsym, _Fork, ...) is
+  refused too; or a function of the C++ library that ends the process or writes, renames or
+  deletes files (reading a file, as lab 9's level loader does, is allowed);
+- runs code before the test program's own start-up (a constructor priority, .preinit_array,
+  an ifunc resolver): the program takes its report's path from the grader first (TestMain.cpp);
 - contains a raw system call instruction.
 Comments, strings and the student's own macros never matter: only compiled code is read.
 """
@@ -28,10 +32,36 @@ FORBIDDEN_CALLS = {
 }
 # Mangled-name pieces of the C++ library's file writers (reading a level file is allowed: lab 9).
 FORBIDDEN_CLASSES = ("basic_ofstream", "basic_fstream")
-# std::filesystem operations that change files (status, exists, file_size and path are fine).
+# std::filesystem operations that change files or list folders (status, exists, file_size and
+# path are fine: lab 9 uses them).
 FORBIDDEN_FILESYSTEM = re.compile(r"^std::filesystem::(__cxx11::)?(remove|remove_all|rename|copy|copy_file|"
                                   r"copy_symlink|create_\w+|resize_file|permissions|current_path|"
-                                  r"last_write_time)\(")
+                                  r"last_write_time|directory_iterator|recursive_directory_iterator)\b")
+# The C library functions lab code may call (the C library is where the operating system's
+# calls live): exact names, then families by pattern. Everything libm defines is allowed too.
+C_LIBRARY_ALLOWED = {
+    "malloc", "calloc", "realloc", "free", "aligned_alloc", "posix_memalign",
+    "abs", "labs", "llabs", "div", "ldiv", "lldiv", "atoi", "atol", "atoll", "atof",
+    "rand", "srand", "rand_r", "random", "srandom", "drand48", "srand48", "lrand48", "qsort", "bsearch",
+    "abort", "getenv", "secure_getenv", "time", "clock", "clock_gettime", "gettimeofday", "difftime",
+    "mktime", "localtime", "localtime_r", "gmtime", "gmtime_r", "strftime", "sleep", "usleep", "nanosleep",
+    "printf", "vprintf", "puts", "putchar", "fputs", "fputc", "putc", "fprintf", "vfprintf", "fwrite",
+    "fflush", "sprintf", "snprintf", "vsprintf", "vsnprintf", "sscanf", "vsscanf", "getchar", "fgets",
+    "stdin", "stdout", "stderr", "perror", "__errno_location", "__assert_fail", "__stack_chk_fail",
+    "__cxa_atexit", "__cxa_finalize", "__cxa_thread_atexit_impl", "__dso_handle", "__tls_get_addr",
+    "__libc_single_threaded", "sched_yield", "get_nprocs", "sysconf", "frexp", "ldexp", "modf",
+    "copysign", "copysignf", "finite", "finitef", "isinf", "isinff", "isnan", "isnanf", "__isnan", "__isnanf",
+    "__isinf", "__isinff", "__finite", "__finitef",
+}
+C_LIBRARY_ALLOWED_FAMILIES = re.compile(
+    r"^(_*(mem|str|wcs|wmem|mb|wc)[a-z0-9_]*|__\w*(printf|mem\w*|str\w*|stp\w*|wcs\w*|wmem\w*)_chk|is(alnum|alpha|blank|cntrl|digit|graph|lower|print|punct|"
+    r"space|upper|xdigit)|to(upper|lower)|__ctype_\w+|__isoc\d\d_\w*scanf|__isoc\d\d_strto\w+|"
+    r"pthread_(create|join|detach|self|equal|once|key_\w+|getspecific|setspecific|mutex\w*|cond\w*|"
+    r"rwlock\w*|attr\w*|spin\w*))$")
+C_LIBRARIES = ("libc.so.6",)
+MATH_LIBRARIES = ("libm.so.6",)
+# Sections whose code runs before the program's own start-up, refused in a student object.
+EARLY_SECTIONS = re.compile(r"^\.(preinit_array|init_array\.\d+|ctors\.\d+)$")
 STRONG_TYPES = set("TDBRGSA")  # nm letters of a non-weak definition
 RAW_SYSCALL = re.compile(r"\t(syscall|sysenter|int\s+\$0x80|svc\s+#?0)\b")
 SYSTEM_LIBRARIES = ("libc.so.6", "libstdc++.so.6", "libm.so.6", "libgcc_s.so.1")
@@ -47,6 +77,42 @@ def symbols(path, dynamic=False):
         if len(parts) >= 2 and not parts[0].endswith(":"):
             found.append((parts[0].split("@")[0], parts[1]))
     return found
+
+
+def library_path(name):
+    done = subprocess.run(["gcc", f"-print-file-name={name}"], capture_output=True, text=True)
+    path = done.stdout.strip()
+    return path if path and path != name else None
+
+
+@lru_cache(maxsize=None)
+def defined_by(names):
+    """What the shared libraries `names` (a tuple) define."""
+    found = set()
+    for name in names:
+        path = library_path(name)
+        if path:
+            found |= {s for s, kind in symbols(path, dynamic=True) if kind != "U"}
+    return frozenset(found)
+
+
+def c_library_refuses(name):
+    """True for a C library function lab code may not call (see C_LIBRARY_ALLOWED)."""
+    if name not in defined_by(C_LIBRARIES) or name in defined_by(MATH_LIBRARIES):
+        return False
+    if name.startswith("memfd") or "dprintf" in name:  # a file in memory; printing to any descriptor
+        return True
+    return name not in C_LIBRARY_ALLOWED and not C_LIBRARY_ALLOWED_FAMILIES.match(name)
+
+
+def early_start_up(obj):
+    """Why obj's code would run before the program's start-up, or ""."""
+    done = subprocess.run(["objdump", "-h", str(obj)], capture_output=True, text=True, errors="replace")
+    for line in done.stdout.splitlines():
+        parts = line.split()
+        if len(parts) > 1 and parts[0].isdigit() and EARLY_SECTIONS.match(parts[1]):
+            return f"asks to run code before the test program starts ({parts[1]}: a constructor priority?)"
+    return ""
 
 
 @lru_cache(maxsize=None)
@@ -84,6 +150,9 @@ def refusal(objects, harness):
             return f"`{source}`: its compiled object could not be read"
         defined = [(s, k) for s, k in listed if k not in "Uvw"]
         undefined = [s for s, k in listed if k in "Uvw"]
+        early = early_start_up(obj)
+        if early or any(kind == "i" for _, kind in listed):
+            return f"`{source}` {early or 'has an ifunc resolver, which runs before the test program starts'}"
         for name, kind in defined:
             if name == "main":
                 return f"`{source}` defines main(): the test program has its own"
@@ -96,11 +165,14 @@ def refusal(objects, harness):
                 return f"`{source}` uses the test framework ({demangle([name])[0].split('(')[0]})"
             if name in FORBIDDEN_CALLS:
                 return f"`{source}` calls {name}(): lab code may not end the program, start processes or touch files"
+            if c_library_refuses(name):
+                return (f"`{source}` calls {name}(), which lab code may not: of the C library it may use "
+                        "maths, memory, text, printing, time and threads only")
             if name.startswith("_Z") and any(piece in name for piece in FORBIDDEN_CLASSES):
                 return (f"`{source}` uses {demangle([name])[0].split('(')[0]}: "
                         "lab code may not write files")
             if name.startswith("_ZNSt10filesystem") and FORBIDDEN_FILESYSTEM.match(demangle([name])[0]):
-                return f"`{source}` calls {demangle([name])[0].split('(')[0]}: lab code may not change files"
+                return f"`{source}` calls {demangle([name])[0].split('(')[0]}: lab code may not change files or list folders"
         code = subprocess.run(["objdump", "-d", "--no-show-raw-insn", str(obj)], capture_output=True,
                               text=True, errors="replace").stdout
         if RAW_SYSCALL.search(code):

@@ -35,6 +35,10 @@ LINK_SECONDS = 60
 # holding a student's code (the self-check) is listed under TEST_SECONDS and the test limits:
 # the student's static initialisers run when it starts.
 LIST_SECONDS = 60
+# What one submission may hold once unpacked (a zip, a git repository or a folder): a lab's
+# files are a few kilobytes, so this only stops a zip bomb or a stray video.
+SUBMISSION_BYTES = 50 * 1000 * 1000
+SUBMISSION_FILES = 5000
 # Everything of one submission together (every lab): when it is used up, what is left is
 # reported "not run: the submission used up its N s".
 SUBMISSION_SECONDS = 300

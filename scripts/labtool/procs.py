@@ -67,13 +67,15 @@ def kill_group(process):
 
 
 def run_limited(command, output_path, seconds, cwd=None, env=None, memory=0, file_bytes=0,
-                cpu_seconds=0, set_limits_here=False):
+                cpu_seconds=0, set_limits_here=False, pass_fds=()):
     """Runs command with its output (stdout + stderr) in output_path, killed with its whole
     process group after `seconds`. With set_limits_here the POSIX limits are set in the child
-    (only for single-threaded callers; threaded callers put prlimit_prefix() in front)."""
+    (only for single-threaded callers; threaded callers put prlimit_prefix() in front).
+    pass_fds: descriptors the command inherits (POSIX)."""
     extra = {}
     if POSIX:
         extra["start_new_session"] = True
+        extra["pass_fds"] = tuple(pass_fds)
         if set_limits_here:
             extra["preexec_fn"] = _limits(memory, file_bytes, cpu_seconds)
     else:

@@ -10,6 +10,7 @@ from pathlib import Path
 
 from .engine import task_rows
 from .markers import task_of_test as task_of_name
+from .submission import printable_name
 
 GRADEBOOK_COLUMNS = ["student", "lab", "task", "tests passed", "tests total", "mark", "reason"]
 
@@ -115,7 +116,7 @@ def feedback(student, labs, report):
                 lines += [f"Task {task}: {hidden_failed} hidden check(s) failed (shown when the grades are published).", ""]
     if report.get("ignored"):
         lines += ["## Files not used", "", "Only the files with a task in them are graded; these were ignored:", ""]
-        lines += [f"- `{f}`" for f in report["ignored"][:50]]
+        lines += [f"- `{printable_name(f)}`" for f in report["ignored"][:50]]
         if len(report["ignored"]) > 50:
             lines.append(f"- ... and {len(report['ignored']) - 50} more")
     if report.get("error"):

@@ -59,10 +59,14 @@ def ensure_bubblewrap():
         raise SandboxUnavailable(f"bubblewrap cannot make a sandbox here: {probe.stderr.strip()}")
 
 
-def base_command(read_only, writable, scratch_bytes=None):
-    """bwrap with the system read-only and the given folders bound at their own paths."""
-    command = ["bwrap", "--unshare-all", "--die-with-parent", "--new-session",
-               "--proc", "/proc", "--dev", "/dev"]
+def base_command(read_only, writable, scratch_bytes=None, proc=True):
+    """bwrap with the system read-only and the given folders bound at their own paths (or a
+    (source, path) pair: source shown at path); proc:
+    a /proc of the cage's own (tests get none: /proc/self/mem would let lab code read the
+    process's memory as a file)."""
+    command = ["bwrap", "--unshare-all", "--die-with-parent", "--new-session", "--dev", "/dev"]
+    if proc:
+        command += ["--proc", "/proc"]
     for folder in SYSTEM_FOLDERS:
         if os.path.exists(folder):
             command += ["--ro-bind", folder, folder]
@@ -73,8 +77,9 @@ def base_command(read_only, writable, scratch_bytes=None):
     if scratch_bytes:
         command += ["--size", str(scratch_bytes)]
     command += ["--tmpfs", "/tmp"]
-    for folder in read_only:
-        command += ["--ro-bind", str(folder), str(folder)]
+    for folder in read_only:  # a folder, or (what to show, where)
+        source, target = folder if isinstance(folder, tuple) else (folder, folder)
+        command += ["--ro-bind", str(source), str(target)]
     for folder in writable:
         command += ["--bind", str(folder), str(folder)]
     return command
@@ -88,12 +93,12 @@ def compile_command(arguments, read_only, writable, cwd):
 
 def test_command(program, arguments, report_dir, slot, read_only=()):
     """A test program run caged as the slot's own user: it sees its program, read_only (the
-    course's assets), a folder for its report (fresh, made by the engine), a private scratch
-    /tmp of SCRATCH_BYTES."""
+    course's assets), the folder its report goes in (fresh, made by the engine: see engine.py),
+    a private scratch /tmp of SCRATCH_BYTES, and no /proc."""
     user = str(slot)
     return (["setpriv", f"--reuid={user}", f"--regid={user}", "--clear-groups", "--"]
             + prlimit_prefix(limits.TEST_MEMORY, limits.OUTPUT_BYTES, limits.TEST_SECONDS, limits.TEST_PROCESSES)
-            + base_command([program, *read_only], [report_dir], limits.SCRATCH_BYTES)
+            + base_command([program, *read_only], [report_dir], limits.SCRATCH_BYTES, proc=False)
             + ["--chdir", "/tmp", "--setenv", "HOME", "/tmp", "--", str(program)] + list(arguments))
 
 

@@ -87,6 +87,39 @@ TRICKS = [
     ("write-report-file", (), {"Ball.cpp": append(
         "#include <fstream>\nnamespace { struct W { ~W() { std::ofstream(\"report.xml\") << \"<testsuites/>\"; } } w; }")},
      (), "writes a report file from a static destructor"),
+    ("forged-report", (), {"Ball.cpp": append(
+        "#include <cstring>\n#include <fstream>\n#include <string>\nnamespace {\n"
+        "__attribute__((constructor)) void forge(int argc, char** argv, char**) {\n"
+        "    std::string test, report = \"report.xml\";\n"
+        "    for (int i = 1; i < argc; ++i) {\n"
+        "        if (!std::strncmp(argv[i], \"--gtest_filter=\", 15)) test = argv[i] + 15;\n"
+        "        if (!std::strncmp(argv[i], \"--gtest_output=xml:\", 19)) report = argv[i] + 19;\n"
+        "    }\n"
+        "    const std::string suite = test.substr(0, test.find('.')), name = test.substr(test.find('.') + 1);\n"
+        "    const std::string xml = \"<testsuites><testsuite name=\\\"\" + suite + \"\\\"><testcase name=\\\"\" + name +\n"
+        "        \"\\\" status=\\\"run\\\" result=\\\"completed\\\" classname=\\\"\" + suite + \"\\\"/></testsuite></testsuites>\";\n"
+        "    std::filebuf out;\n"
+        "    if (out.open(report.c_str(), std::ios::out | std::ios::trunc)) out.sputn(xml.data(), std::streamsize(xml.size()));\n"
+        "    static char none[] = \"--gtest_filter=None.None\", elsewhere[] = \"--gtest_output=xml:/tmp/real.xml\";\n"
+        "    for (int i = 1; i < argc; ++i) {\n"
+        "        if (!std::strncmp(argv[i], \"--gtest_filter=\", 15)) argv[i] = none;\n"
+        "        if (!std::strncmp(argv[i], \"--gtest_output=\", 15)) argv[i] = elsewhere;\n"
+        "    }\n"
+        "}\n}")},
+     (), "a constructor that writes a passing report (std::filebuf) where the command line says, then sends the real one elsewhere"),
+    ("dlvsym-fopen", (), {"Ball.cpp": append(
+        "#include <cstdio>\nextern \"C\" void* dlvsym(void*, const char*, const char*);\nnamespace {\n"
+        "struct Leave { Leave() { auto quit = reinterpret_cast<void (*)(int)>(dlvsym(nullptr, \"_exit\", \"GLIBC_2.2.5\"));\n"
+        "    if (quit) quit(0); } } leave;\n}")},
+     (), "looks up _exit at run time with dlvsym (a C library function on no list of forbidden ones)"),
+    ("fork-children", ALL, {"Ball.cpp": append(
+        "#include <sys/types.h>\nextern \"C\" pid_t _Fork(void);\nnamespace { struct Split { Split() { if (_Fork() == 0) for (;;) {} } } split; }")},
+     (), "starts a process with _Fork (each child gets its own memory limit)"),
+    ("early-constructor", ALL, {"Ball.cpp": append(
+        "namespace { __attribute__((constructor(101))) void early() {} }")},
+     (), "a constructor of priority 101, which would run before the test program takes its report's path"),
+    ("other-lab-solution", (), {"Ball.cpp": lambda t: '#include "MyCollision.cpp"\n' + t},
+     (), "includes lab 0's solution (MyCollision.cpp) through lab 0's include folder"),
     ("disabled-own-tests", (1,), None, (1,), "its own copy of the tests, every test DISABLED_ (ignored)"),
     ("define-test-macro", (), {"Ball.h": lambda t: t.replace("#pragma once", "#pragma once\n#define TEST(suite, name) void suite##name()", 1)},
      (), "#define TEST(...) in Ball.h, which the tests include"),

@@ -116,6 +116,51 @@ class ObjectCheck(unittest.TestCase):
     def test_a_comment_naming_the_test_framework_is_not_refused(self):
         self.assertEqual(self.check("// testing::Test, gtest, main()\nint one() { return 1; }\n")[0], "")
 
+    def test_maths_memory_text_and_printing_of_the_c_library_are_accepted(self):
+        source = ("#include <cmath>\n#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n"
+                  "float f(float x, char* text, std::size_t n) { std::snprintf(text, n, \"%g\", std::atan2(x, 1.f));\n"
+                  "    std::printf(\"%zu\\n\", std::strlen(text)); void* p = std::malloc(8); std::free(p);\n"
+                  "    return std::sqrt(x) + float(std::atoi(text)); }\n")
+        self.assertEqual(self.check(source)[0], "")
+
+    def test_a_c_library_function_off_the_list_is_refused_even_one_no_list_names(self):
+        refused, _ = self.check('extern "C" void* dlvsym(void*, const char*, const char*);\n'
+                                'void* find() { return dlvsym(nullptr, "_exit", "GLIBC_2.2.5"); }\n')
+        self.assertIn("calls dlvsym()", refused)
+        self.assertNotIn("\n", refused)
+
+    def test_code_that_asks_to_run_before_the_program_starts_is_refused(self):
+        refused, _ = self.check("namespace { __attribute__((constructor(101))) void early() {} }\n")
+        self.assertIn("before the test program starts", refused)
+
+    def test_listing_a_folder_is_refused(self):
+        refused, _ = self.check("#include <filesystem>\nint count() { int n = 0;\n"
+                                "    for (const auto& entry : std::filesystem::directory_iterator(\".\")) n += !entry.path().empty();\n"
+                                "    return n; }\n")
+        self.assertIn("list folders", refused)
+
+
+class Submissions(unittest.TestCase):
+    def test_a_zip_that_unpacks_too_big_is_refused_before_anything_is_written(self):
+        import zipfile
+        from labtool import limits, submission
+        folder = Path(tempfile.mkdtemp(prefix="labtool-test-"))
+        self.addCleanup(shutil.rmtree, folder, True)
+        bomb = folder / "bomb.zip"
+        with zipfile.ZipFile(bomb, "w", zipfile.ZIP_DEFLATED) as archive:
+            archive.writestr("labs/02_bouncing_balls/Ball.cpp", b"\0" * (limits.SUBMISSION_BYTES + 1))
+        (folder / "into").mkdir()
+        with self.assertRaises(submission.Refused) as refused:
+            submission.unpack(bomb, folder / "into")
+        self.assertIn("at most", str(refused.exception))
+        self.assertEqual(list((folder / "into").rglob("*")), [])
+
+    def test_a_file_name_cannot_add_lines_or_formatting_to_the_feedback(self):
+        from labtool.submission import printable_name
+        shown = printable_name("a\n## Everything passed\n`b`")
+        self.assertNotIn("\n", shown)
+        self.assertNotIn("`", shown)
+
 
 class WithoutBinutils(unittest.TestCase):
     def test_it_says_so_in_one_line_and_refuses_nothing(self):

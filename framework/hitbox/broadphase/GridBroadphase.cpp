@@ -31,10 +31,13 @@
 //   - Pairs in cell order: no sort when the caller does not need (first, second) order.
 //   - Two halves: with two threads, each half of the items is prepared and filled in by one
 //     thread, and each half of the cells tested by one; the halves never change the result.
+//   - One kept helper: the second thread is started once and given each pass's half
+//     (SecondThread.h), not started and stopped for every pass.
 #include "hitbox/broadphase/GridBroadphase.h"
 
 #include "hitbox/broadphase/BoxArrays.h"
 #include "hitbox/broadphase/GridCellRule.h"
+#include "hitbox/broadphase/SecondThread.h"
 #include "hitbox/geometry/Shapes.h"
 #include "hitbox/platform/Platform.h"
 #include "hitbox/platform/Prefetch.h"
@@ -43,8 +46,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <system_error>
-#include <thread>
 
 #if defined(__SSE2__) || defined(_M_X64) || defined(_M_AMD64)
 #include <emmintrin.h>
@@ -97,41 +100,30 @@ void growWithRoom(std::vector<T>& buffer, std::size_t size)
     buffer.resize(size);
 }
 
-// Runs work(0) and work(1), on two threads when `twoThreads`, and returns how many CPU seconds
-// the second thread spent beyond the first (0 on one thread). If no thread can be started, the
-// calling thread does both halves: the result is the same.
+// Runs work(0) and work(1), work(1) on `helper` when there is one, and returns how many CPU
+// seconds the helper spent beyond the calling thread (0 without a helper).
 template <typename Work>
-double runHalves(bool twoThreads, Work work)
+double runHalves(SecondThread* helper, Work work)
 {
-    if (!twoThreads)
+    if (helper == nullptr)
     {
         work(0);
         work(1);
         return 0.0;
     }
-    double workerSeconds = 0.0;
-    std::thread worker;
-    try
-    {
-        worker = std::thread(
-            [&work, &workerSeconds]
-            {
-                const double begin = platform::threadCpuSeconds();
-                work(1);
-                workerSeconds = platform::threadCpuSeconds() - begin;
-            });
-    }
-    catch (const std::system_error&)
-    {
-        work(0);
-        work(1);
-        return 0.0;
-    }
+    double helperSeconds = 0.0;
+    helper->start(
+        [&work, &helperSeconds]
+        {
+            const double begin = platform::threadCpuSeconds();
+            work(1);
+            helperSeconds = platform::threadCpuSeconds() - begin;
+        });
     const double begin = platform::threadCpuSeconds();
     work(0);
     const double ownSeconds = platform::threadCpuSeconds() - begin;
-    worker.join();
-    return std::max(0.0, workerSeconds - ownSeconds);
+    helper->finish();
+    return std::max(0.0, helperSeconds - ownSeconds);
 }
 
 // The four calls of a box that covers one cell, two or 2 x 2: `cell` its top-left cell,
@@ -1003,6 +995,24 @@ void GridBroadphase::sortPairs(std::vector<Pair>& pairs)
     }
 }
 
+GridBroadphase::~GridBroadphase() = default;
+
+SecondThread* GridBroadphase::helperThread()
+{
+    if (!secondThread)
+    {
+        try
+        {
+            secondThread = std::make_unique<SecondThread>();
+        }
+        catch (const std::system_error&)
+        {
+            return nullptr; // no thread to be had: this frame runs both halves itself
+        }
+    }
+    return secondThread.get();
+}
+
 void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs)
 {
     const std::size_t count = items.size();
@@ -1016,17 +1026,18 @@ void GridBroadphase::findPairs(const std::vector<BroadphaseItem>& items, std::ve
     halves[1].begin = count / 2;
     halves[1].end = count;
     const bool twoThreads = gridSettings.threads >= 2 && count >= gridSettings.twoThreadsFromItems;
-    double extra = runHalves(twoThreads, [this](int h) { prepare(halves[h]); });
+    SecondThread* const helper = twoThreads ? helperThread() : nullptr;
+    double extra = runHalves(helper, [this](int h) { prepare(halves[h]); });
     const Shape ideal = idealShape(count);
     if (!keepsShape(ideal, count))
     {
         shape = ideal;
         hasShape = true;
-        extra += runHalves(twoThreads, [this](int h) { countCells(halves[h]); });
+        extra += runHalves(helper, [this](int h) { countCells(halves[h]); });
     }
     startCells();
-    extra += runHalves(twoThreads, [this](int h) { fillCells(halves[h]); });
-    extra += runHalves(twoThreads, [this](int h) { testCells(halves[h]); });
+    extra += runHalves(helper, [this](int h) { fillCells(halves[h]); });
+    extra += runHalves(helper, [this](int h) { testCells(halves[h]); });
     gatherPairs(items, pairs);
     workerExtraSeconds = extra;
     currentItems = nullptr;

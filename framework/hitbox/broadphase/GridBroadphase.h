@@ -19,6 +19,8 @@
 namespace hitbox
 {
 
+class SecondThread;
+
 // The order GridBroadphase::findPairs reports its pairs in.
 enum class PairOrder
 {
@@ -63,6 +65,7 @@ public:
     // one saves a pass).
     explicit GridBroadphase(float cellSize = 0.f);
     explicit GridBroadphase(const GridSettings& settings);
+    ~GridBroadphase() override; // stops the second thread, if one was started
 
     // Every pair once, first < second, in the settings' PairOrder (Sorted unless asked).
     void findPairs(const std::vector<BroadphaseItem>& items, std::vector<Pair>& pairs) override;
@@ -116,6 +119,8 @@ private:
     };
 
     struct CellFinder;
+    // The second thread, started on the first frame that uses two (nullptr if none can start).
+    [[nodiscard]] SecondThread* helperThread();
     void prepare(Half& half);
     void countCells(Half& half);
     [[nodiscard]] Shape idealShape(std::size_t count) const;
@@ -161,6 +166,8 @@ private:
     std::vector<std::uint32_t> cellItems;
     std::vector<Pair> cellOrderPairs;     // PairOrder::Sorted: the pairs before sorting
     std::vector<std::uint32_t> pairStart; // counting sort of the pairs by `first`
+    // Runs one half of each pass with two threads. Last, so it stops before the rest goes.
+    std::unique_ptr<SecondThread> secondThread;
 };
 
 } // namespace hitbox

@@ -2,6 +2,7 @@
 // Nothing else in Hitbox includes a system header or calls a deprecated C runtime function.
 #include "hitbox/platform/Platform.h"
 
+#include <cstddef>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
@@ -100,6 +101,11 @@ bool runWithFileSizeLimit(std::uintmax_t, const std::function<void()>&)
     return false;
 }
 
+std::string takeInheritedPipe(const std::string&)
+{
+    return "";
+}
+
 #else
 
 std::optional<std::string> environmentVariable(const std::string& name)
@@ -181,6 +187,28 @@ bool runWithFileSizeLimit(std::uintmax_t bytes, const std::function<void()>& wor
     setrlimit(RLIMIT_FSIZE, &previous);
     std::signal(SIGXFSZ, previousHandler);
     return true;
+}
+
+std::string takeInheritedPipe(const std::string& variable)
+{
+    const std::optional<std::string> number = environmentVariable(variable);
+    if (!number || number->empty() || number->size() > 4 ||
+        number->find_first_not_of("0123456789") != std::string::npos)
+        return "";
+    const int descriptor = std::atoi(number->c_str());
+    if (descriptor < 3) // never standard input, output or error
+        return "";
+    std::string text;
+    char buffer[256];
+    for (;;)
+    {
+        const ssize_t got = read(descriptor, buffer, sizeof buffer);
+        if (got <= 0 || text.size() > 4096)
+            break;
+        text.append(buffer, static_cast<std::size_t>(got));
+    }
+    close(descriptor);
+    return text;
 }
 
 #endif

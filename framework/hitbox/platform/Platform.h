@@ -50,6 +50,12 @@ namespace hitbox::platform
 // instead of stopping the process): false, and `work` not run, where there is no such limit.
 [[nodiscard]] bool runWithFileSizeLimit(std::uintmax_t bytes, const std::function<void()>& work);
 
+// What a grader wrote to the pipe whose descriptor number the environment variable `variable`
+// holds, read to its end (at most about 4 KB); the descriptor is closed afterwards, so later
+// code cannot read it. "" when the variable is unset, not a number above 2, or on Windows
+// (class grading runs on Linux only).
+[[nodiscard]] std::string takeInheritedPipe(const std::string& variable);
+
 // Seconds of CPU time the calling thread has used so far; only differences mean anything: the
 // clock that says what a piece of work costs whatever else the machine runs (wall-clock time
 // also counts the time other programs had the core). Linux/macOS:
