@@ -220,10 +220,15 @@ def grade_lab(lab, files, root, work, used, launcher, shared_dir, slot, deadline
     program = work / "run" / f"{lab.name}_tests"
     program.parent.mkdir(parents=True, exist_ok=True)
     # The instructor's link command with the objects built here: the test objects first (as
-    # before the flags), the lab's objects where its archive was, the program in the scratch.
+    # before the flags), the lab's own objects where its archive was, the program in the
+    # scratch. The student's objects come last, then the libraries again for what they use:
+    # where the student's code and the instructor's both define a weak (inline, template)
+    # symbol, the linker keeps the first copy it meets, the instructor's.
+    students = [str(o) for o in student_objects.values()]
     linked = [lab.link.compiler, *FAST_LINKER, *test_objects, *lab.link.flags, "-o", str(program)]
     for library in lab.link.libraries:
-        linked += level_objects if library.endswith(lab.level_archive) else [library]
+        linked += [o for o in level_objects if o not in students] if library.endswith(lab.level_archive) else [library]
+    linked += students + [library for library in lab.link.libraries if not library.endswith(lab.level_archive)]
     outcome = procs.run_limited(linked, work / "link.log", limits.LINK_SECONDS, cwd=lab.link.directory)
     log.append(outcome.output)
     if outcome.status != 0 or outcome.timed_out:

@@ -69,10 +69,15 @@ def run_test(program, test, work, slot=None, threaded=False):
     output = Path(work) / f"{report_dir.name}.out"
     env, pipe = test_environment(), None
     if os.name == "posix":  # the path through a pipe (TestMain.cpp), never on the command line
-        pipe = os.pipe()
-        os.write(pipe[1], str(report).encode())
-        os.close(pipe[1])
-        env[REPORT_PIPE] = str(pipe[0])
+        import fcntl  # (POSIX only)
+        read_end, write_end = os.pipe()
+        os.write(write_end, str(report).encode())
+        os.close(write_end)
+        if read_end < 3:  # TestMain takes no standard descriptor
+            read_end, low = fcntl.fcntl(read_end, fcntl.F_DUPFD, 3), read_end
+            os.close(low)
+        pipe = (read_end,)
+        env[REPORT_PIPE] = str(read_end)
     else:  # the self-check on Windows: a student's own run, nothing to hide
         arguments.append(f"--gtest_output=xml:{report}")
     if slot is not None:

@@ -9,15 +9,22 @@ Refused when a student object
 - calls a function of the C library that is not on its short list of computing functions
   (maths, memory, text, printing, time, threads: C_LIBRARY_ALLOWED): a list of what may be
   called, not of what may not, so a function nobody thought of (dlvsym, _Fork, ...) is
-  refused too; or a function of the C++ library that ends the process or writes, renames or
-  deletes files (reading a file, as lab 9's level loader does, is allowed);
-- runs code before the test program's own start-up (a constructor priority, .preinit_array,
-  an ifunc resolver): the program takes its report's path from the grader first (TestMain.cpp);
+  refused too; or std::ofstream, std::fstream, or std::filesystem calls that change files or
+  list folders (reading a file, as lab 9's level loader does, is allowed; a std::filebuf
+  opened for writing, which that reading shares its function with, can write only in the
+  test's private /tmp);
+- defines a name of GoogleTest (or of anything made of its types, such as a std::vector of
+  its results) or of the C library, even weakly: the program's own copy of such a name can
+  be the one every caller gets;
+- runs code before the test program's own start-up or in an order of its own (a constructor
+  priority, .preinit_array, .init or .fini code, an ifunc resolver): the program takes its
+  report's path from the grader first (TestMain.cpp);
 - contains a raw system call instruction.
 Comments, strings and the student's own macros never matter: only compiled code is read.
 """
 import re
 import subprocess
+import sys
 from functools import lru_cache
 
 # Called from a lab's code, these could end the test early or reach the report.
@@ -51,7 +58,8 @@ C_LIBRARY_ALLOWED = {
     "__cxa_atexit", "__cxa_finalize", "__cxa_thread_atexit_impl", "__dso_handle", "__tls_get_addr",
     "__libc_single_threaded", "sched_yield", "get_nprocs", "sysconf", "frexp", "ldexp", "modf",
     "copysign", "copysignf", "finite", "finitef", "isinf", "isinff", "isnan", "isnanf", "__isnan", "__isnanf",
-    "__isinf", "__isinff", "__finite", "__finitef",
+    "__isinf", "__isinff", "__finite", "__finitef", "ctime", "ctime_r", "asctime", "asctime_r",
+    "fclose", "fgetc", "getc", "fread", "feof", "ferror", "clearerr", "fseek", "ftell", "rewind", "ungetc",
 }
 C_LIBRARY_ALLOWED_FAMILIES = re.compile(
     r"^(_*(mem|str|wcs|wmem|mb|wc)[a-z0-9_]*|__\w*(printf|mem\w*|str\w*|stp\w*|wcs\w*|wmem\w*)_chk|is(alnum|alpha|blank|cntrl|digit|graph|lower|print|punct|"
@@ -60,8 +68,12 @@ C_LIBRARY_ALLOWED_FAMILIES = re.compile(
     r"rwlock\w*|attr\w*|spin\w*))$")
 C_LIBRARIES = ("libc.so.6",)
 MATH_LIBRARIES = ("libm.so.6",)
-# Sections whose code runs before the program's own start-up, refused in a student object.
-EARLY_SECTIONS = re.compile(r"^\.(preinit_array|init_array\.\d+|ctors\.\d+)$")
+# No student object may define a name these define: the program's own copy would be used
+# everywhere, by GoogleTest too (a home-made fopen would see the report's path).
+C_RUNTIME = ("libc.so.6", "libm.so.6", "libgcc_s.so.1", "libpthread.so.0", "libdl.so.2")
+# Sections whose code runs before the program's own start-up (or in an order of its own),
+# refused in a student object: everything but the plain .init_array of ordinary constructors.
+EARLY_SECTIONS = re.compile(r"^\.(init|fini|preinit_array.*|init_array\..*|fini_array\..*|ctors.*|dtors.*)$")
 STRONG_TYPES = set("TDBRGSA")  # nm letters of a non-weak definition
 RAW_SYSCALL = re.compile(r"\t(syscall|sysenter|int\s+\$0x80|svc\s+#?0)\b")
 SYSTEM_LIBRARIES = ("libc.so.6", "libstdc++.so.6", "libm.so.6", "libgcc_s.so.1")
@@ -98,11 +110,19 @@ def defined_by(names):
 
 def c_library_refuses(name):
     """True for a C library function lab code may not call (see C_LIBRARY_ALLOWED)."""
+    if sys.platform.startswith("linux") and not defined_by(C_LIBRARIES):
+        raise RuntimeError("the grader cannot find libc.so.6 (gcc -print-file-name), so it cannot "
+                           "check which C library functions lab code calls")
     if name not in defined_by(C_LIBRARIES) or name in defined_by(MATH_LIBRARIES):
         return False
     if name.startswith("memfd") or "dprintf" in name:  # a file in memory; printing to any descriptor
         return True
     return name not in C_LIBRARY_ALLOWED and not C_LIBRARY_ALLOWED_FAMILIES.match(name)
+
+
+def test_framework(name, readable):
+    """True for a symbol of GoogleTest, or of anything made of its types."""
+    return "gtest" in name.lower() or "testing::" in readable
 
 
 def early_start_up(obj):
@@ -111,7 +131,8 @@ def early_start_up(obj):
     for line in done.stdout.splitlines():
         parts = line.split()
         if len(parts) > 1 and parts[0].isdigit() and EARLY_SECTIONS.match(parts[1]):
-            return f"asks to run code before the test program starts ({parts[1]}: a constructor priority?)"
+            return (f"asks to run code before or after the test program's own start-up ({parts[1]}: "
+                    "a constructor priority, or assembly placed in start-up code)")
     return ""
 
 
@@ -153,16 +174,22 @@ def refusal(objects, harness):
         early = early_start_up(obj)
         if early or any(kind == "i" for _, kind in listed):
             return f"`{source}` {early or 'has an ifunc resolver, which runs before the test program starts'}"
+        readable = dict(zip([n for n, _ in listed], demangle([n for n, _ in listed])))
+        shown = {n: r.split("(")[0][:120] for n, r in readable.items()}  # for one line
         for name, kind in defined:
             if name == "main":
                 return f"`{source}` defines main(): the test program has its own"
-            if name.startswith("_ZN7testing") or "gtest" in name.lower() or name.startswith("_ZNK7testing"):
-                return f"`{source}` defines {demangle([name])[0]}, part of the test framework"
+            # Weak definitions too: the linker may keep either copy (a weak
+            # std::vector<testing::TestPartResult> member once threw away every failure).
+            if test_framework(name, readable.get(name, name)):
+                return f"`{source}` defines {shown.get(name, name)}, part of the test framework"
             if kind in STRONG_TYPES and name in harness:
-                return f"`{source}` defines {demangle([name])[0]}, which the tests or libraries already define"
+                return f"`{source}` defines {shown.get(name, name)}, which the tests or libraries already define"
+            if name in defined_by(C_RUNTIME):  # a definition in the program wins over the library's
+                return f"`{source}` defines {name}, a function of the C library"
         for name in undefined:
-            if name.startswith(("_ZN7testing", "_ZNK7testing", "_ZTIN7testing", "_ZTVN7testing")) or "gtest" in name.lower():
-                return f"`{source}` uses the test framework ({demangle([name])[0].split('(')[0]})"
+            if test_framework(name, readable.get(name, name)):
+                return f"`{source}` uses the test framework ({shown.get(name, name)})"
             if name in FORBIDDEN_CALLS:
                 return f"`{source}` calls {name}(): lab code may not end the program, start processes or touch files"
             if c_library_refuses(name):

@@ -45,8 +45,13 @@ def unpack(source, into):
                     raise Refused(f"refused: the zip writes outside its folder ({printable_name(member.filename)})")
                 archive.extract(member, files)
     elif source.suffix == ".bundle" or (source.is_dir() and (source / "HEAD").is_file() and not (source / "labs").exists()):
-        subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", str(source), str(files)],
+        subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", "--no-checkout", str(source), str(files)],
                        stderr=subprocess.DEVNULL, check=True)
+        # The sizes the checkout would write, before it writes them.
+        tree = subprocess.run(["git", "-C", str(files), "ls-tree", "-r", "-l", "HEAD"], capture_output=True,
+                              text=True, errors="replace", check=True).stdout.splitlines()
+        too_big(len(tree), sum(int(line.split()[3]) for line in tree if line.split()[3].isdigit()))
+        subprocess.run(["git", "-C", str(files), "checkout", "--quiet"], stderr=subprocess.DEVNULL, check=True)
     elif source.is_dir():
         files = source
     else:

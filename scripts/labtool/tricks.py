@@ -118,6 +118,18 @@ TRICKS = [
     ("early-constructor", ALL, {"Ball.cpp": append(
         "namespace { __attribute__((constructor(101))) void early() {} }")},
      (), "a constructor of priority 101, which would run before the test program takes its report's path"),
+    ("weak-results-vector", (), {"Ball.cpp": append(
+        "__attribute__((weak)) void dropFailure(void*, void*, const void*) asm(\"_ZNSt6vectorIN7testing14TestPartResultESaIS1_EE\"\n"
+        "    \"17_M_realloc_insertIJRKS1_EEEvN9__gnu_cxx17__normal_iteratorIPS1_S3_EEDpOT_\");\n"
+        "void dropFailure(void*, void*, const void*) {}")},
+     (), "a weak copy of GoogleTest's vector of results that drops every failure (the linker could keep either copy)"),
+    ("weak-fopen", (), {"Ball.cpp": append(
+        "#include <cstdio>\nextern \"C\" __attribute__((weak)) std::FILE* fopen(const char*, const char*) { return nullptr; }")},
+     (), "its own weak fopen, which GoogleTest would call with the report's path"),
+    ("start-up-hook", (), {"Ball.cpp": append(
+        "extern \"C\" void hitboxHook() {}\n"
+        "asm(\".pushsection .init,\\\"ax\\\",@progbits\\n call hitboxHook\\n .popsection\");")},
+     (), "assembly in the program's .init code, which runs before every constructor"),
     ("other-lab-solution", (), {"Ball.cpp": lambda t: '#include "MyCollision.cpp"\n' + t},
      (), "includes lab 0's solution (MyCollision.cpp) through lab 0's include folder"),
     ("disabled-own-tests", (1,), None, (1,), "its own copy of the tests, every test DISABLED_ (ignored)"),

@@ -131,7 +131,21 @@ class ObjectCheck(unittest.TestCase):
 
     def test_code_that_asks_to_run_before_the_program_starts_is_refused(self):
         refused, _ = self.check("namespace { __attribute__((constructor(101))) void early() {} }\n")
-        self.assertIn("before the test program starts", refused)
+        self.assertIn("before or after the test program's own start-up", refused)
+        refused, _ = self.check('extern "C" void hook() {}\n'
+                                'asm(".pushsection .init,\\"ax\\",@progbits\\n call hook\\n .popsection");\n')
+        self.assertIn("(.init:", refused)
+
+    def test_a_weak_copy_of_a_c_library_function_or_of_the_test_framework_is_refused(self):
+        refused, _ = self.check('#include <cstdio>\n'
+                                'extern "C" __attribute__((weak)) std::FILE* fopen(const char*, const char*) { return nullptr; }\n')
+        self.assertIn("defines fopen, a function of the C library", refused)
+        refused, _ = self.check("namespace testing { struct TestPartResult; }\n"
+                                "__attribute__((weak)) void drop(testing::TestPartResult*) {}\n")
+        self.assertIn("part of the test framework", refused)
+
+    def test_the_plain_constructors_of_static_objects_are_accepted(self):
+        self.assertEqual(self.check("#include <string>\nstd::string greeting = std::string(40, 'x');\n")[0], "")
 
     def test_listing_a_folder_is_refused(self):
         refused, _ = self.check("#include <filesystem>\nint count() { int n = 0;\n"

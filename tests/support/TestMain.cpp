@@ -31,6 +31,8 @@ struct TakeReportPath
     TakeReportPath()
     {
         reportPathFromGrader() = hitbox::platform::takeInheritedPipe(kReportPipeVariable);
+        // Nothing this program starts should look for the pipe: it is closed.
+        (void)hitbox::platform::unsetEnvironmentVariable(kReportPipeVariable);
     }
 };
 
