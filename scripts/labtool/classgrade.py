@@ -82,8 +82,8 @@ def prepare(build_dir, labs, jobs):
                        or f"CMakeFiles/{lab.name}_tests.dir/" in c["command"]]
         lab.link = cmakeapi.link_command(build_dir, f"{lab.name}_tests")
         lab.level_archive = f"lib{lab.name}_level.a"
-        archives = [lab.link.path(a) for a in lab.link.libraries
-                    if a.endswith(".a") and not a.endswith(lab.level_archive)]
+        archives = [lab.link.path(a) for a in lab.link.libraries  # and shared ones: SFML's
+                    if (a.endswith(".a") or ".so" in Path(a).name) and not a.endswith(lab.level_archive)]
         lab.harness = inspect.harness_symbols(tuple(str(a) for a in archives if a.is_file()))
     return build_dir, launcher
 

@@ -26,6 +26,7 @@ import re
 import subprocess
 import sys
 from functools import lru_cache
+from pathlib import Path
 
 # Called from a lab's code, these could end the test early or reach the report.
 FORBIDDEN_CALLS = {
@@ -39,10 +40,11 @@ FORBIDDEN_CALLS = {
 }
 # Mangled-name pieces of the C++ library's file writers (reading a level file is allowed: lab 9).
 FORBIDDEN_CLASSES = ("basic_ofstream", "basic_fstream")
-# std::filesystem operations that change files or list folders (status, exists, file_size and
-# path are fine: lab 9 uses them).
+# std::filesystem operations that change files or folders or list folders (status, exists,
+# file_size, path and the current_path() getter are fine: lab 9 uses some).
 FORBIDDEN_FILESYSTEM = re.compile(r"^std::filesystem::(__cxx11::)?(remove|remove_all|rename|copy|copy_file|"
-                                  r"copy_symlink|create_\w+|resize_file|permissions|current_path|"
+                                  r"copy_symlink|create_\w+|resize_file|permissions|"
+                                  r"current_path(\[abi:cxx11\])?\(std::filesystem|"
                                   r"last_write_time|directory_iterator|recursive_directory_iterator)\b")
 # The C library functions lab code may call (the C library is where the operating system's
 # calls live): exact names, then families by pattern. Everything libm defines is allowed too.
@@ -60,6 +62,7 @@ C_LIBRARY_ALLOWED = {
     "copysign", "copysignf", "finite", "finitef", "isinf", "isinff", "isnan", "isnanf", "__isnan", "__isnanf",
     "__isinf", "__isinff", "__finite", "__finitef", "ctime", "ctime_r", "asctime", "asctime_r",
     "fclose", "fgetc", "getc", "fread", "feof", "ferror", "clearerr", "fseek", "ftell", "rewind", "ungetc",
+    "setvbuf", "setbuf", "setlocale", "getpid",
 }
 C_LIBRARY_ALLOWED_FAMILIES = re.compile(
     r"^(_*(mem|str|wcs|wmem|mb|wc)[a-z0-9_]*|__\w*(printf|mem\w*|str\w*|stp\w*|wcs\w*|wmem\w*)_chk|is(alnum|alpha|blank|cntrl|digit|graph|lower|print|punct|"
@@ -120,6 +123,34 @@ def c_library_refuses(name):
     return name not in C_LIBRARY_ALLOWED and not C_LIBRARY_ALLOWED_FAMILIES.match(name)
 
 
+def weak_outside_groups(obj):
+    """Names obj defines weakly outside a COMDAT group: what `__attribute__((weak))` or
+    `#pragma weak` make. The compiler's own weak copies (inline functions, templates) each sit
+    in a group; a hand-made weak definition exists only to be chosen over someone else's."""
+    groups = subprocess.run(["readelf", "-gW", str(obj)], capture_output=True, text=True, errors="replace").stdout
+    grouped = set(re.findall(r"^\s*\[\s*(\d+)\]\s+\S", groups, flags=re.M))
+    table = subprocess.run(["readelf", "-sW", str(obj)], capture_output=True, text=True, errors="replace").stdout
+    found = []
+    for line in table.splitlines():
+        parts = line.split()
+        if len(parts) >= 8 and parts[4] == "WEAK" and parts[6].isdigit() and parts[6] not in grouped:
+            found.append(parts[7])
+    return found
+
+
+@lru_cache(maxsize=None)
+def start_up_names():
+    """Every name the C run-time's start-up files define or call (crt1.o, crti.o, crtbegin.o,
+    ...): a student's definition of one (__gmon_start__) would run before the program's own
+    start-up."""
+    found = set()
+    for name in ("crt1.o", "Scrt1.o", "crti.o", "crtn.o", "crtbegin.o", "crtbeginS.o", "crtend.o", "crtendS.o"):
+        path = library_path(name)
+        if path:
+            found |= {s for s, kind in symbols(path) if kind.isupper() or kind in "wv"}  # not local ones
+    return frozenset(found)
+
+
 def test_framework(name, readable):
     """True for a symbol of GoogleTest, or of anything made of its types."""
     return "gtest" in name.lower() or "testing::" in readable
@@ -149,10 +180,11 @@ def system_symbols():
 
 
 def harness_symbols(paths):
-    """The strong and weak definitions of the harness's objects and archives."""
+    """The strong and weak definitions of the harness's objects, archives and shared libraries."""
     found = set()
     for path in paths:
-        found |= {s for s, kind in symbols(path) if kind not in "Uw v"}
+        shared = ".so" in Path(path).name
+        found |= {s for s, kind in symbols(path, dynamic=shared) if kind not in "Uw v"}
     return frozenset(found) | system_symbols()
 
 
@@ -174,6 +206,10 @@ def refusal(objects, harness):
         early = early_start_up(obj)
         if early or any(kind == "i" for _, kind in listed):
             return f"`{source}` {early or 'has an ifunc resolver, which runs before the test program starts'}"
+        weak = weak_outside_groups(obj)
+        if weak:
+            return (f"`{source}` makes {demangle(weak[:1])[0].split('(')[0][:120]} weak "
+                    "(__attribute__((weak))): a weak definition exists to replace another one")
         readable = dict(zip([n for n, _ in listed], demangle([n for n, _ in listed])))
         shown = {n: r.split("(")[0][:120] for n, r in readable.items()}  # for one line
         for name, kind in defined:
@@ -187,6 +223,8 @@ def refusal(objects, harness):
                 return f"`{source}` defines {shown.get(name, name)}, which the tests or libraries already define"
             if name in defined_by(C_RUNTIME):  # a definition in the program wins over the library's
                 return f"`{source}` defines {name}, a function of the C library"
+            if kind.isupper() and name in start_up_names():
+                return f"`{source}` defines {name}, which the program's start-up code calls"
         for name in undefined:
             if test_framework(name, readable.get(name, name)):
                 return f"`{source}` uses the test framework ({shown.get(name, name)})"

@@ -130,6 +130,22 @@ TRICKS = [
         "extern \"C\" void hitboxHook() {}\n"
         "asm(\".pushsection .init,\\\"ax\\\",@progbits\\n call hitboxHook\\n .popsection\");")},
      (), "assembly in the program's .init code, which runs before every constructor"),
+    ("fake-framework-exception", (), {"Ball.cpp": lambda t: before_update("    hitboxDone();")(t).replace(
+        '#include "Ball.h"', '#include "Ball.h"\n#include <cxxabi.h>\n#include <typeinfo>\n'
+        "[[noreturn]] void hitboxDone() {\n"
+        '    static char name[] = "N7testing18AssertionExceptionE";\n'
+        "    static __cxxabiv1::__class_type_info type(name);\n"
+        "    abi::__cxa_throw(abi::__cxa_allocate_exception(8), reinterpret_cast<std::type_info*>(&type), nullptr);\n"
+        "}", 1)},
+     (), "throws an exception named like GoogleTest's own, which GoogleTest used to drop quietly"),
+    ("gmon-start-hook", ALL, {"Ball.cpp": append('extern "C" void __gmon_start__() {}')},
+     (), "defines __gmon_start__, which the program's start-up code calls before every constructor"),
+    ("weak-operator-new", ALL, {"Ball.cpp": append(
+        "#include <cstdlib>\n#include <new>\n__attribute__((weak)) void* operator new(std::size_t size) { return std::malloc(size); }")},
+     (), "a weak operator new, which would see every allocation of the program"),
+    ("redefine-sfml", ALL, {"Ball.cpp": append(
+        "const sf::Vector2f& sf::Transformable::getPosition() const { static sf::Vector2f middle{600.f, 337.5f}; return middle; }")},
+     (), "its own copy of SFML's Transformable::getPosition (a shared library's function)"),
     ("other-lab-solution", (), {"Ball.cpp": lambda t: '#include "MyCollision.cpp"\n' + t},
      (), "includes lab 0's solution (MyCollision.cpp) through lab 0's include folder"),
     ("disabled-own-tests", (1,), None, (1,), "its own copy of the tests, every test DISABLED_ (ignored)"),
