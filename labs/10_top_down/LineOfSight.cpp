@@ -5,31 +5,6 @@
 #include <cstddef>
 #include <limits>
 
-hitbox::TileGrid emptySightGrid(hitbox::Vec2 worldSize)
-{
-    hitbox::TileGrid grid;
-    grid.cellSize = sightCellSize;
-    grid.columns = static_cast<int>(std::ceil(worldSize.x / sightCellSize));
-    grid.rows = static_cast<int>(std::ceil(worldSize.y / sightCellSize));
-    grid.solid.assign(static_cast<std::size_t>(grid.columns) * static_cast<std::size_t>(grid.rows),
-                      0);
-    return grid;
-}
-
-void markWall(hitbox::TileGrid& grid, const hitbox::Box& wall)
-{
-    for (int row = 0; row < grid.rows; ++row)
-        for (int column = 0; column < grid.columns; ++column)
-        {
-            const hitbox::Vec2 centre{(column + 0.5f) * grid.cellSize,
-                                      (row + 0.5f) * grid.cellSize};
-            if (centre.x > wall.left && centre.x < wall.left + wall.width && centre.y > wall.top &&
-                centre.y < wall.top + wall.height)
-                grid.solid[static_cast<std::size_t>(row) * static_cast<std::size_t>(grid.columns) +
-                           static_cast<std::size_t>(column)] = 1;
-        }
-}
-
 bool canSee(const hitbox::TileGrid& grid, hitbox::Vec2 from, hitbox::Vec2 to)
 {
     // BEGIN TASK 4: walk the line tile by tile, across whichever grid line comes first

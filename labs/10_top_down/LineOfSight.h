@@ -14,7 +14,7 @@
 // The tiles the walls are marked on, in pixels: the walls' sides are multiples of it.
 constexpr float sightCellSize = 10.f;
 
-// Given: an empty grid of sightCellSize tiles covering `worldSize` pixels.
+// Given (Given.cpp): an empty grid of sightCellSize tiles covering `worldSize` pixels.
 [[nodiscard]] hitbox::TileGrid emptySightGrid(hitbox::Vec2 worldSize);
 // Given: marks solid every tile whose centre is inside `wall` (tiles outside the grid are
 // left out).

@@ -1,6 +1,8 @@
+// BroadPhase.cpp - your three searches. The exact tests and brute force are given, in
+// Given.cpp: read bruteForcePairs first. Run every exact test through `exact.overlap`.
 #include "BroadPhase.h"
 
-#include "hitbox/geometry/Overlap.h"
+#include "hitbox/geometry/Shapes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,47 +10,10 @@
 #include <numeric>
 #include <utility>
 
-bool operator==(const Pair& a, const Pair& b)
-{
-    return a.first == b.first && a.second == b.second;
-}
-
-bool operator<(const Pair& a, const Pair& b)
-{
-    return a.first != b.first ? a.first < b.first : a.second < b.second;
-}
-
-bool overlaps(const Box& a, const Box& b)
-{
-    return hitbox::boxVsBox(a, b);
-}
-
-bool overlaps(const Ball& a, const Ball& b)
-{
-    const float dx = a.x - b.x;
-    const float dy = a.y - b.y;
-    const float reach = a.radius + b.radius;
-    return dx * dx + dy * dy < reach * reach;
-}
-
-PairSearch bruteForcePairs(const std::vector<Box>& boxes)
-{
-    PairSearch search;
-    const int count = static_cast<int>(boxes.size());
-    for (int first = 0; first < count; ++first)
-        for (int second = first + 1; second < count; ++second)
-        {
-            ++search.exactTests;
-            if (overlaps(boxes[first], boxes[second]))
-                search.pairs.push_back({first, second});
-        }
-    return search;
-}
-
 // [slide:lab12-sort-and-sweep]
-PairSearch sortAndSweepPairs(const std::vector<Box>& boxes)
+std::vector<Pair> sortAndSweepPairs(const std::vector<Box>& boxes, ExactBoxTests& exact)
 {
-    PairSearch search;
+    std::vector<Pair> pairs;
     // BEGIN TASK 1: sort and sweep
     // Visit the boxes by their left side. A box whose right side is at or before the new
     // box's left can never overlap it or any later box (they start further right): drop it
@@ -67,29 +32,27 @@ PairSearch sortAndSweepPairs(const std::vector<Box>& boxes)
                                   { return hitbox::rightOf(boxes[other]) <= box.left; }),
                    open.end());
         for (const int other : open)
-        {
-            ++search.exactTests;
-            if (overlaps(box, boxes[other]))
-                search.pairs.push_back({std::min(index, other), std::max(index, other)});
-        }
+            if (exact.overlap(other, index))
+                pairs.push_back({std::min(index, other), std::max(index, other)});
         open.push_back(index);
     }
     // STARTER TASK 1
     // (void)boxes;
+    // (void)exact;
     // END TASK 1
-    return search;
+    return pairs;
 }
 // [/slide]
 
 // [slide:lab12-uniform-grid]
-PairSearch gridPairs(const std::vector<Box>& boxes, float cellSize)
+std::vector<Pair> gridPairs(const std::vector<Box>& boxes, float cellSize, ExactBoxTests& exact)
 {
-    PairSearch search;
+    std::vector<Pair> pairs;
     // BEGIN TASK 2: a uniform grid
     // 1. Fill: each box goes in every cell its box covers (floor, so negative coordinates
     //    land in negative cells). 2. List: within each cell, every pair of its boxes is a
-    //    candidate; two boxes that share several cells meet in each, so remember the pairs
-    //    already tested and test each only once.
+    //    candidate; two boxes that share several cells meet in each, so collect the
+    //    candidates, sort them and drop the repeats, then test each once.
     std::map<std::pair<int, int>, std::vector<int>> cells;
     for (int index = 0; index < static_cast<int>(boxes.size()); ++index)
     {
@@ -102,34 +65,33 @@ PairSearch gridPairs(const std::vector<Box>& boxes, float cellSize)
             for (int row = firstRow; row <= lastRow; ++row)
                 cells[{column, row}].push_back(index);
     }
-    std::vector<Pair> tested;
+    std::vector<Pair> candidates;
     for (const auto& cell : cells)
     {
         const std::vector<int>& inCell = cell.second;
         for (std::size_t a = 0; a < inCell.size(); ++a)
             for (std::size_t b = a + 1; b < inCell.size(); ++b)
-                tested.push_back({std::min(inCell[a], inCell[b]), std::max(inCell[a], inCell[b])});
+                candidates.push_back(
+                    {std::min(inCell[a], inCell[b]), std::max(inCell[a], inCell[b])});
     }
-    std::sort(tested.begin(), tested.end());
-    tested.erase(std::unique(tested.begin(), tested.end()), tested.end());
-    for (const Pair& pair : tested)
-    {
-        ++search.exactTests;
-        if (overlaps(boxes[pair.first], boxes[pair.second]))
-            search.pairs.push_back(pair);
-    }
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (const Pair& pair : candidates)
+        if (exact.overlap(pair.first, pair.second))
+            pairs.push_back(pair);
     // STARTER TASK 2
     // (void)boxes;
     // (void)cellSize;
+    // (void)exact;
     // END TASK 2
-    return search;
+    return pairs;
 }
 // [/slide]
 
 // [slide:lab12-bound-first]
-PairSearch ballPairsBoundFirst(const std::vector<Ball>& balls)
+std::vector<Pair> ballPairsBoundFirst(const std::vector<Ball>& balls, ExactBallTests& exact)
 {
-    PairSearch search;
+    std::vector<Pair> pairs;
     // BEGIN TASK 3: cheap bound first, exact test second
     // Four comparisons of the balls' bounding boxes rule out most pairs; only the pairs
     // whose boxes overlap pay for the multiplications of the circle test. Boxes that only
@@ -142,15 +104,13 @@ PairSearch ballPairsBoundFirst(const std::vector<Ball>& balls)
             const Ball& b = balls[second];
             const Box boundA{a.x - a.radius, a.y - a.radius, 2.f * a.radius, 2.f * a.radius};
             const Box boundB{b.x - b.radius, b.y - b.radius, 2.f * b.radius, 2.f * b.radius};
-            if (!overlaps(boundA, boundB))
-                continue;
-            ++search.exactTests;
-            if (overlaps(a, b))
-                search.pairs.push_back({first, second});
+            if (overlaps(boundA, boundB) && exact.overlap(first, second))
+                pairs.push_back({first, second});
         }
     // STARTER TASK 3
     // (void)balls;
+    // (void)exact;
     // END TASK 3
-    return search;
+    return pairs;
 }
 // [/slide]

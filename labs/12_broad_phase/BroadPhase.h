@@ -1,7 +1,8 @@
 // BroadPhase.h - finding the pairs that touch among many shapes without testing them all.
 //
-// Plain values only (no SFML): boxes and balls in world pixels. Every search returns the
-// pairs it found and how many exact tests it ran, so you can see what each idea saves.
+// Plain values only (no SFML): boxes and balls in world pixels. Every search runs its exact
+// tests through the given ExactBoxTests or ExactBallTests, which count and remember them, so
+// you can see (and the tests can check) what each idea saves.
 // The edge rule is the framework's: touching is not overlapping.
 #pragma once
 
@@ -30,25 +31,50 @@ struct Pair
 bool operator==(const Pair& a, const Pair& b);
 bool operator<(const Pair& a, const Pair& b);
 
-struct PairSearch
+// Given (Given.cpp, with everything else marked "Given"): the exact test of two of the boxes
+// searched, by index. It keeps a reference to the boxes: use it while they live.
+class ExactBoxTests
 {
-    std::vector<Pair> pairs;  // each overlapping pair once, in any order
-    long long exactTests = 0; // how many times the exact test ran
+public:
+    explicit ExactBoxTests(const std::vector<Box>& boxes);
+    // Do boxes[first] and boxes[second] overlap? Strict: touching is not overlapping (Hitbox's
+    // hitbox::boxVsBox). Counts one exact test and remembers the pair. An index outside the
+    // list throws std::out_of_range.
+    bool overlap(int first, int second);
+    // Every pair tested so far, in the order tested, as passed; its size is the count.
+    [[nodiscard]] const std::vector<Pair>& tested() const;
+
+private:
+    const std::vector<Box>* boxes; // not owned
+    std::vector<Pair> testedPairs;
 };
 
-// Given: the exact tests. Strict: touching does not overlap. For two boxes it is Hitbox's
-// own hitbox::boxVsBox (hitbox/geometry/Overlap.h).
-bool overlaps(const Box& a, const Box& b);
-bool overlaps(const Ball& a, const Ball& b);
+// Given: the same for balls: their exact circle test (strict), counted.
+class ExactBallTests
+{
+public:
+    explicit ExactBallTests(const std::vector<Ball>& balls);
+    // Do balls[first] and balls[second] overlap? Strict: touching circles do not.
+    bool overlap(int first, int second);
+    [[nodiscard]] const std::vector<Pair>& tested() const;
+
+private:
+    const std::vector<Ball>* balls; // not owned
+    std::vector<Pair> testedPairs;
+};
+
+// Given: Hitbox's box test for a cheap bound (task 3); not an exact test, so not counted.
+[[nodiscard]] bool overlaps(const Box& a, const Box& b);
 // Given: every pair once, n(n-1)/2 exact tests. The answer the others must match.
-PairSearch bruteForcePairs(const std::vector<Box>& boxes);
+std::vector<Pair> bruteForcePairs(const std::vector<Box>& boxes, ExactBoxTests& exact);
 
 // Task 1: sort the boxes by their left side, sweep from left to right keeping the boxes
-// whose x range is still open, and test each new box against those only.
-PairSearch sortAndSweepPairs(const std::vector<Box>& boxes);
+// whose x range is still open, and test each new box against those only. Returns each
+// overlapping pair once, in any order; every pair returned must have come from `exact`.
+std::vector<Pair> sortAndSweepPairs(const std::vector<Box>& boxes, ExactBoxTests& exact);
 // Task 2: a uniform grid of square cells `cellSize` wide: put each box in every cell it
-// covers, then test only boxes that share a cell; report each pair once.
-PairSearch gridPairs(const std::vector<Box>& boxes, float cellSize);
-// Task 3: the balls that overlap, testing each pair's bounding boxes first (cheap) and
-// running the exact circle test only when those overlap.
-PairSearch ballPairsBoundFirst(const std::vector<Ball>& balls);
+// covers, then test only boxes that share a cell, each such pair once.
+std::vector<Pair> gridPairs(const std::vector<Box>& boxes, float cellSize, ExactBoxTests& exact);
+// Task 3: the balls that overlap, testing each pair's bounding boxes first (cheap,
+// `overlaps`) and running the exact circle test only when those overlap.
+std::vector<Pair> ballPairsBoundFirst(const std::vector<Ball>& balls, ExactBallTests& exact);

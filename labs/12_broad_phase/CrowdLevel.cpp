@@ -60,20 +60,22 @@ void CrowdLevel::update(float dt)
             (hitbox::bottomOf(box) > world.y && speedY[index] > 0.f))
             speedY[index] = -speedY[index];
     }
+    ExactBoxTests exact(boxes);
     switch (method)
     {
     case Method::BruteForce:
-        lastSearch = bruteForcePairs(boxes);
+        lastPairs = bruteForcePairs(boxes, exact);
         break;
     case Method::SortAndSweep:
-        lastSearch = sortAndSweepPairs(boxes);
+        lastPairs = sortAndSweepPairs(boxes, exact);
         break;
     case Method::Grid:
-        lastSearch = gridPairs(boxes, cellSize);
+        lastPairs = gridPairs(boxes, cellSize, exact);
         break;
     }
+    lastExactTests = static_cast<long long>(exact.tested().size());
     overlapping.assign(boxes.size(), false);
-    for (const Pair& pair : lastSearch.pairs)
+    for (const Pair& pair : lastPairs)
         overlapping[pair.first] = overlapping[pair.second] = true;
 }
 
@@ -127,14 +129,19 @@ std::string CrowdLevel::describeState() const
     const long long count = static_cast<long long>(boxes.size());
     char text[160];
     std::snprintf(text, sizeof text, "%s: %lld exact tests of %lld pairs, %zu overlapping",
-                  methodNames[static_cast<int>(method)], lastSearch.exactTests,
-                  count * (count - 1) / 2, lastSearch.pairs.size());
+                  methodNames[static_cast<int>(method)], lastExactTests, count * (count - 1) / 2,
+                  lastPairs.size());
     return text;
 }
 
-const PairSearch& CrowdLevel::getLastSearch() const
+const std::vector<Pair>& CrowdLevel::getLastPairs() const
 {
-    return lastSearch;
+    return lastPairs;
+}
+
+long long CrowdLevel::getLastExactTests() const
+{
+    return lastExactTests;
 }
 
 using CrowdSnapshot = hitbox::WholeLevelCopy<CrowdLevel>; // Level.h: a copy of the whole level
@@ -143,7 +150,7 @@ std::unique_ptr<hitbox::LevelState> CrowdLevel::saveState() const
 {
     const std::size_t held = sizeof(CrowdSnapshot) + boxes.size() * sizeof(Box) +
                              (speedX.size() + speedY.size()) * sizeof(float) +
-                             lastSearch.pairs.size() * sizeof(Pair) + overlapping.size() / 8;
+                             lastPairs.size() * sizeof(Pair) + overlapping.size() / 8;
     return std::make_unique<CrowdSnapshot>(*this, held);
 }
 

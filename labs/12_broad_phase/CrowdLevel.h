@@ -43,14 +43,17 @@ public:
     std::unique_ptr<hitbox::LevelState> saveState() const override;
     void restoreState(const hitbox::LevelState& state) override;
 
-    const PairSearch& getLastSearch() const;
+    // The last step's search: the pairs it found and how many exact tests it ran.
+    [[nodiscard]] const std::vector<Pair>& getLastPairs() const;
+    [[nodiscard]] long long getLastExactTests() const;
 
 private:
     std::vector<Box> boxes;
     std::vector<float> speedX;
     std::vector<float> speedY;
     Method method = Method::SortAndSweep;
-    PairSearch lastSearch;
-    std::vector<bool> overlapping; // box i is in one of lastSearch's pairs (drawn red)
+    std::vector<Pair> lastPairs;
+    long long lastExactTests = 0;
+    std::vector<bool> overlapping; // box i is in one of lastPairs (drawn red)
     float sweepLineX = 0.f;
 };

@@ -32,7 +32,7 @@ struct Contact
     float depth = 0.f;      // pixels of vertical overlap, always > 0
 };
 
-// Given: gravity for one step: each crate speeds up and moves down.
+// Given (Given.cpp): gravity for one step: each crate speeds up and moves down.
 void fall(std::vector<Crate>& crates, float dt);
 // Given: every crate reaching strictly into another (their x ranges and y ranges overlap)
 // or below the floor line `floorY`. Crates that only touch make no contact.

@@ -1,12 +1,19 @@
 // Grading tests of lab 12 (the broad phase by hand). Each suite is named after the task it
 // checks; README.md lists them. Every search must find exactly the pairs brute force finds
-// (each once, touching boxes never), on seeded scenes where many boxes touch, and must run
-// fewer exact tests than brute force where the shapes are spread out.
+// (each once, touching boxes never), on seeded scenes where many boxes touch. Its exact
+// tests are counted by the given ExactBoxTests (Given.cpp, always the course's copy), never
+// by the search itself, and must be the ones its idea runs: sort and sweep tests the pairs
+// open together on x, the grid the pairs sharing a cell, bound first the pairs whose
+// bounding boxes overlap; each once, and every pair returned among them.
 #include "BroadPhase.h"
+
+#include "hitbox/geometry/Overlap.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -43,6 +50,24 @@ std::vector<Box> chain(int count)
     return boxes;
 }
 
+// Every pair (first < second) for which `keep` holds: the tests' own brute force, written
+// here so that nothing the search's file defines decides what is expected.
+std::vector<Pair> pairsWhere(int count, const std::function<bool(int, int)>& keep)
+{
+    std::vector<Pair> pairs;
+    for (int first = 0; first < count; ++first)
+        for (int second = first + 1; second < count; ++second)
+            if (keep(first, second))
+                pairs.push_back({first, second});
+    return pairs;
+}
+
+std::vector<Pair> overlappingBoxes(const std::vector<Box>& boxes)
+{
+    return pairsWhere(static_cast<int>(boxes.size()),
+                      [&](int a, int b) { return hitbox::boxVsBox(boxes[a], boxes[b]); });
+}
+
 std::vector<Pair> sorted(std::vector<Pair> pairs)
 {
     for (Pair& pair : pairs)
@@ -75,6 +100,95 @@ testing::AssertionResult samePairs(const std::vector<Pair>& found,
            << " (touching boxes are not a pair, and each pair counts once): " << text(expected);
 }
 
+// What the exact tests of one search were: each pair once, every pair returned among them,
+// none outside `allowed` (the idea's candidates; first < second) and none of `required` left
+// out. A search that decides a pair another way, or tests more than its idea needs, fails.
+testing::AssertionResult testedAsItsIdeaSays(const std::vector<Pair>& tested,
+                                             const std::vector<Pair>& found,
+                                             const std::vector<Pair>& allowed,
+                                             const std::vector<Pair>& required, const char* idea)
+{
+    const std::vector<Pair> ran = sorted(tested);
+    const auto repeat = std::adjacent_find(ran.begin(), ran.end());
+    if (repeat != ran.end())
+        return testing::AssertionFailure() << "the pair (" << repeat->first << ", "
+                                           << repeat->second << ") was tested more than once";
+    for (const Pair& pair : sorted(found))
+        if (!std::binary_search(ran.begin(), ran.end(), pair))
+            return testing::AssertionFailure()
+                   << "the pair (" << pair.first << ", " << pair.second
+                   << ") was returned without an exact test: every pair returned must come "
+                      "from exact.overlap";
+    for (const Pair& pair : ran)
+        if (!std::binary_search(allowed.begin(), allowed.end(), pair))
+            return testing::AssertionFailure()
+                   << "the pair (" << pair.first << ", " << pair.second << ") was tested, but "
+                   << idea << " never gets to it";
+    for (const Pair& pair : required)
+        if (!std::binary_search(ran.begin(), ran.end(), pair))
+            return testing::AssertionFailure()
+                   << "the pair (" << pair.first << ", " << pair.second << ") was not tested, but "
+                   << idea << " must test it (" << ran.size() << " tests ran)";
+    return testing::AssertionSuccess();
+}
+
+// Sort and sweep tests exactly the pairs open together on x: their x ranges overlap. Where
+// they only touch, the open list may or may not still hold the older box; both are right.
+testing::AssertionResult sweptAlongX(const std::vector<Box>& boxes, const ExactBoxTests& exact,
+                                     const std::vector<Pair>& found)
+{
+    const int count = static_cast<int>(boxes.size());
+    const auto along = [&](int a, int b) {
+        return boxes[a].left < hitbox::rightOf(boxes[b]) &&
+               boxes[b].left < hitbox::rightOf(boxes[a]);
+    };
+    const auto alongOrTouching = [&](int a, int b)
+    {
+        return boxes[a].left <= hitbox::rightOf(boxes[b]) &&
+               boxes[b].left <= hitbox::rightOf(boxes[a]);
+    };
+    return testedAsItsIdeaSays(exact.tested(), found, pairsWhere(count, alongOrTouching),
+                               pairsWhere(count, along), "sort and sweep along x");
+}
+
+// The cells a box covers along one axis, from `low` to `high` in cells `size` wide. The sheet
+// counts a side exactly on a cell border into the next cell (wide); a grid that counts only
+// the cells the box reaches inside (narrow: none for a box of no width) is right too. A grid
+// tests every pair sharing a cell the narrow way, and no pair sharing none the wide way.
+bool shareCells(float lowA, float highA, float lowB, float highB, float size, bool narrow)
+{
+    const auto first = [&](float low) { return std::floor(low / size); };
+    const auto last = [&](float low, float high)
+    {
+        if (!narrow)
+            return std::floor(high / size);
+        return high > low ? std::ceil(high / size) - 1.f : first(low) - 1.f;
+    };
+    return first(lowA) <= last(lowB, highB) && first(lowB) <= last(lowA, highA) &&
+           first(lowA) <= last(lowA, highA) && first(lowB) <= last(lowB, highB);
+}
+
+testing::AssertionResult testedCellByCell(const std::vector<Box>& boxes, float size,
+                                          const ExactBoxTests& exact,
+                                          const std::vector<Pair>& found)
+{
+    const auto sharing = [&](bool narrow)
+    {
+        return pairsWhere(static_cast<int>(boxes.size()),
+                          [&](int a, int b)
+                          {
+                              const Box& p = boxes[a];
+                              const Box& q = boxes[b];
+                              return shareCells(p.left, hitbox::rightOf(p), q.left,
+                                                hitbox::rightOf(q), size, narrow) &&
+                                     shareCells(p.top, hitbox::bottomOf(p), q.top,
+                                                hitbox::bottomOf(q), size, narrow);
+                          });
+    };
+    return testedAsItsIdeaSays(exact.tested(), found, sharing(false), sharing(true),
+                               "a grid of these cells");
+}
+
 } // namespace
 
 TEST(Task1SortAndSweep, FindsTheSamePairsAsBruteForce)
@@ -82,8 +196,10 @@ TEST(Task1SortAndSweep, FindsTheSamePairsAsBruteForce)
     for (unsigned seed = 1; seed <= 20; ++seed)
     {
         const std::vector<Box> boxes = crowdedBoxes(seed, 60, 20);
-        EXPECT_TRUE(samePairs(sortAndSweepPairs(boxes).pairs, bruteForcePairs(boxes).pairs))
-            << "scene with seed " << seed;
+        ExactBoxTests exact(boxes);
+        const std::vector<Pair> found = sortAndSweepPairs(boxes, exact);
+        EXPECT_TRUE(samePairs(found, overlappingBoxes(boxes))) << "scene with seed " << seed;
+        EXPECT_TRUE(sweptAlongX(boxes, exact, found)) << "scene with seed " << seed;
     }
 }
 
@@ -92,18 +208,22 @@ TEST(Task1SortAndSweep, BoxesTouchingOnXAreNotAPair)
     // Each box starts exactly where the one before it ends (left, top, width, height).
     const std::vector<Box> chain = {
         {0.f, 0.f, 10.f, 10.f}, {10.f, 0.f, 10.f, 10.f}, {20.f, 0.f, 10.f, 10.f}};
-    EXPECT_TRUE(samePairs(sortAndSweepPairs(chain).pairs, {}));
+    ExactBoxTests chainTests(chain);
+    EXPECT_TRUE(samePairs(sortAndSweepPairs(chain, chainTests), {}));
     const std::vector<Box> overlapping = {{0.f, 0.f, 10.f, 10.f}, {9.5f, 0.f, 10.5f, 10.f}};
-    EXPECT_TRUE(samePairs(sortAndSweepPairs(overlapping).pairs, {{0, 1}}));
+    ExactBoxTests overlappingTests(overlapping);
+    EXPECT_TRUE(samePairs(sortAndSweepPairs(overlapping, overlappingTests), {{0, 1}}));
 }
 
 TEST(Task1SortAndSweep, TestsOnlyBoxesWhoseXRangesOverlap)
 {
     const std::vector<Box> boxes = chain(200);
-    const PairSearch search = sortAndSweepPairs(boxes);
-    EXPECT_TRUE(samePairs(search.pairs, bruteForcePairs(boxes).pairs));
+    ExactBoxTests exact(boxes);
+    const std::vector<Pair> found = sortAndSweepPairs(boxes, exact);
+    EXPECT_TRUE(samePairs(found, overlappingBoxes(boxes)));
     // When a box arrives, only the box before it is still open on x.
-    EXPECT_EQ(search.exactTests, 199) << "of the " << bruteForcePairs(boxes).exactTests << " pairs";
+    EXPECT_EQ(exact.tested().size(), 199u) << "of the " << 200 * 199 / 2 << " pairs";
+    EXPECT_TRUE(sweptAlongX(boxes, exact, found));
 }
 
 TEST(Task2UniformGrid, FindsTheSamePairsAsBruteForceForEveryCellSize)
@@ -111,12 +231,18 @@ TEST(Task2UniformGrid, FindsTheSamePairsAsBruteForceForEveryCellSize)
     for (unsigned seed = 1; seed <= 10; ++seed)
     {
         const std::vector<Box> boxes = crowdedBoxes(seed, 60, 20);
-        const std::vector<Pair> expected = bruteForcePairs(boxes).pairs;
+        const std::vector<Pair> expected = overlappingBoxes(boxes);
         // Cells smaller than the boxes (a pair shares many cells), equal, and larger; the
         // boxes reach negative coordinates, and many edges lie exactly on cell borders.
         for (const float cellSize : {2.f, 4.f, 8.f, 16.f, 64.f})
-            EXPECT_TRUE(samePairs(gridPairs(boxes, cellSize).pairs, expected))
+        {
+            ExactBoxTests exact(boxes);
+            const std::vector<Pair> found = gridPairs(boxes, cellSize, exact);
+            EXPECT_TRUE(samePairs(found, expected))
                 << "scene with seed " << seed << ", cells " << cellSize << " wide";
+            EXPECT_TRUE(testedCellByCell(boxes, cellSize, exact, found))
+                << "scene with seed " << seed << ", cells " << cellSize << " wide";
+        }
     }
 }
 
@@ -126,20 +252,22 @@ TEST(Task2UniformGrid, BoxesTouchingOnACellBorderAreNotAPair)
     // share that border's cells, yet touching is not overlapping.
     const std::vector<Box> touching = {
         {0.f, 0.f, 8.f, 8.f}, {8.f, 0.f, 8.f, 8.f}, {0.f, 8.f, 8.f, 8.f}};
-    EXPECT_TRUE(samePairs(gridPairs(touching, 8.f).pairs, {}));
+    ExactBoxTests touchingTests(touching);
+    EXPECT_TRUE(samePairs(gridPairs(touching, 8.f, touchingTests), {}));
     const std::vector<Box> overlapping = {{0.f, 0.f, 8.5f, 8.f}, {8.f, 0.f, 8.f, 8.f}};
-    EXPECT_TRUE(samePairs(gridPairs(overlapping, 8.f).pairs, {{0, 1}}));
+    ExactBoxTests overlappingTests(overlapping);
+    EXPECT_TRUE(samePairs(gridPairs(overlapping, 8.f, overlappingTests), {{0, 1}}));
 }
 
 TEST(Task2UniformGrid, TestsFewerPairsThanBruteForce)
 {
     const std::vector<Box> boxes = chain(200);
-    const PairSearch search = gridPairs(boxes, 64.f);
-    EXPECT_TRUE(samePairs(search.pairs, bruteForcePairs(boxes).pairs));
-    EXPECT_LT(search.exactTests, bruteForcePairs(boxes).exactTests / 20)
+    ExactBoxTests exact(boxes);
+    const std::vector<Pair> found = gridPairs(boxes, 64.f, exact);
+    EXPECT_TRUE(samePairs(found, overlappingBoxes(boxes)));
+    EXPECT_LT(exact.tested().size(), 200u * 199u / 2u / 20u)
         << "boxes along a diagonal share cells only with their neighbours";
-    EXPECT_GE(search.exactTests, static_cast<long long>(search.pairs.size()))
-        << "every pair found was tested exactly, and counted";
+    EXPECT_TRUE(testedCellByCell(boxes, 64.f, exact, found));
 }
 
 TEST(Task2UniformGrid, EachPairSharingCellsIsTestedOnce)
@@ -147,10 +275,44 @@ TEST(Task2UniformGrid, EachPairSharingCellsIsTestedOnce)
     // Two overlapping boxes sharing four cells, and a third alone: one exact test, not four.
     const std::vector<Box> boxes = {
         {1.f, 1.f, 13.f, 13.f}, {2.f, 2.f, 13.f, 13.f}, {40.f, 40.f, 4.f, 4.f}};
-    const PairSearch search = gridPairs(boxes, 8.f);
-    EXPECT_TRUE(samePairs(search.pairs, {{0, 1}}));
-    EXPECT_EQ(search.exactTests, 1) << "a pair that shares several cells is tested once";
+    ExactBoxTests exact(boxes);
+    EXPECT_TRUE(samePairs(gridPairs(boxes, 8.f, exact), {{0, 1}}));
+    EXPECT_EQ(exact.tested().size(), 1u) << "a pair that shares several cells is tested once";
 }
+
+namespace
+{
+
+// Bound first tests exactly the pairs whose bounding squares overlap (strictly: squares that
+// only touch cannot hold overlapping circles).
+testing::AssertionResult testedWhereBoundsOverlap(const std::vector<Ball>& balls,
+                                                  const ExactBallTests& exact,
+                                                  const std::vector<Pair>& found)
+{
+    const auto bound = [](const Ball& ball) {
+        return Box{ball.x - ball.radius, ball.y - ball.radius, 2.f * ball.radius,
+                   2.f * ball.radius};
+    };
+    const std::vector<Pair> boundsOverlapping =
+        pairsWhere(static_cast<int>(balls.size()), [&](int a, int b)
+                   { return hitbox::boxVsBox(bound(balls[a]), bound(balls[b])); });
+    return testedAsItsIdeaSays(exact.tested(), found, boundsOverlapping, boundsOverlapping,
+                               "the bound-first search (the balls' own squares, strictly)");
+}
+
+std::vector<Pair> overlappingBalls(const std::vector<Ball>& balls)
+{
+    return pairsWhere(static_cast<int>(balls.size()),
+                      [&](int a, int b)
+                      {
+                          const float dx = balls[a].x - balls[b].x;
+                          const float dy = balls[a].y - balls[b].y;
+                          const float reach = balls[a].radius + balls[b].radius;
+                          return dx * dx + dy * dy < reach * reach;
+                      });
+}
+
+} // namespace
 
 TEST(Task3BoundFirst, FindsTheSameBallPairsAsTheExactTest)
 {
@@ -166,12 +328,10 @@ TEST(Task3BoundFirst, FindsTheSameBallPairsAsTheExactTest)
     balls.push_back({210.f, 200.f, 5.f});
     balls.push_back({300.f, 300.f, 2.f});
     balls.push_back({303.f, 304.f, 3.f});
-    std::vector<Pair> expected;
-    for (int first = 0; first < static_cast<int>(balls.size()); ++first)
-        for (int second = first + 1; second < static_cast<int>(balls.size()); ++second)
-            if (overlaps(balls[first], balls[second]))
-                expected.push_back({first, second});
-    EXPECT_TRUE(samePairs(ballPairsBoundFirst(balls).pairs, expected));
+    ExactBallTests exact(balls);
+    const std::vector<Pair> found = ballPairsBoundFirst(balls, exact);
+    EXPECT_TRUE(samePairs(found, overlappingBalls(balls)));
+    EXPECT_TRUE(testedWhereBoundsOverlap(balls, exact, found));
 }
 
 TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)
@@ -185,24 +345,15 @@ TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)
     balls.push_back(
         {45.f, 15.f, 10.f}); // bounds overlap four balls' at their corners, circles none
     balls.push_back({90.f, 100.f, 5.f}); // bound and circle overlap ball (90, 90)'s
-    const PairSearch search = ballPairsBoundFirst(balls);
-    long long boundsOverlapping = 0;
-    for (std::size_t first = 0; first < balls.size(); ++first)
-        for (std::size_t second = first + 1; second < balls.size(); ++second)
-        {
-            const Ball& a = balls[first];
-            const Ball& b = balls[second];
-            if (overlaps(Box{a.x - a.radius, a.y - a.radius, 2.f * a.radius, 2.f * a.radius},
-                         Box{b.x - b.radius, b.y - b.radius, 2.f * b.radius, 2.f * b.radius}))
-                ++boundsOverlapping;
-        }
-    const long long allPairs = static_cast<long long>(balls.size() * (balls.size() - 1) / 2);
-    EXPECT_EQ(search.exactTests, boundsOverlapping)
-        << "the exact circle test should run once for each pair whose bounding boxes overlap "
-           "(strictly: bounds that only touch cannot hold overlapping circles), and never "
-           "otherwise; saved: "
-        << allPairs - search.exactTests << " of " << allPairs;
-    EXPECT_LT(search.exactTests, allPairs / 20);
+    ExactBallTests exact(balls);
+    const std::vector<Pair> found = ballPairsBoundFirst(balls, exact);
+    EXPECT_TRUE(samePairs(found, overlappingBalls(balls)));
+    const std::size_t allPairs = balls.size() * (balls.size() - 1) / 2;
+    EXPECT_TRUE(testedWhereBoundsOverlap(balls, exact, found))
+        << "the exact circle test should run once for each pair whose bounding boxes overlap, "
+           "and never otherwise; saved: "
+        << allPairs - exact.tested().size() << " of " << allPairs;
+    EXPECT_LT(exact.tested().size(), allPairs / 20);
 }
 
 TEST(Task3BoundFirst, TheBoundIsTheBallsOwnSquareNoBigger)
@@ -216,9 +367,9 @@ TEST(Task3BoundFirst, TheBoundIsTheBallsOwnSquareNoBigger)
                                                   {{0.f, 25.f, 10.f}, {0.f, 0.f, 10.f}}};
     for (const std::vector<Ball>& balls : pairs)
     {
-        const PairSearch search = ballPairsBoundFirst(balls);
-        EXPECT_TRUE(search.pairs.empty());
-        EXPECT_EQ(search.exactTests, 0)
+        ExactBallTests exact(balls);
+        EXPECT_TRUE(ballPairsBoundFirst(balls, exact).empty());
+        EXPECT_EQ(exact.tested().size(), 0u)
             << "balls at (" << balls[0].x << ", " << balls[0].y << ") and (" << balls[1].x << ", "
             << balls[1].y << "), radius 10: their bounding squares are 5 pixels apart";
     }

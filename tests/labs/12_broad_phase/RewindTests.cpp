@@ -18,8 +18,8 @@ std::string crowdState(const hitbox::Level& shown)
 {
     const auto& level = dynamic_cast<const CrowdLevel&>(shown);
     std::string text = level.describeState() + '\n';
-    text += std::to_string(level.getLastSearch().exactTests) + " exact tests:";
-    for (const Pair& pair : level.getLastSearch().pairs)
+    text += std::to_string(level.getLastExactTests()) + " exact tests:";
+    for (const Pair& pair : level.getLastPairs())
         text += ' ' + std::to_string(pair.first) + '-' + std::to_string(pair.second);
     return text;
 }
