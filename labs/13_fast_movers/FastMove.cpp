@@ -1,39 +1,15 @@
+// FastMove.cpp - your two cures for tunnelling. The wall's counted overlap test, movedBy,
+// againstWall and the discrete step are given, in Given.cpp: read discreteStep first.
 #include "FastMove.h"
-
-#include "hitbox/geometry/Overlap.h"
 
 #include <algorithm>
 #include <cmath>
 
-Box movedBy(const Box& box, float dx)
-{
-    return {box.left + dx, box.top, box.width, box.height};
-}
-
-namespace
-{
-// The bullet put back against the side of the wall it came from.
-Box againstWall(const Box& bullet, float velocityX, const Box& wall)
-{
-    if (velocityX >= 0.f)
-        return {wall.left - bullet.width, bullet.top, bullet.width, bullet.height};
-    return {hitbox::rightOf(wall), bullet.top, bullet.width, bullet.height};
-}
-} // namespace
-
-MoveResult discreteStep(const Box& bullet, float velocityX, float dt, const Box& wall)
-{
-    MoveResult result{movedBy(bullet, velocityX * dt), false, 1};
-    if (hitbox::boxVsBox(result.bullet, wall))
-        result = {againstWall(result.bullet, velocityX, wall), true, 1};
-    return result;
-}
-
 // [slide:lab13-sub-steps]
-MoveResult subSteppedStep(const Box& bullet, float velocityX, float dt, const Box& wall,
+MoveResult subSteppedStep(const Box& bullet, float velocityX, float dt, WallTests& wall,
                           float maxSubStep)
 {
-    MoveResult result{bullet, false, 0};
+    MoveResult result{bullet, false};
     // BEGIN TASK 1: sub-steps
     // Enough equal sub-steps that none is longer than maxSubStep: if maxSubStep is less
     // than the wall's thickness plus the bullet's width, no sub-step can jump the wall.
@@ -43,10 +19,9 @@ MoveResult subSteppedStep(const Box& bullet, float velocityX, float dt, const Bo
     for (int step = 0; step < subSteps; ++step)
     {
         result.bullet = movedBy(result.bullet, subMove);
-        ++result.overlapTests;
-        if (hitbox::boxVsBox(result.bullet, wall))
+        if (wall.overlaps(result.bullet))
         {
-            result.bullet = againstWall(result.bullet, velocityX, wall);
+            result.bullet = againstWall(result.bullet, velocityX, wall.wall());
             result.hitWall = true;
             break;
         }
@@ -62,7 +37,7 @@ MoveResult subSteppedStep(const Box& bullet, float velocityX, float dt, const Bo
 // [slide:lab13-speculative]
 MoveResult speculativeStep(const Box& bullet, float velocityX, float dt, const Box& wall)
 {
-    MoveResult result{bullet, false, 0};
+    MoveResult result{bullet, false};
     // BEGIN TASK 2: a speculative contact
     // The wall is ahead only if it is level with the bullet and on the side it moves to.
     // The gap is the free distance; a move shorter than the gap is safe in full, a longer
@@ -70,7 +45,6 @@ MoveResult speculativeStep(const Box& bullet, float velocityX, float dt, const B
     // contacts", GDC 2013; the platformer article's fix for the bullet through paper).
     const bool level = bullet.top < hitbox::bottomOf(wall) && wall.top < hitbox::bottomOf(bullet);
     const float move = velocityX * dt;
-    result.overlapTests = 1;
     if (level && move > 0.f && hitbox::rightOf(bullet) <= wall.left)
     {
         result.hitWall = move >= wall.left - hitbox::rightOf(bullet);
@@ -87,7 +61,8 @@ MoveResult speculativeStep(const Box& bullet, float velocityX, float dt, const B
     }
     result.bullet = movedBy(bullet, move);
     // STARTER TASK 2
-    // result = discreteStep(bullet, velocityX, dt, wall); // one step, one test: tunnels
+    // WallTests tests(wall);
+    // result = discreteStep(bullet, velocityX, dt, tests); // one step, one test: tunnels
     // END TASK 2
     return result;
 }

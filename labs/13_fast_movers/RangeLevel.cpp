@@ -61,10 +61,11 @@ void RangeLevel::update(float dt)
         if (!flying[lane])
             continue;
         MoveResult result;
+        WallTests tests(wall);
         if (lane == 0)
-            result = discreteStep(bullets[lane], speed, dt, wall);
+            result = discreteStep(bullets[lane], speed, dt, tests);
         else if (lane == 1)
-            result = subSteppedStep(bullets[lane], speed, dt, wall, maxSubStep);
+            result = subSteppedStep(bullets[lane], speed, dt, tests, maxSubStep);
         else
             result = speculativeStep(bullets[lane], speed, dt, wall);
         bullets[lane] = result.bullet;
