@@ -2,12 +2,12 @@
 // (Task1..., Task2..., Task3...); README.md lists them. The level runs with no window. Each
 // task's tests call that task's own step of update() (findBoxUnder, dragBox, windowToScene)
 // and no other task's, so one mistake costs one task.
+#include "labs/01_point_in_box/PointInBoxChecks.h"
 #include "labs/LabTesting.h"
 
 #include "PointInBoxLevel.h"
 
 #include "hitbox/app/App.h"
-#include "hitbox/app/Input.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <SFML/Graphics/View.hpp>
@@ -15,75 +15,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace
 {
 
-// The top box containing the scene point, or noBox: worked out here (a point on an edge is
-// outside, the edge rule), so the tests of tasks 2 and 3 need no task 1.
-int boxAt(const PointInBoxLevel& level, sf::Vector2f point)
-{
-    for (int index = level.getBoxCount() - 1; index >= 0; --index)
-    {
-        const hitbox::Box box = hitbox::toBox(level.getBox(index).getCollisionBox());
-        if (point.x > box.left && point.x < hitbox::rightOf(box) && point.y > box.top &&
-            point.y < hitbox::bottomOf(box))
-            return index;
-    }
-    return PointInBoxLevel::noBox;
-}
-
-// A player at the mouse (task 2): moves it, presses and releases the left button, one step
-// at a time. Each step hands dragBox the box under the mouse as boxAt finds it (so task 2
-// needs no task 1), with the scene unzoomed (so it needs no task 3).
-struct Player
-{
-    PointInBoxLevel level;
-    hitbox::Input input;
-    sf::Vector2f mouse;
-
-    void step()
-    {
-        level.handleInput(input, hitbox::stepSeconds);
-        level.dragBox(boxAt(level, mouse), mouse);
-        input.update();
-    }
-    void moveMouseTo(sf::Vector2f scenePoint)
-    {
-        mouse = scenePoint;
-        step();
-    }
-    void pressLeft()
-    {
-        input.setMouseLDown(true);
-        step();
-    }
-    void releaseLeft()
-    {
-        input.setMouseLDown(false);
-        step();
-    }
-    // Zooms with the mouse wheel (handleInput's own work, no task's).
-    void zoom(int notches)
-    {
-        for (int notch = 0; notch < std::abs(notches); ++notch)
-        {
-            input.addMouseWheel(notches > 0 ? 1.f : -1.f);
-            level.handleInput(input, hitbox::stepSeconds);
-            input.update();
-        }
-    }
-    // Where a scene point is drawn in the window (through the level's camera).
-    sf::Vector2f onScreen(sf::Vector2f scenePoint) const
-    {
-        return level.getCamera().transformPoint(scenePoint);
-    }
-    sf::Vector2f boxCenterOnScreen(int index) const
-    {
-        return onScreen(labtesting::centerOf(level.getBox(index).getCollisionBox()));
-    }
-};
+using namespace pointinboxchecks;
 
 // A point inside box `index`, clear of every box drawn after it (which would cover it).
 sf::Vector2f uncoveredPointOf(const PointInBoxLevel& level, int index)

@@ -1,18 +1,19 @@
 // Grading tests of lab 1, task 4 (point in a polygon): isInsidePolygon on its own, so no
 // other task's code runs. The touching cases use whole-number corners and edges along the
 // axes or at 45 degrees, where float arithmetic is exact and "on the edge" is certain.
+#include "labs/01_point_in_box/PointInBoxChecks.h"
+
 #include "PointInBoxLevel.h"
 #include "PointInPolygon.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
 namespace
 {
-using Corners = std::vector<sf::Vector2f>;
+using namespace pointinboxchecks;
 
 const Corners square{{0.f, 0.f}, {10.f, 0.f}, {10.f, 10.f}, {0.f, 10.f}};
 // A "C", 30 by 30, open on the right between y = 10 and y = 20.
@@ -20,12 +21,6 @@ const Corners cShape{{0.f, 0.f},   {30.f, 0.f},  {30.f, 10.f}, {10.f, 10.f},
                      {10.f, 20.f}, {30.f, 20.f}, {30.f, 30.f}, {0.f, 30.f}};
 // A diamond: a ray to the right from its middle's height passes exactly through corners.
 const Corners diamond{{10.f, 0.f}, {20.f, 10.f}, {10.f, 20.f}, {0.f, 10.f}};
-
-Corners reversed(Corners corners)
-{
-    std::reverse(corners.begin(), corners.end());
-    return corners;
-}
 } // namespace
 
 TEST(Task4PointInPolygon, APointInsideASquareIsInside)
@@ -130,9 +125,7 @@ TEST(Task4PointInPolygon, TheLevelsStarHasGapsBetweenItsPoints)
     const PointInBoxLevel level;
     const Corners& star = level.getStar();
     ASSERT_EQ(star.size(), 10u);
-    sf::Vector2f middle;
-    for (const sf::Vector2f corner : star)
-        middle += corner / 10.f;
+    const sf::Vector2f middle = middleOf(star);
     EXPECT_TRUE(isInsidePolygon(star, middle));
     for (std::size_t corner = 0; corner < star.size(); ++corner)
     {

@@ -2,6 +2,7 @@
 // README.md lists them. No window, one fixed step at a time. Each task's tests run only that
 // task's code (the constructor's box, Square::update, bounceApart), with whatever else they
 // need set up by the test, so one mistake costs one task.
+#include "labs/03_bouncing_squares/SquaresChecks.h"
 #include "labs/LabTesting.h"
 #include "support/CollisionMatchers.h"
 
@@ -22,9 +23,8 @@
 namespace
 {
 
-// How far two boxes may overlap at the end of a step: the response separates them in the
-// step they meet, so only rounding is left.
-constexpr float overlapTolerance = 0.5f;
+using namespace squareschecks;
+
 // The speed the tests give their squares (pixels per second): slow enough that a test
 // decides when a square reaches a wall.
 constexpr float testSpeed = 220.f;
@@ -35,60 +35,12 @@ float dotOf(sf::Vector2f a, sf::Vector2f b)
 }
 // How far a square moves in one step.
 constexpr float stepDistance = testSpeed * hitbox::stepSeconds;
-// The see-through margin on each side of the crate.
-constexpr float margin = (spriteSize - crateSize) / 2.f;
-
-// A square with the crate's collision box, set here as task 1 sets it: the tests of tasks 2
-// and 3 need no task 1 (one mistake costs one task).
-Square crate(sf::Vector2f center, sf::Vector2f velocity)
-{
-    Square square(center, velocity, sf::Color::White);
-    square.setCollisionBox(-crateSize / 2.f, -crateSize / 2.f, crateSize, crateSize);
-    return square;
-}
 
 // Task 2's tests: one square alone, moved by its own update (task 2's code), step by step.
 void run(Square& square, int steps)
 {
     for (int step = 0; step < steps; ++step)
         square.update(hitbox::stepSeconds);
-}
-
-int stepsFor(float seconds)
-{
-    return static_cast<int>(seconds * hitbox::stepsPerSecond);
-}
-
-// Task 3's tests: every step the test moves the squares itself (no task 2), keeps them in
-// `world` if it has one (a crowd needs walls to stay a crowd), then calls bounceApart on
-// every pair, the way SquaresLevel::update does.
-void stepApart(std::vector<Square>& squares, int steps, sf::Vector2f world = {})
-{
-    for (int step = 0; step < steps; ++step)
-    {
-        for (Square& square : squares)
-        {
-            square.move(square.getVelocity() * hitbox::stepSeconds);
-            if (world.x <= 0.f)
-                continue;
-            const hitbox::Box box = hitbox::toBox(square.getCollisionBox());
-            sf::Vector2f velocity = square.getVelocity();
-            if (box.left < 0.f || box.left + box.width > world.x)
-            {
-                square.move({box.left < 0.f ? -box.left : world.x - (box.left + box.width), 0.f});
-                velocity.x = box.left < 0.f ? std::abs(velocity.x) : -std::abs(velocity.x);
-            }
-            if (box.top < 0.f || box.top + box.height > world.y)
-            {
-                square.move({0.f, box.top < 0.f ? -box.top : world.y - (box.top + box.height)});
-                velocity.y = box.top < 0.f ? std::abs(velocity.y) : -std::abs(velocity.y);
-            }
-            square.setVelocity(velocity);
-        }
-        for (std::size_t i = 0; i < squares.size(); ++i)
-            for (std::size_t j = i + 1; j < squares.size(); ++j)
-                bounceApart(squares[i], squares[j]);
-    }
 }
 
 // The lecture's example: two squares on one line, flying at each other at testSpeed.
@@ -98,14 +50,6 @@ std::vector<Square> twoSquaresFlyingAtEachOther()
                   {testSpeed, 0.f}),
             crate({hitbox::defaultWorldSize.x * 0.75f, hitbox::defaultWorldSize.y / 2.f},
                   {-testSpeed, 0.f})};
-}
-
-// How far two boxes overlap along the axis where they overlap least (0 if they do not).
-float overlapOf(const hitbox::Box& a, const hitbox::Box& b)
-{
-    const float x = std::min(a.left + a.width, b.left + b.width) - std::max(a.left, b.left);
-    const float y = std::min(a.top + a.height, b.top + b.height) - std::max(a.top, b.top);
-    return std::max(0.f, std::min(x, y));
 }
 
 const sf::Vector2f middle{600.f, 337.5f};

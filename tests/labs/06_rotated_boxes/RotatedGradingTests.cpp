@@ -1,6 +1,8 @@
 // Grading tests for lab 6 (rotated boxes). Each suite checks one task of README.md, and runs
 // only that task's code: task 2's tests cast the shadows themselves, tasks 3 and 4 let the
 // level test box pairs with the framework's SAT. So one mistake costs one task.
+#include "labs/06_rotated_boxes/RotatedChecks.h"
+
 #include "RotatedLevel.h"
 #include "Sat.h"
 
@@ -10,59 +12,14 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <random>
-#include <utility>
 #include <vector>
 
 namespace
 {
 
-hitbox::Polygon box(hitbox::Vec2 center, hitbox::Vec2 halfSize, float degrees)
-{
-    return hitbox::toPolygon(hitbox::OrientedBox{center, halfSize, degrees});
-}
-
-// The shadows of both polygons on the normals of all their edges, worked out here (task 1's
-// answer), for chooseAxis: task 2's tests need no task 1.
-std::vector<AxisShadows> axesOf(const hitbox::Polygon& a, const hitbox::Polygon& b)
-{
-    const auto shadow = [](const hitbox::Polygon& polygon, hitbox::Vec2 axis)
-    {
-        Shadow onAxis{hitbox::dot(polygon.points[0], axis), hitbox::dot(polygon.points[0], axis)};
-        for (const hitbox::Vec2& point : polygon.points)
-        {
-            onAxis.min = std::min(onAxis.min, hitbox::dot(point, axis));
-            onAxis.max = std::max(onAxis.max, hitbox::dot(point, axis));
-        }
-        return onAxis;
-    };
-    std::vector<AxisShadows> axes;
-    for (const hitbox::Polygon* polygon : {&a, &b})
-        for (std::size_t i = 0; i < polygon->points.size(); ++i)
-        {
-            const hitbox::Vec2 edge =
-                polygon->points[(i + 1) % polygon->points.size()] - polygon->points[i];
-            const hitbox::Vec2 axis = hitbox::unitVectorOr(hitbox::perpendicular(edge), {1.f, 0.f});
-            axes.push_back({axis, shadow(a, axis), shadow(b, axis)});
-        }
-    return axes;
-}
-
-SatResult sat(const hitbox::Polygon& a, const hitbox::Polygon& b)
-{
-    return chooseAxis(axesOf(a, b));
-}
-
-// A level whose box pairs are tested by the framework's SAT, for tasks 3 and 4.
-RotatedLevel levelWithFrameworkSat(std::vector<Shape> shapes)
-{
-    RotatedLevel level(std::move(shapes));
-    level.setFrameworkSat(true);
-    level.update(hitbox::stepSeconds);
-    return level;
-}
+using namespace rotatedchecks;
 
 RotatedLevel labLevelWithFrameworkSat()
 {
@@ -70,22 +27,6 @@ RotatedLevel labLevelWithFrameworkSat()
     level.setFrameworkSat(true);
     level.update(hitbox::stepSeconds);
     return level;
-}
-
-void stepWith(RotatedLevel& level, hitbox::Input& input)
-{
-    level.handleInput(input, hitbox::stepSeconds);
-    level.update(hitbox::stepSeconds);
-    input.update();
-}
-
-// After a push out, the held shape overlaps nothing: no tolerance (hitbox::pushOutOffset
-// rounds the MTV outward, so a correct push always separates).
-void expectPushedOut(const RotatedLevel& level)
-{
-    for (const PairView& pair : level.getPairs())
-        EXPECT_FALSE(pair.overlapping) << "still overlapping shape " << pair.other << " by "
-                                       << -pair.gap << " px after the push";
 }
 
 } // namespace
@@ -284,13 +225,6 @@ TEST(Task4PushOut, EachPushIntoAnotherShapeGoesRoundAgain)
     // A staircase: out of shape 4 (left), into shape 3 (up), into shape 2 (left), into
     // shape 1 (up). Each push lands in a shape the round has already passed, so it takes
     // four rounds, and after the last the held shape touches but overlaps nothing.
-    const auto axisAligned = [](float left, float top, float right, float bottom)
-    {
-        return Shape{{{(left + right) / 2.f, (top + bottom) / 2.f},
-                      {(right - left) / 2.f, (bottom - top) / 2.f},
-                      0.f},
-                     false};
-    };
     RotatedLevel level = levelWithFrameworkSat(
         {axisAligned(-10.f, -10.f, 10.f, 10.f), axisAligned(-100.f, 9.77f, -11.05f, 100.f),
          axisAligned(8.9f, -100.f, 100.f, -10.05f), axisAligned(-100.f, 9.8f, -10.5f, 100.f),

@@ -1,4 +1,6 @@
 // Grading tests for lab 7 (swept circles). Each suite checks one task of README.md.
+#include "labs/07_swept_circles/PoolChecks.h"
+
 #include "PoolLevel.h"
 
 #include "hitbox/app/App.h"
@@ -14,13 +16,9 @@
 namespace
 {
 
-const hitbox::Box bigTable{0.f, 0.f, 4000.f, 1000.f};
-const float radius = 14.f;
+using namespace poolchecks;
 
-Ball ballAt(hitbox::Vec2 center, hitbox::Vec2 velocity = {0.f, 0.f})
-{
-    return {{center, radius}, velocity, sf::Color::White};
-}
+const hitbox::Box bigTable{0.f, 0.f, 4000.f, 1000.f};
 
 void step(PoolLevel& level, int steps)
 {
@@ -233,9 +231,7 @@ TEST(Task3Cushions, NoBallEverLeavesTheTableInAnyDirection)
 {
     // One ball at a time, so this needs no ball-ball collision (task 1) to pass.
     const hitbox::Box table{100.f, 100.f, 800.f, 600.f};
-    const hitbox::Box inner{table.left + radius - 0.01f, table.top + radius - 0.01f,
-                            table.width - 2.f * radius + 0.02f,
-                            table.height - 2.f * radius + 0.02f};
+    const hitbox::Box inner = centreBounds(table);
     for (int degrees = 7; degrees < 360; degrees += 15)
         for (float speed : {500.f, 6000.f, 100000.f})
         {

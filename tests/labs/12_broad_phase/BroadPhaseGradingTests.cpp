@@ -5,202 +5,26 @@
 // by the search itself, and must be the ones its idea runs: sort and sweep tests the pairs
 // open together on x, the grid the pairs sharing a cell, bound first the pairs whose
 // bounding boxes overlap; each once, and every pair returned among them.
-#include "BroadPhase.h"
+#include "labs/12_broad_phase/BroadPhaseChecks.h"
 
-#include "hitbox/geometry/Overlap.h"
+#include "BroadPhase.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
-#include <functional>
-#include <random>
-#include <sstream>
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace
 {
-
-// Boxes on a coarse whole-number grid, so that many touch exactly on an edge or a corner.
-std::vector<Box> crowdedBoxes(unsigned seed, int count, int spread)
-{
-    std::mt19937 random(seed);
-    std::uniform_int_distribution<int> place(-spread, spread);
-    std::uniform_int_distribution<int> size(0, 8);
-    std::vector<Box> boxes;
-    for (int index = 0; index < count; ++index)
-    {
-        const float left = static_cast<float>(place(random));
-        const float top = static_cast<float>(place(random));
-        // (A braced list is evaluated left to right: width first, then height.)
-        boxes.push_back(
-            {left, top, static_cast<float>(size(random)), static_cast<float>(size(random))});
-    }
-    return boxes;
-}
-
-// A diagonal chain: each box overlaps the next one only, so n - 1 pairs, and brute force
-// still tests all n(n-1)/2.
-std::vector<Box> chain(int count)
-{
-    std::vector<Box> boxes;
-    for (int index = 0; index < count; ++index)
-        boxes.push_back({index * 15.f, index * 15.f, 20.f, 20.f});
-    return boxes;
-}
-
-// Every pair (first < second) for which `keep` holds: the tests' own brute force, written
-// here so that nothing the search's file defines decides what is expected.
-std::vector<Pair> pairsWhere(int count, const std::function<bool(int, int)>& keep)
-{
-    std::vector<Pair> pairs;
-    for (int first = 0; first < count; ++first)
-        for (int second = first + 1; second < count; ++second)
-            if (keep(first, second))
-                pairs.push_back({first, second});
-    return pairs;
-}
-
-std::vector<Pair> overlappingBoxes(const std::vector<Box>& boxes)
-{
-    return pairsWhere(static_cast<int>(boxes.size()),
-                      [&](int a, int b) { return hitbox::boxVsBox(boxes[a], boxes[b]); });
-}
-
-std::vector<Pair> sorted(std::vector<Pair> pairs)
-{
-    for (Pair& pair : pairs)
-        if (pair.first > pair.second)
-            std::swap(pair.first, pair.second);
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
-}
-
-std::string text(const std::vector<Pair>& pairs)
-{
-    std::ostringstream out;
-    for (std::size_t index = 0; index < pairs.size() && index < 12; ++index)
-        out << "(" << pairs[index].first << ", " << pairs[index].second << ") ";
-    if (pairs.size() > 12)
-        out << "... " << pairs.size() << " in all";
-    return out.str();
-}
-
-// The same pairs as brute force, each once.
-testing::AssertionResult samePairs(const std::vector<Pair>& found,
-                                   const std::vector<Pair>& expected)
-{
-    const std::vector<Pair> actual = sorted(found);
-    if (actual == expected)
-        return testing::AssertionSuccess();
-    return testing::AssertionFailure()
-           << "found " << actual.size() << " pair(s): " << text(actual) << "\nbrute force finds "
-           << expected.size()
-           << " (touching boxes are not a pair, and each pair counts once): " << text(expected);
-}
-
-// What the exact tests of one search were: each pair once, every pair returned among them,
-// none outside `allowed` (the idea's candidates; first < second) and none of `required` left
-// out. A search that decides a pair another way, or tests more than its idea needs, fails.
-testing::AssertionResult testedAsItsIdeaSays(const std::vector<Pair>& tested,
-                                             const std::vector<Pair>& found,
-                                             const std::vector<Pair>& allowed,
-                                             const std::vector<Pair>& required, const char* idea)
-{
-    const std::vector<Pair> ran = sorted(tested);
-    const auto repeat = std::adjacent_find(ran.begin(), ran.end());
-    if (repeat != ran.end())
-        return testing::AssertionFailure() << "the pair (" << repeat->first << ", "
-                                           << repeat->second << ") was tested more than once";
-    for (const Pair& pair : sorted(found))
-        if (!std::binary_search(ran.begin(), ran.end(), pair))
-            return testing::AssertionFailure()
-                   << "the pair (" << pair.first << ", " << pair.second
-                   << ") was returned without an exact test: every pair returned must come "
-                      "from exact.overlap";
-    for (const Pair& pair : ran)
-        if (!std::binary_search(allowed.begin(), allowed.end(), pair))
-            return testing::AssertionFailure()
-                   << "the pair (" << pair.first << ", " << pair.second << ") was tested, but "
-                   << idea << " never gets to it";
-    for (const Pair& pair : required)
-        if (!std::binary_search(ran.begin(), ran.end(), pair))
-            return testing::AssertionFailure()
-                   << "the pair (" << pair.first << ", " << pair.second << ") was not tested, but "
-                   << idea << " must test it (" << ran.size() << " tests ran)";
-    return testing::AssertionSuccess();
-}
-
-// Sort and sweep tests exactly the pairs open together on x: their x ranges overlap. Where
-// they only touch, the open list may or may not still hold the older box; both are right.
-testing::AssertionResult sweptAlongX(const std::vector<Box>& boxes, const ExactBoxTests& exact,
-                                     const std::vector<Pair>& found)
-{
-    const int count = static_cast<int>(boxes.size());
-    const auto along = [&](int a, int b) {
-        return boxes[a].left < hitbox::rightOf(boxes[b]) &&
-               boxes[b].left < hitbox::rightOf(boxes[a]);
-    };
-    const auto alongOrTouching = [&](int a, int b)
-    {
-        return boxes[a].left <= hitbox::rightOf(boxes[b]) &&
-               boxes[b].left <= hitbox::rightOf(boxes[a]);
-    };
-    return testedAsItsIdeaSays(exact.tested(), found, pairsWhere(count, alongOrTouching),
-                               pairsWhere(count, along), "sort and sweep along x");
-}
-
-// The cells a box covers along one axis, from `low` to `high` in cells `size` wide. The sheet
-// counts a side exactly on a cell border into the next cell (wide); a grid that counts only
-// the cells the box reaches inside (narrow: none for a box of no width) is right too. A grid
-// tests every pair sharing a cell the narrow way, and no pair sharing none the wide way.
-bool shareCells(float lowA, float highA, float lowB, float highB, float size, bool narrow)
-{
-    const auto first = [&](float low) { return std::floor(low / size); };
-    const auto last = [&](float low, float high)
-    {
-        if (!narrow)
-            return std::floor(high / size);
-        return high > low ? std::ceil(high / size) - 1.f : first(low) - 1.f;
-    };
-    return first(lowA) <= last(lowB, highB) && first(lowB) <= last(lowA, highA) &&
-           first(lowA) <= last(lowA, highA) && first(lowB) <= last(lowB, highB);
-}
-
-testing::AssertionResult testedCellByCell(const std::vector<Box>& boxes, float size,
-                                          const ExactBoxTests& exact,
-                                          const std::vector<Pair>& found)
-{
-    const auto sharing = [&](bool narrow)
-    {
-        return pairsWhere(static_cast<int>(boxes.size()),
-                          [&](int a, int b)
-                          {
-                              const Box& p = boxes[a];
-                              const Box& q = boxes[b];
-                              return shareCells(p.left, hitbox::rightOf(p), q.left,
-                                                hitbox::rightOf(q), size, narrow) &&
-                                     shareCells(p.top, hitbox::bottomOf(p), q.top,
-                                                hitbox::bottomOf(q), size, narrow);
-                          });
-    };
-    return testedAsItsIdeaSays(exact.tested(), found, sharing(false), sharing(true),
-                               "a grid of these cells");
-}
-
+using namespace broadphasechecks;
 } // namespace
 
 TEST(Task1SortAndSweep, FindsTheSamePairsAsBruteForce)
 {
     for (unsigned seed = 1; seed <= 20; ++seed)
-    {
-        const std::vector<Box> boxes = crowdedBoxes(seed, 60, 20);
-        ExactBoxTests exact(boxes);
-        const std::vector<Pair> found = sortAndSweepPairs(boxes, exact);
-        EXPECT_TRUE(samePairs(found, overlappingBoxes(boxes))) << "scene with seed " << seed;
-        EXPECT_TRUE(sweptAlongX(boxes, exact, found)) << "scene with seed " << seed;
-    }
+        expectSweepFindsThePairs(crowdedBoxes(seed, 60, -20, 20, 8, 1.f),
+                                 "scene with seed " + std::to_string(seed));
 }
 
 TEST(Task1SortAndSweep, BoxesTouchingOnXAreNotAPair)
@@ -217,7 +41,7 @@ TEST(Task1SortAndSweep, BoxesTouchingOnXAreNotAPair)
 
 TEST(Task1SortAndSweep, TestsOnlyBoxesWhoseXRangesOverlap)
 {
-    const std::vector<Box> boxes = chain(200);
+    const std::vector<Box> boxes = diagonalChain(200, 15.f, 20.f);
     ExactBoxTests exact(boxes);
     const std::vector<Pair> found = sortAndSweepPairs(boxes, exact);
     EXPECT_TRUE(samePairs(found, overlappingBoxes(boxes)));
@@ -228,22 +52,12 @@ TEST(Task1SortAndSweep, TestsOnlyBoxesWhoseXRangesOverlap)
 
 TEST(Task2UniformGrid, FindsTheSamePairsAsBruteForceForEveryCellSize)
 {
+    // Cells smaller than the boxes (a pair shares many cells), equal, and larger; the boxes
+    // reach negative coordinates, and many edges lie exactly on cell borders.
     for (unsigned seed = 1; seed <= 10; ++seed)
-    {
-        const std::vector<Box> boxes = crowdedBoxes(seed, 60, 20);
-        const std::vector<Pair> expected = overlappingBoxes(boxes);
-        // Cells smaller than the boxes (a pair shares many cells), equal, and larger; the
-        // boxes reach negative coordinates, and many edges lie exactly on cell borders.
-        for (const float cellSize : {2.f, 4.f, 8.f, 16.f, 64.f})
-        {
-            ExactBoxTests exact(boxes);
-            const std::vector<Pair> found = gridPairs(boxes, cellSize, exact);
-            EXPECT_TRUE(samePairs(found, expected))
-                << "scene with seed " << seed << ", cells " << cellSize << " wide";
-            EXPECT_TRUE(testedCellByCell(boxes, cellSize, exact, found))
-                << "scene with seed " << seed << ", cells " << cellSize << " wide";
-        }
-    }
+        expectGridPairsForEachCellSize(crowdedBoxes(seed, 60, -20, 20, 8, 1.f),
+                                       {2.f, 4.f, 8.f, 16.f, 64.f},
+                                       "scene with seed " + std::to_string(seed));
 }
 
 TEST(Task2UniformGrid, BoxesTouchingOnACellBorderAreNotAPair)
@@ -261,7 +75,7 @@ TEST(Task2UniformGrid, BoxesTouchingOnACellBorderAreNotAPair)
 
 TEST(Task2UniformGrid, TestsFewerPairsThanBruteForce)
 {
-    const std::vector<Box> boxes = chain(200);
+    const std::vector<Box> boxes = diagonalChain(200, 15.f, 20.f);
     ExactBoxTests exact(boxes);
     const std::vector<Pair> found = gridPairs(boxes, 64.f, exact);
     EXPECT_TRUE(samePairs(found, overlappingBoxes(boxes)));
@@ -280,58 +94,15 @@ TEST(Task2UniformGrid, EachPairSharingCellsIsTestedOnce)
     EXPECT_EQ(exact.tested().size(), 1u) << "a pair that shares several cells is tested once";
 }
 
-namespace
-{
-
-// Bound first tests exactly the pairs whose bounding squares overlap (strictly: squares that
-// only touch cannot hold overlapping circles).
-testing::AssertionResult testedWhereBoundsOverlap(const std::vector<Ball>& balls,
-                                                  const ExactBallTests& exact,
-                                                  const std::vector<Pair>& found)
-{
-    const auto bound = [](const Ball& ball) {
-        return Box{ball.x - ball.radius, ball.y - ball.radius, 2.f * ball.radius,
-                   2.f * ball.radius};
-    };
-    const std::vector<Pair> boundsOverlapping =
-        pairsWhere(static_cast<int>(balls.size()), [&](int a, int b)
-                   { return hitbox::boxVsBox(bound(balls[a]), bound(balls[b])); });
-    return testedAsItsIdeaSays(exact.tested(), found, boundsOverlapping, boundsOverlapping,
-                               "the bound-first search (the balls' own squares, strictly)");
-}
-
-std::vector<Pair> overlappingBalls(const std::vector<Ball>& balls)
-{
-    return pairsWhere(static_cast<int>(balls.size()),
-                      [&](int a, int b)
-                      {
-                          const float dx = balls[a].x - balls[b].x;
-                          const float dy = balls[a].y - balls[b].y;
-                          const float reach = balls[a].radius + balls[b].radius;
-                          return dx * dx + dy * dy < reach * reach;
-                      });
-}
-
-} // namespace
-
 TEST(Task3BoundFirst, FindsTheSameBallPairsAsTheExactTest)
 {
-    std::mt19937 random(7);
-    std::uniform_int_distribution<int> place(0, 60);
-    std::uniform_int_distribution<int> radius(0, 8);
-    std::vector<Ball> balls;
-    for (int index = 0; index < 80; ++index)
-        balls.push_back({static_cast<float>(place(random)), static_cast<float>(place(random)),
-                         static_cast<float>(radius(random))});
+    std::vector<Ball> balls = crowdedBalls(7, 80, 0, 60, 8, 1.f);
     // Touching on purpose: along x, along a 3-4-5 diagonal, and bounds touching at a corner.
     balls.push_back({200.f, 200.f, 5.f});
     balls.push_back({210.f, 200.f, 5.f});
     balls.push_back({300.f, 300.f, 2.f});
     balls.push_back({303.f, 304.f, 3.f});
-    ExactBallTests exact(balls);
-    const std::vector<Pair> found = ballPairsBoundFirst(balls, exact);
-    EXPECT_TRUE(samePairs(found, overlappingBalls(balls)));
-    EXPECT_TRUE(testedWhereBoundsOverlap(balls, exact, found));
+    expectBoundFirstFindsThePairs(balls);
 }
 
 TEST(Task3BoundFirst, RunsTheExactTestOnlyWhereTheBoundsOverlap)

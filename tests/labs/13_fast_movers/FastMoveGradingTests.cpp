@@ -3,24 +3,22 @@
 // from 600 to 10 million pixels per second, one fixed step (1/120 s) at a time; every
 // flight ends within a few steps, so no test loops long. Sub-steps are counted by the given
 // WallTests (Given.cpp, always the course's copy), which remembers where each test ran.
+#include "labs/13_fast_movers/FastMoveChecks.h"
+
 #include "FastMove.h"
 #include "RangeLevel.h"
 
 #include "hitbox/app/Loop.h"
 #include "hitbox/debug/DebugRenderer.h"
 
-#include "hitbox/geometry/Overlap.h"
 #include "hitbox/geometry/Shapes.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <cstddef>
-#include <functional>
-#include <vector>
-
 namespace
 {
+using namespace fastmovechecks;
+
 constexpr float dt = hitbox::stepSeconds; // the programs' fixed step (Loop.h)
 constexpr float maxSubStep = 8.f;       // less than wall (6) + bullet (8): no sub-step can jump it
 const Box wall{500.f, 0.f, 6.f, 100.f}; // right side 506, bottom 100
@@ -30,82 +28,14 @@ Box bulletAt(float left, float top = 48.f)
     return {left, top, 8.f, 4.f};
 }
 
-using Step = std::function<MoveResult(const Box&, float)>;
-
-// Flies the bullet from `start` at `velocityX` for up to `steps` steps; expects it to stop
-// against the wall's near side, never overlapping it after a step and never past it.
-void expectStopsAtTheWall(const Step& step, Box start, float velocityX, int steps)
-{
-    Box bullet = start;
-    for (int index = 0; index < steps; ++index)
-    {
-        const MoveResult result = step(bullet, velocityX);
-        bullet = result.bullet;
-        ASSERT_FALSE(hitbox::boxVsBox(bullet, wall))
-            << "the bullet overlaps the wall after a step at " << velocityX << " px/s: left "
-            << bullet.left;
-        if (result.hitWall)
-        {
-            if (velocityX > 0.f)
-                EXPECT_EQ(hitbox::rightOf(bullet), wall.left)
-                    << "stopped, but not against the wall's left side";
-            else
-                EXPECT_EQ(bullet.left, hitbox::rightOf(wall))
-                    << "stopped, but not against the wall's right side";
-            return;
-        }
-        const bool past = velocityX > 0.f ? bullet.left >= hitbox::rightOf(wall)
-                                          : hitbox::rightOf(bullet) <= wall.left;
-        ASSERT_FALSE(past) << "the bullet went through the wall at " << velocityX
-                           << " px/s (started at left " << start.left << "), now at left "
-                           << bullet.left;
-    }
-    ADD_FAILURE() << "the bullet never reached the wall at " << velocityX << " px/s";
-}
-
 Step subStepped()
 {
-    return [](const Box& bullet, float velocityX)
-    {
-        WallTests tests(wall);
-        return subSteppedStep(bullet, velocityX, dt, tests, maxSubStep);
-    };
-}
-
-// Where the overlap tests of one step ran, for a step from `left` that moves `move` pixels:
-// `count` tests, the bullet moving the same way before each, never more than maxSubStep
-// pixels (equal sub-steps, as the sheet says, or maxSubStep each and the rest last: both
-// cure tunnelling); with `whole`, the last test ran at the end of the move.
-testing::AssertionResult testedAlongTheMove(const WallTests& tests, float left, float move,
-                                            int count, bool whole)
-{
-    const std::vector<Box>& tested = tests.tested();
-    if (static_cast<int>(tested.size()) != count)
-        return testing::AssertionFailure()
-               << tested.size() << " overlap tests ran; expected " << count
-               << " (a test after each sub-step of at most " << maxSubStep << " px)";
-    float previous = left;
-    for (std::size_t index = 0; index < tested.size(); ++index)
-    {
-        const float step = (tested[index].left - previous) * (move < 0.f ? -1.f : 1.f);
-        if (!(step > 0.f && step <= maxSubStep + 1e-3f))
-            return testing::AssertionFailure()
-                   << "overlap test " << index + 1 << " ran with the bullet's left side at "
-                   << tested[index].left << ", " << step << " px on from the one before (at "
-                   << previous << "): each sub-step moves it on, by at most " << maxSubStep;
-        previous = tested[index].left;
-    }
-    if (whole && std::abs(previous - (left + move)) > 1e-3f)
-        return testing::AssertionFailure()
-               << "the last overlap test ran at left " << previous
-               << ", not at the end of the move (" << left + move << ")";
-    return testing::AssertionSuccess();
+    return subSteppingAgainst(wall, dt, maxSubStep);
 }
 
 Step speculative()
 {
-    return [](const Box& bullet, float velocityX)
-    { return speculativeStep(bullet, velocityX, dt, wall); };
+    return speculatingAgainst(wall, dt);
 }
 } // namespace
 
@@ -114,8 +44,8 @@ TEST(Task1SubSteps, NeverPassesThroughTheWallAtAnySpeed)
     for (float speed = 600.f; speed < 2e5f; speed *= 1.7f)
         for (float start = 380.f; start < 420.f; start += 7.f)
         {
-            expectStopsAtTheWall(subStepped(), bulletAt(start), speed, 40);
-            expectStopsAtTheWall(subStepped(), bulletAt(1000.f - start), -speed, 40);
+            expectStopsAtTheWall(wall, subStepped(), bulletAt(start), speed, 40);
+            expectStopsAtTheWall(wall, subStepped(), bulletAt(1000.f - start), -speed, 40);
         }
 }
 
@@ -127,7 +57,7 @@ TEST(Task1SubSteps, EachSubStepIsNoLongerThanTheLimit)
     EXPECT_FALSE(result.hitWall);
     EXPECT_NEAR(result.bullet.left, 100.f, 1e-3f)
         << "a step without a hit still moves the whole way";
-    EXPECT_TRUE(testedAlongTheMove(tests, 0.f, 100.f, 13, true));
+    EXPECT_TRUE(testedAlongTheMove(tests, 0.f, 100.f, maxSubStep, 13, true));
 }
 
 TEST(Task1SubSteps, StopsTestingAtTheFirstHit)
@@ -140,7 +70,7 @@ TEST(Task1SubSteps, StopsTestingAtTheFirstHit)
     const MoveResult result = subSteppedStep(bulletAt(start), 12000.f, dt, tests, maxSubStep);
     EXPECT_TRUE(result.hitWall);
     EXPECT_EQ(hitbox::rightOf(result.bullet), wall.left);
-    EXPECT_TRUE(testedAlongTheMove(tests, start, 100.f, 3, false))
+    EXPECT_TRUE(testedAlongTheMove(tests, start, 100.f, maxSubStep, 3, false))
         << "sub-steps 1 and 2 are free, the 3rd hits: then stop";
 }
 
@@ -150,7 +80,7 @@ TEST(Task1SubSteps, AShortStepIsOneSubStep)
     WallTests tests(wall);
     const MoveResult result = subSteppedStep(bulletAt(0.f, 200.f), 600.f, dt, tests, maxSubStep);
     EXPECT_NEAR(result.bullet.left, 5.f, 1e-4f);
-    EXPECT_TRUE(testedAlongTheMove(tests, 0.f, 5.f, 1, true));
+    EXPECT_TRUE(testedAlongTheMove(tests, 0.f, 5.f, maxSubStep, 1, true));
 }
 
 TEST(Task1SubSteps, TouchingTheWallIsNotAHit)
@@ -169,8 +99,8 @@ TEST(Task2SpeculativeContact, NeverOverlapsTheWallAtAnySpeed)
     for (float speed = 600.f; speed < 1e7f; speed *= 1.7f)
         for (float start = 300.f; start < 480.f; start += 23.f)
         {
-            expectStopsAtTheWall(speculative(), bulletAt(start), speed, 40);
-            expectStopsAtTheWall(speculative(), bulletAt(1000.f - start), -speed, 40);
+            expectStopsAtTheWall(wall, speculative(), bulletAt(start), speed, 40);
+            expectStopsAtTheWall(wall, speculative(), bulletAt(1000.f - start), -speed, 40);
         }
 }
 
