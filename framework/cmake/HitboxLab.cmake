@@ -148,6 +148,17 @@ function(hitbox_add_lab name)
     _hitbox_lab_target_settings(${name}_exercise)
 endfunction()
 
+# The path of the lab's program, for a failing scene test's replay (tests/support/
+# SceneReplay.h), in a generated LabProgram.h rather than a compile definition: a definition
+# holding an absolute path would make every test source's command differ between two
+# checkouts, so ccache could never reuse a test compiled in another (the handout, CI's clone).
+function(_hitbox_lab_program_header tests program)
+    set(folder "${CMAKE_CURRENT_BINARY_DIR}/${tests}_program/$<CONFIG>")
+    file(GENERATE OUTPUT "${folder}/LabProgram.h"
+        CONTENT "#define HITBOX_LAB_PROGRAM \"$<TARGET_FILE:${program}>\"\n")
+    target_include_directories(${tests} PRIVATE "${folder}")
+endfunction()
+
 function(hitbox_add_lab_tests name)
     cmake_parse_arguments(PARSE_ARGV 1 LAB "" "" "SOURCES")
     if(NOT LAB_SOURCES)
@@ -169,7 +180,7 @@ function(hitbox_add_lab_tests name)
     target_link_libraries(${name}_tests PRIVATE ${name}_level hitbox_test_support)
     _hitbox_lab_target_settings(${name}_tests)
     # The program a failing scene test's replay opens in (tests/support/SceneReplay.h).
-    target_compile_definitions(${name}_tests PRIVATE HITBOX_LAB_PROGRAM="$<TARGET_FILE:${name}>")
+    _hitbox_lab_program_header(${name}_tests ${name})
     gtest_discover_tests(${name}_tests
         TEST_PREFIX "${name}."
         DISCOVERY_TIMEOUT 60
@@ -183,8 +194,7 @@ function(hitbox_add_lab_tests name)
     add_executable(${name}_exercise_tests ${LAB_SOURCES})
     target_link_libraries(${name}_exercise_tests PRIVATE ${name}_exercise_level hitbox_test_support)
     _hitbox_lab_target_settings(${name}_exercise_tests)
-    target_compile_definitions(${name}_exercise_tests PRIVATE
-        HITBOX_LAB_PROGRAM="$<TARGET_FILE:${name}_exercise>")
+    _hitbox_lab_program_header(${name}_exercise_tests ${name}_exercise)
 endfunction()
 
 # Adds every numbered folder NN_name/ of the current source folder that has a
