@@ -150,8 +150,9 @@ endfunction()
 
 # The path of the lab's program, for a failing scene test's replay (tests/support/
 # SceneReplay.h), in a generated LabProgram.h rather than a compile definition: a definition
-# holding an absolute path would make every test source's command differ between two
-# checkouts, so ccache could never reuse a test compiled in another (the handout, CI's clone).
+# holding an absolute path makes every test source's command differ between two checkouts,
+# so ccache could not reuse one compiled in another (the handout, CI's clone). Now only the
+# sources that include SceneReplay.h differ.
 function(_hitbox_lab_program_header tests program)
     set(folder "${CMAKE_CURRENT_BINARY_DIR}/${tests}_program/$<CONFIG>")
     file(GENERATE OUTPUT "${folder}/LabProgram.h"

@@ -36,16 +36,28 @@ bool operator<(const Pair& a, const Pair& b);
 class ExactBoxTests
 {
 public:
-    explicit ExactBoxTests(const std::vector<Box>& boxes);
+    // What it keeps: every pair tested (what the grading tests read), or only how many (the
+    // window: brute force on 20,000 boxes would keep 2 x 10^8 pairs a frame).
+    enum class Keep
+    {
+        EveryPair,
+        CountOnly
+    };
+    explicit ExactBoxTests(const std::vector<Box>& searched, Keep keep = Keep::EveryPair);
+    ExactBoxTests(std::vector<Box>&&, Keep = Keep::EveryPair) = delete; // not a temporary list
     // Do boxes[first] and boxes[second] overlap? Strict: touching is not overlapping (Hitbox's
     // hitbox::boxVsBox). Counts one exact test and remembers the pair. An index outside the
     // list throws std::out_of_range.
     bool overlap(int first, int second);
-    // Every pair tested so far, in the order tested, as passed; its size is the count.
+    // How many exact tests ran so far.
+    [[nodiscard]] long long count() const;
+    // Every pair tested so far, in the order tested, as passed (empty with Keep::CountOnly).
     [[nodiscard]] const std::vector<Pair>& tested() const;
 
 private:
     const std::vector<Box>* boxes; // not owned
+    Keep keep;
+    long long tests = 0;
     std::vector<Pair> testedPairs;
 };
 
@@ -53,7 +65,8 @@ private:
 class ExactBallTests
 {
 public:
-    explicit ExactBallTests(const std::vector<Ball>& balls);
+    explicit ExactBallTests(const std::vector<Ball>& searched);
+    ExactBallTests(std::vector<Ball>&&) = delete; // it keeps a pointer: not a temporary list
     // Do balls[first] and balls[second] overlap? Strict: touching circles do not.
     bool overlap(int first, int second);
     [[nodiscard]] const std::vector<Pair>& tested() const;
@@ -72,8 +85,9 @@ std::vector<Pair> bruteForcePairs(const std::vector<Box>& boxes, ExactBoxTests& 
 // whose x range is still open, and test each new box against those only. Returns each
 // overlapping pair once, in any order; every pair returned must have come from `exact`.
 std::vector<Pair> sortAndSweepPairs(const std::vector<Box>& boxes, ExactBoxTests& exact);
-// Task 2: a uniform grid of square cells `cellSize` wide: put each box in every cell it
-// covers, then test only boxes that share a cell, each such pair once.
+// Task 2: a uniform grid of square cells `cellSize` wide, cell (0, 0) starting at (0, 0)
+// (column floor(x / cellSize)): put each box in every cell it covers, then test only boxes
+// that share a cell, each such pair once.
 std::vector<Pair> gridPairs(const std::vector<Box>& boxes, float cellSize, ExactBoxTests& exact);
 // Task 3: the balls that overlap, testing each pair's bounding boxes first (cheap,
 // `overlaps`) and running the exact circle test only when those overlap.

@@ -60,7 +60,7 @@ void CrowdLevel::update(float dt)
             (hitbox::bottomOf(box) > world.y && speedY[index] > 0.f))
             speedY[index] = -speedY[index];
     }
-    ExactBoxTests exact(boxes);
+    ExactBoxTests exact(boxes, ExactBoxTests::Keep::CountOnly);
     switch (method)
     {
     case Method::BruteForce:
@@ -73,7 +73,7 @@ void CrowdLevel::update(float dt)
         lastPairs = gridPairs(boxes, cellSize, exact);
         break;
     }
-    lastExactTests = static_cast<long long>(exact.tested().size());
+    lastExactTests = exact.count();
     overlapping.assign(boxes.size(), false);
     for (const Pair& pair : lastPairs)
         overlapping[pair.first] = overlapping[pair.second] = true;

@@ -17,13 +17,23 @@ bool operator<(const Pair& a, const Pair& b)
     return a.first != b.first ? a.first < b.first : a.second < b.second;
 }
 
-ExactBoxTests::ExactBoxTests(const std::vector<Box>& boxes) : boxes(&boxes) {}
+ExactBoxTests::ExactBoxTests(const std::vector<Box>& searched, Keep kept)
+    : boxes(&searched), keep(kept)
+{
+}
 
 bool ExactBoxTests::overlap(int first, int second)
 {
-    testedPairs.push_back({first, second});
+    ++tests;
+    if (keep == Keep::EveryPair)
+        testedPairs.push_back({first, second});
     return hitbox::boxVsBox(boxes->at(static_cast<std::size_t>(first)),
                             boxes->at(static_cast<std::size_t>(second)));
+}
+
+long long ExactBoxTests::count() const
+{
+    return tests;
 }
 
 const std::vector<Pair>& ExactBoxTests::tested() const
@@ -31,7 +41,7 @@ const std::vector<Pair>& ExactBoxTests::tested() const
     return testedPairs;
 }
 
-ExactBallTests::ExactBallTests(const std::vector<Ball>& balls) : balls(&balls) {}
+ExactBallTests::ExactBallTests(const std::vector<Ball>& searched) : balls(&searched) {}
 
 bool ExactBallTests::overlap(int first, int second)
 {

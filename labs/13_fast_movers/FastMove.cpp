@@ -21,7 +21,7 @@ MoveResult subSteppedStep(const Box& bullet, float velocityX, float dt, WallTest
         result.bullet = movedBy(result.bullet, subMove);
         if (wall.overlaps(result.bullet))
         {
-            result.bullet = againstWall(result.bullet, velocityX, wall.wall());
+            result.bullet = againstWall(result.bullet, velocityX, wall.box());
             result.hitWall = true;
             break;
         }

@@ -27,8 +27,9 @@ struct MoveResult
 class WallTests
 {
 public:
-    explicit WallTests(const Box& wall);
-    [[nodiscard]] const Box& wall() const;
+    explicit WallTests(const Box& box);
+    // The wall's box.
+    [[nodiscard]] const Box& box() const;
     // Does `bullet` overlap the wall? Strict: touching does not (Hitbox's hitbox::boxVsBox,
     // hitbox/geometry/Overlap.h). Counts one test and remembers the box.
     bool overlaps(const Box& bullet);

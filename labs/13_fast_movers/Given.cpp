@@ -5,9 +5,9 @@
 
 #include "hitbox/geometry/Overlap.h"
 
-WallTests::WallTests(const Box& wall) : wallBox(wall) {}
+WallTests::WallTests(const Box& box) : wallBox(box) {}
 
-const Box& WallTests::wall() const
+const Box& WallTests::box() const
 {
     return wallBox;
 }
@@ -39,6 +39,6 @@ MoveResult discreteStep(const Box& bullet, float velocityX, float dt, WallTests&
 {
     MoveResult result{movedBy(bullet, velocityX * dt), false};
     if (wall.overlaps(result.bullet))
-        result = {againstWall(result.bullet, velocityX, wall.wall()), true};
+        result = {againstWall(result.bullet, velocityX, wall.box()), true};
     return result;
 }

@@ -11,6 +11,10 @@
 // instead of four-wide SSE steps, GridTwoThreads/<N> also splits the work over two threads (its CPU
 // time counts both threads; its wall time is the "Time" column). Before timing, each grid's pairs
 // are checked against the baseline's, as a set: a benchmark whose pairs differ stops with an error.
+// GridCellOrderVsBaseline/<N> runs both on every frame, in turn (which goes first alternates),
+// each timed on its own: a paired measurement, so a slow minute of the host slows both sides
+// of the ratio alike. Its counters: baseline_ns_per_box, grid_ns_per_box and ratio (grid /
+// baseline, issue 31's criterion 1).
 // Results, machine and the exact command: docs/performance.md.
 #include "BaselineGrid.h"
 #include "MovingBoxes.h"
@@ -21,6 +25,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <ctime>
 #include <memory>
@@ -139,6 +144,59 @@ void GridTwoThreads(benchmark::State& state)
     settings.threads = 2;
     runBroadphase(state, std::make_unique<hitbox::GridBroadphase>(settings));
 }
+// Both grids on the same frames, each timed alone by a steady clock (a thread CPU clock ticks
+// too coarsely on Windows for one frame): the ratio of two sums of per-frame times taken side
+// by side (a paired design: host noise lands on both in the same minute).
+void GridCellOrderVsBaseline(benchmark::State& state)
+{
+    using Clock = std::chrono::steady_clock;
+    const std::size_t count = static_cast<std::size_t>(state.range(0));
+    MovingBoxes boxes(count, kSeed);
+    bench::BaselineGrid baseline;
+    hitbox::GridSettings settings;
+    settings.order = hitbox::PairOrder::CellOrder;
+    hitbox::GridBroadphase grid(settings);
+    std::vector<hitbox::Pair> baselinePairs;
+    std::vector<hitbox::Pair> gridPairs;
+    for (int frame = 0; frame < 3; ++frame) // warm up, and the same pairs before timing
+    {
+        boxes.step();
+        baseline.findPairs(boxes.items, baselinePairs);
+        grid.findPairs(boxes.items, gridPairs);
+        if (asSet(gridPairs) != asSet(baselinePairs))
+        {
+            state.SkipWithError("pairs differ from BaselineGrid's");
+            return;
+        }
+    }
+    Clock::duration baselineTime{};
+    Clock::duration gridTime{};
+    bool baselineFirst = true;
+    for (auto _ : state)
+    {
+        boxes.step();
+        for (int turn = 0; turn < 2; ++turn)
+        {
+            const bool runBaseline = (turn == 0) == baselineFirst;
+            const Clock::time_point start = Clock::now();
+            if (runBaseline)
+                baseline.findPairs(boxes.items, baselinePairs);
+            else
+                grid.findPairs(boxes.items, gridPairs);
+            (runBaseline ? baselineTime : gridTime) += Clock::now() - start;
+        }
+        baselineFirst = !baselineFirst;
+        benchmark::DoNotOptimize(baselinePairs.data());
+        benchmark::DoNotOptimize(gridPairs.data());
+        benchmark::ClobberMemory();
+    }
+    const double boxFrames = static_cast<double>(state.iterations()) * static_cast<double>(count);
+    const double baselineNs = std::chrono::duration<double, std::nano>(baselineTime).count();
+    const double gridNs = std::chrono::duration<double, std::nano>(gridTime).count();
+    state.counters["baseline_ns_per_box"] = baselineNs / boxFrames;
+    state.counters["grid_ns_per_box"] = gridNs / boxFrames;
+    state.counters["ratio"] = baselineNs > 0.0 ? gridNs / baselineNs : 0.0;
+}
 void Quadtree(benchmark::State& state)
 {
     runBroadphase(state, hitbox::makeBroadphase(hitbox::BroadphaseMethod::Quadtree));
@@ -225,6 +283,7 @@ void sizes(benchmark::internal::Benchmark* benchmark)
 BENCHMARK(BaselineGrid)->Apply(sizes);
 BENCHMARK(Grid)->Apply(sizes);
 BENCHMARK(GridCellOrder)->Apply(sizes);
+BENCHMARK(GridCellOrderVsBaseline)->Apply(sizes);
 BENCHMARK(GridEightWide)->Apply(sizes);
 BENCHMARK(GridTwoThreads)->Apply(sizes);
 BENCHMARK(SortAndSweep)->Apply(sizes);

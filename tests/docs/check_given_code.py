@@ -17,8 +17,10 @@ REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "scripts"))
 from labtool import labs, markers  # noqa: E402
 
-# A free function's definition: at the start of a line, a return type, a plain name, "(".
-DEFINITION = re.compile(r"^(?!return\b|else\b)[A-Za-z_][\w:<>,*& ]*?[\s*&]((?:\w+::)*[A-Za-z_]\w*)\s*\(")
+# A free function's definition: at the start of a line, maybe [[nodiscard]], a return type,
+# a name (or an operator), "(". A return type on a line of its own is not recognised.
+DEFINITION = re.compile(r"^(?:\[\[nodiscard\]\]\s*)?(?!return\b|else\b)[A-Za-z_][\w:<>,*& ]*?[\s*&]"
+                        r"((?:\w+::)*(?:operator\s*[^\s(]+|[A-Za-z_]\w*))\s*\(")
 
 
 def defined_functions(source, outside_tasks):
@@ -35,6 +37,9 @@ def defined_functions(source, outside_tasks):
             if match and not line.rstrip().endswith(";") and "::" not in match.group(1):
                 name, marked = match.group(1), in_task
         if name is not None:
+            if depth == 0 and "{" not in line and line.rstrip().endswith(";"):
+                name = None  # a declaration over several lines, not a definition
+                continue
             marked = marked or bool(markers.MARKER_ANYWHERE.search(line))
             depth += line.count("{") - line.count("}")
             if depth == 0 and "}" in line:
@@ -54,8 +59,13 @@ def calls_of_student_code(repo):
                 source = repo / lab.folder / relative
                 given.update(dict.fromkeys(defined_functions(source, outside_tasks=True), source))
         folder = Path(lab.folder).name
-        tests = sorted((repo / "tests" / "labs" / folder).glob("*.cpp")) + \
-            sorted((repo / "tests" / "labs-hidden" / folder).glob("*.cpp"))
+        tests = [path for where in ("labs", "labs-hidden") for pattern in ("*.cpp", "*.h")
+                 for path in sorted((repo / "tests" / where / folder).glob(pattern))]
+        for name, source in sorted(given.items()):
+            if name.startswith("operator") and tests:  # used without its name: always a ruler
+                problems.append(f"{source.relative_to(repo)}: defines {name} outside any task, "
+                                "which tests compare or sort with; move it to the lab's Given.cpp")
+        given = {name: source for name, source in given.items() if not name.startswith("operator")}
         for test in tests:
             text = test.read_text(encoding="utf-8")
             own = defined_functions(test, outside_tasks=False)  # a test's own helper of that name
@@ -63,7 +73,7 @@ def calls_of_student_code(repo):
                 if name in own:
                     continue
                 for number, line in enumerate(text.splitlines(), start=1):
-                    if re.search(rf"(?<![\w.>:]){name}\s*\(", line):
+                    if re.search(rf"(?<![\w.>])(?<!\w::){re.escape(name)}\s*\(", line):
                         problems.append(f"{test.relative_to(repo)}:{number}: calls {name}, which "
                                         f"{source.relative_to(repo)} defines outside any task: the "
                                         "student can change it; move it to the lab's Given.cpp")

@@ -14,7 +14,15 @@ import check_given_code  # noqa: E402 (found through the line above)
 
 STUDENT = '''#include "Crates.h"
 
-float deepest(const std::vector<Crate>& crates)
+int settle(std::vector<Crate>& crates,
+           int passes);
+
+bool operator<(const Crate& a, const Crate& b)
+{
+    return a.top < b.top;
+}
+
+[[nodiscard]] float deepest(const std::vector<Crate>& crates)
 {
     return crates.empty() ? 0.f : 1.f;
 }
@@ -75,8 +83,9 @@ class CheckGivenCodeTest(unittest.TestCase):
             (root / "tests" / "labs" / "14_crates").mkdir(parents=True)
             (root / "tests" / "labs" / "14_crates" / "CratesTests.cpp").write_text(TEST, encoding="utf-8")
             problems = check_given_code.calls_of_student_code(root)
-        self.assertEqual(len(problems), 1, problems)
-        self.assertIn("CratesTests.cpp:14: calls deepest", problems[0])
+        self.assertEqual(len(problems), 2, problems)
+        self.assertIn("Crates.cpp: defines operator<", problems[0])
+        self.assertIn("CratesTests.cpp:14: calls deepest", problems[1])
 
 
 if __name__ == "__main__":

@@ -42,8 +42,8 @@ TEST(Task1SortAndSweep, HiddenFindsTheSamePairsOnHalfPixelScenes)
 
 TEST(Task1SortAndSweep, HiddenABackwardChainNeedsOneTestPerLink)
 {
-    // Listed right to left: without the sort, boxes are never closed in time and every pair
-    // gets tested; a count tuned to the visible 200-box chain is wrong for 150.
+    // Listed right to left: a sweep that skips the sort never closes a box in time and tests
+    // every pair; a count tuned to the visible 200-box chain is wrong for 150.
     const std::vector<Box> boxes = backwardChain(150);
     ExactBoxTests exact(boxes);
     const std::vector<Pair> found = sortAndSweepPairs(boxes, exact);

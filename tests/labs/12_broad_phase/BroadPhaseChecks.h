@@ -244,7 +244,7 @@ inline testing::AssertionResult testedCellByCell(const std::vector<Box>& boxes, 
                           });
     };
     return testedAsItsIdeaSays(exact.tested(), found, sharing(false), sharing(true),
-                               "a grid of these cells");
+                               "a grid of these cells (cell (0, 0) at (0, 0))");
 }
 
 // A grid must find brute force's pairs at every cell size, through the tests its idea runs.
